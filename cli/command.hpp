@@ -1,0 +1,19 @@
+// Each `rts` subcommand lives in its own file and registers itself on the CLI11 app.
+// A command's callback returns the process exit code through `CommandContext::exit_code`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace rts::cli {
+
+struct CommandContext {
+  int exit_code = 0;
+  bool color = false;  // stderr is a terminal: colored diagnostics
+};
+
+void add_parse_command(CLI::App& app, CommandContext& ctx);   // cli/cmd_parse.cpp
+void add_check_command(CLI::App& app, CommandContext& ctx);   // cli/cmd_eval.cpp
+void add_eval_command(CLI::App& app, CommandContext& ctx);    // cli/cmd_eval.cpp
+void add_render_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_render.cpp
+
+}  // namespace rts::cli

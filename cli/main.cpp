@@ -1,0 +1,45 @@
+// The `rts` program: parse, check, eval and render scene files.
+#include <unistd.h>
+
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command.hpp"
+#include "parser/diagnostics.hpp"
+
+int main(int argc, char** argv) {
+  using namespace rts;
+  CLI::App app{"rts — a scene-description language and ray tracer"};
+  app.name("rts");
+  app.set_version_flag("--version", std::string("rts ") + RTS_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough(false);
+
+  cli::CommandContext ctx;
+  ctx.color = isatty(STDERR_FILENO) && getenv("NO_COLOR") == nullptr;
+  cli::add_parse_command(app, ctx);
+  cli::add_check_command(app, ctx);
+  cli::add_eval_command(app, ctx);
+  cli::add_render_command(app, ctx);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Unknown flags, missing arguments, bad values: a usage error, never exit 1.
+    std::cerr << "rts: " << e.what() << "\n";
+    std::cerr << "Run 'rts --help' or 'rts <command> --help' for usage.\n";
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    std::cerr << "rts: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+  return ctx.exit_code;
+}

@@ -1,0 +1,269 @@
+// The typed abstract syntax tree of an rts scene program. The parser builds it from the
+// PEGTL grammar; the evaluator walks it; the S-expression printer (ast_printer.hpp) shows it.
+// Every node carries the SourceLoc of its first character. Nodes are owned by unique_ptr;
+// identifiers are interned Symbols (pointer comparison, no string hashing at run time).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "parser/source.hpp"
+
+namespace rts::ast {
+
+// An interned identifier: two Symbols are equal iff they point at the same string.
+using Symbol = const std::string*;
+Symbol intern(std::string_view name);
+
+struct Expr;
+struct Stmt;
+using ExprPtr = std::unique_ptr<Expr>;
+using StmtPtr = std::unique_ptr<Stmt>;
+using StmtList = std::vector<StmtPtr>;
+
+// ---------------------------------------------------------------------------------------
+// Expressions
+// ---------------------------------------------------------------------------------------
+enum class ExprKind : uint8_t {
+  Number, String, Bool, None, Name, Vector, List, Unary, Binary, Range, Call, Index, Member,
+  Block, With, Transform,
+};
+
+struct Expr {
+  ExprKind kind;
+  SourceLoc loc;
+  explicit Expr(ExprKind k, SourceLoc l) : kind(k), loc(l) {}
+  virtual ~Expr() = default;
+};
+
+struct NumberExpr : Expr {
+  double value;
+  NumberExpr(SourceLoc l, double v) : Expr(ExprKind::Number, l), value(v) {}
+};
+struct StringExpr : Expr {
+  std::string value;  // escapes already decoded
+  StringExpr(SourceLoc l, std::string v) : Expr(ExprKind::String, l), value(std::move(v)) {}
+};
+struct BoolExpr : Expr {
+  bool value;
+  BoolExpr(SourceLoc l, bool v) : Expr(ExprKind::Bool, l), value(v) {}
+};
+struct NoneExpr : Expr {
+  explicit NoneExpr(SourceLoc l) : Expr(ExprKind::None, l) {}
+};
+struct NameExpr : Expr {
+  Symbol name;
+  NameExpr(SourceLoc l, Symbol n) : Expr(ExprKind::Name, l), name(n) {}
+};
+// <x, y, z> (the grammar allows 2 to 4 components; the evaluator decides what it accepts)
+struct VectorExpr : Expr {
+  std::vector<ExprPtr> components;
+  explicit VectorExpr(SourceLoc l) : Expr(ExprKind::Vector, l) {}
+};
+// [a, b, c]
+struct ListExpr : Expr {
+  std::vector<ExprPtr> elements;
+  explicit ListExpr(SourceLoc l) : Expr(ExprKind::List, l) {}
+};
+
+enum class UnaryOp : uint8_t { Neg, Plus, Not };
+struct UnaryExpr : Expr {
+  UnaryOp op;
+  ExprPtr operand;
+  UnaryExpr(SourceLoc l, UnaryOp o, ExprPtr e) : Expr(ExprKind::Unary, l), op(o), operand(std::move(e)) {}
+};
+
+enum class BinaryOp : uint8_t { Add, Sub, Mul, Div, Mod, Pow, Eq, Ne, Lt, Le, Gt, Ge, And, Or };
+struct BinaryExpr : Expr {
+  BinaryOp op;
+  ExprPtr lhs, rhs;
+  SourceLoc op_loc;  // where the operator is, for "wrong type for operator" errors
+  BinaryExpr(SourceLoc l, BinaryOp o, ExprPtr a, ExprPtr b, SourceLoc ol)
+      : Expr(ExprKind::Binary, l), op(o), lhs(std::move(a)), rhs(std::move(b)), op_loc(ol) {}
+};
+
+// a .. b (end excluded), a ..= b (end included), optional `step s`
+struct RangeExpr : Expr {
+  ExprPtr from, to, step;  // step may be null
+  bool inclusive;
+  RangeExpr(SourceLoc l, ExprPtr f, ExprPtr t, ExprPtr s, bool inc)
+      : Expr(ExprKind::Range, l), from(std::move(f)), to(std::move(t)), step(std::move(s)), inclusive(inc) {}
+};
+
+// f(a, b, name = c): positional arguments first, then named ones.
+struct Argument {
+  Symbol name = nullptr;  // null for a positional argument
+  ExprPtr value;
+  SourceLoc loc;
+};
+struct CallExpr : Expr {
+  ExprPtr callee;  // usually a NameExpr
+  std::vector<Argument> args;
+  CallExpr(SourceLoc l, ExprPtr c) : Expr(ExprKind::Call, l), callee(std::move(c)) {}
+};
+// xs[i]
+struct IndexExpr : Expr {
+  ExprPtr object, index;
+  IndexExpr(SourceLoc l, ExprPtr o, ExprPtr i) : Expr(ExprKind::Index, l), object(std::move(o)), index(std::move(i)) {}
+};
+// v.x
+struct MemberExpr : Expr {
+  ExprPtr object;
+  Symbol member;
+  SourceLoc member_loc;
+  MemberExpr(SourceLoc l, ExprPtr o, Symbol m, SourceLoc ml)
+      : Expr(ExprKind::Member, l), object(std::move(o)), member(m), member_loc(ml) {}
+};
+
+// The body of a block: `name = value` properties interleaved with statements (objects,
+// macro calls, loops, lets...). Properties and statements keep their source order.
+struct BlockItem {
+  // Exactly one of the two is set.
+  Symbol property = nullptr;  // `property = value`
+  ExprPtr value;
+  StmtPtr stmt;
+  SourceLoc loc;
+};
+struct BlockBody {
+  std::vector<BlockItem> items;
+  SourceLoc open_loc;  // the '{'
+};
+
+// kind { ... }   e.g. sphere { center = <0,1,0> radius = 1 }, material { ... }, group { ... }
+struct BlockExpr : Expr {
+  Symbol kind_name;
+  BlockBody body;
+  BlockExpr(SourceLoc l, Symbol k) : Expr(ExprKind::Block, l), kind_name(k) {}
+};
+// base with { overrides }
+struct WithExpr : Expr {
+  ExprPtr base;
+  BlockBody body;
+  WithExpr(SourceLoc l, ExprPtr b) : Expr(ExprKind::With, l), base(std::move(b)) {}
+};
+
+enum class TransformOp : uint8_t { Translate, Rotate, Scale, Matrix };
+// object translate <1,0,0>   (postfix, lowest precedence, left-associative)
+struct TransformExpr : Expr {
+  ExprPtr object;
+  TransformOp op;
+  ExprPtr arg;
+  SourceLoc op_loc;
+  TransformExpr(SourceLoc l, ExprPtr o, TransformOp t, ExprPtr a, SourceLoc ol)
+      : Expr(ExprKind::Transform, l), object(std::move(o)), op(t), arg(std::move(a)), op_loc(ol) {}
+};
+
+// ---------------------------------------------------------------------------------------
+// Statements
+// ---------------------------------------------------------------------------------------
+enum class StmtKind : uint8_t {
+  Let, Assign, If, For, While, Macro, Return, Break, Continue, Include, ExprStmt,
+};
+
+struct Stmt {
+  StmtKind kind;
+  SourceLoc loc;
+  explicit Stmt(StmtKind k, SourceLoc l) : kind(k), loc(l) {}
+  virtual ~Stmt() = default;
+};
+
+struct Body {
+  StmtList stmts;
+  SourceLoc open_loc;  // the '{'
+};
+
+// let name = value
+struct LetStmt : Stmt {
+  Symbol name;
+  ExprPtr value;
+  SourceLoc name_loc;
+  LetStmt(SourceLoc l, Symbol n, ExprPtr v, SourceLoc nl)
+      : Stmt(StmtKind::Let, l), name(n), value(std::move(v)), name_loc(nl) {}
+};
+
+// name = value, name += value, ...
+enum class AssignOp : uint8_t { Set, Add, Sub, Mul, Div };
+struct AssignStmt : Stmt {
+  Symbol name;
+  AssignOp op;
+  ExprPtr value;
+  AssignStmt(SourceLoc l, Symbol n, AssignOp o, ExprPtr v)
+      : Stmt(StmtKind::Assign, l), name(n), op(o), value(std::move(v)) {}
+};
+
+// if c { } else if c2 { } else { }   — `else if` chains are nested IfStmts in else_body
+struct IfStmt : Stmt {
+  ExprPtr cond;
+  Body then_body;
+  std::unique_ptr<Body> else_body;  // null when there is no else
+  IfStmt(SourceLoc l, ExprPtr c) : Stmt(StmtKind::If, l), cond(std::move(c)) {}
+};
+
+// for name in iterable { }
+struct ForStmt : Stmt {
+  Symbol var;
+  SourceLoc var_loc;
+  ExprPtr iterable;
+  Body body;
+  ForStmt(SourceLoc l, Symbol v, SourceLoc vl, ExprPtr it)
+      : Stmt(StmtKind::For, l), var(v), var_loc(vl), iterable(std::move(it)) {}
+};
+
+struct WhileStmt : Stmt {
+  ExprPtr cond;
+  Body body;
+  WhileStmt(SourceLoc l, ExprPtr c) : Stmt(StmtKind::While, l), cond(std::move(c)) {}
+};
+
+struct Param {
+  Symbol name;
+  ExprPtr default_value;  // null when the parameter is required
+  SourceLoc loc;
+};
+// macro name(a, b = 2) { ... }
+struct MacroStmt : Stmt {
+  Symbol name;
+  std::vector<Param> params;
+  Body body;
+  MacroStmt(SourceLoc l, Symbol n) : Stmt(StmtKind::Macro, l), name(n) {}
+};
+
+struct ReturnStmt : Stmt {
+  ExprPtr value;  // null for a bare `return`
+  ReturnStmt(SourceLoc l, ExprPtr v) : Stmt(StmtKind::Return, l), value(std::move(v)) {}
+};
+struct BreakStmt : Stmt {
+  explicit BreakStmt(SourceLoc l) : Stmt(StmtKind::Break, l) {}
+};
+struct ContinueStmt : Stmt {
+  explicit ContinueStmt(SourceLoc l) : Stmt(StmtKind::Continue, l) {}
+};
+
+// include "file.rts"  (resolved and parsed by the evaluator when executed)
+struct IncludeStmt : Stmt {
+  std::string path;
+  IncludeStmt(SourceLoc l, std::string p) : Stmt(StmtKind::Include, l), path(std::move(p)) {}
+};
+
+// An expression used as a statement: an object to place, a macro call, ...
+struct ExprStmt : Stmt {
+  ExprPtr expr;
+  ExprStmt(SourceLoc l, ExprPtr e) : Stmt(StmtKind::ExprStmt, l), expr(std::move(e)) {}
+};
+
+// A parsed file.
+struct Program {
+  const SourceFile* file = nullptr;
+  StmtList stmts;
+};
+
+// Names for printing and messages.
+const char* to_string(UnaryOp op);
+const char* to_string(BinaryOp op);
+const char* to_string(TransformOp op);
+const char* to_string(AssignOp op);
+
+}  // namespace rts::ast

@@ -1,0 +1,85 @@
+#include "parser/source.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace rts {
+
+SourceFile::SourceFile(std::string path, std::string text)
+    : path_(std::move(path)), text_(std::move(text)) {
+  line_starts_.push_back(0);
+  for (std::size_t i = 0; i < text_.size(); ++i) {
+    if (text_[i] == '\n') line_starts_.push_back(static_cast<uint32_t>(i + 1));
+  }
+}
+
+std::string_view SourceFile::line_text(uint32_t line) const {
+  if (line == 0 || line > line_starts_.size()) return {};
+  std::size_t begin = line_starts_[line - 1];
+  std::size_t end = line < line_starts_.size() ? line_starts_[line] : text_.size();
+  std::string_view s(text_.data() + begin, end - begin);
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+std::size_t find_invalid_utf8(std::string_view t) {
+  const auto* s = reinterpret_cast<const unsigned char*>(t.data());
+  std::size_t n = t.size(), i = 0;
+  while (i < n) {
+    unsigned char c = s[i];
+    if (c == 0) return i;
+    if (c < 0x80) { ++i; continue; }
+    std::size_t len;
+    uint32_t cp;
+    if ((c & 0xE0) == 0xC0) { len = 2; cp = c & 0x1F; }
+    else if ((c & 0xF0) == 0xE0) { len = 3; cp = c & 0x0F; }
+    else if ((c & 0xF8) == 0xF0) { len = 4; cp = c & 0x07; }
+    else return i;
+    if (i + len > n) return i;
+    for (std::size_t k = 1; k < len; ++k) {
+      if ((s[i + k] & 0xC0) != 0x80) return i;
+      cp = (cp << 6) | (s[i + k] & 0x3F);
+    }
+    // Reject overlong encodings, surrogates and code points past U+10FFFF.
+    if ((len == 2 && cp < 0x80) || (len == 3 && cp < 0x800) || (len == 4 && cp < 0x10000) ||
+        (cp >= 0xD800 && cp <= 0xDFFF) || cp > 0x10FFFF)
+      return i;
+    i += len;
+  }
+  return std::string_view::npos;
+}
+
+const SourceFile* SourceManager::load(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  auto status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw SourceError(fmt::format("{}: error: no such file", path));
+  if (fs::is_directory(status))
+    throw SourceError(fmt::format("{}: error: is a directory, not a scene file", path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SourceError(fmt::format("{}: error: cannot open file for reading", path));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw SourceError(fmt::format("{}: error: read failed", path));
+  std::string text = ss.str();
+  if (auto bad = find_invalid_utf8(text); bad != std::string_view::npos) {
+    // Report the line and column of the offending byte so the user can find it.
+    uint32_t line = 1, col = 1;
+    for (std::size_t i = 0; i < bad; ++i) {
+      if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
+    }
+    const char* what = text[bad] == '\0' ? "NUL byte in source text" : "invalid UTF-8 in source text";
+    throw SourceError(fmt::format("{}:{}:{}: error: {} (byte offset {})", path, line, col, what, bad));
+  }
+  return add(path, std::move(text));
+}
+
+const SourceFile* SourceManager::add(std::string path, std::string text) {
+  files_.push_back(std::make_unique<SourceFile>(std::move(path), std::move(text)));
+  return files_.back().get();
+}
+
+}  // namespace rts

@@ -1,0 +1,51 @@
+// The narrow interface through which the evaluator builds a scene (pbrt's ParserTarget).
+// Each call takes the block's parameters and location; it validates names and types, fills
+// the SceneDesc, and throws SceneError (located) on anything wrong. Nothing here knows the
+// scene language's syntax.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/params.hpp"
+#include "render/scene.hpp"
+
+namespace rts::render {
+
+enum class BlockCategory { Settings, Camera, Material, Texture, Shape, Light, Group, Unknown };
+
+struct BuilderLimits {
+  std::size_t max_mesh_triangles = 50'000'000;  // OBJ / inline meshes, in total
+};
+
+class SceneBuilder {
+ public:
+  explicit SceneBuilder(BuilderLimits limits = {}) : limits_(limits) {}
+
+  // What a block kind name means: "sphere" → Shape, "point_light" → Light, "checker" →
+  // Texture, "material", "group", "camera", "settings"; anything else → Unknown.
+  static BlockCategory category(std::string_view kind);
+  // Every block kind name, for "did you mean" suggestions.
+  static std::vector<std::string_view> block_kinds();
+
+  void settings(ParamSet& params);                            // may be called more than once;
+  void camera(ParamSet& params);                              // later values override
+  TextureId texture(std::string_view kind, ParamSet& params, const Mat4& transform = Mat4(1.0));
+  MaterialId material(ParamSet& params);
+  NodeId shape(std::string_view kind, ParamSet& params);      // not placed yet
+  NodeId light(std::string_view kind, ParamSet& params);      // not placed yet
+  NodeId group(std::vector<Child> children, SourceRef loc);
+  void place(const Child& instance);                          // into the world
+
+  std::size_t object_count() const { return scene_.shapes.size(); }
+  const SceneDesc& scene() const { return scene_; }
+  SceneDesc finish() { return std::move(scene_); }
+
+ private:
+  BuilderLimits limits_;
+  SceneDesc scene_;
+  std::size_t mesh_triangles_ = 0;
+};
+
+}  // namespace rts::render
