@@ -1,8 +1,8 @@
 #include "parser/source.hpp"
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -11,8 +11,14 @@ namespace rts {
 SourceFile::SourceFile(std::string path, std::string text)
     : path_(std::move(path)), text_(std::move(text)) {
   line_starts_.push_back(0);
-  for (std::size_t i = 0; i < text_.size(); ++i) {
-    if (text_[i] == '\n') line_starts_.push_back(static_cast<uint32_t>(i + 1));
+  // memchr finds newlines a word at a time; scenes can be tens of megabytes.
+  const char* begin = text_.data();
+  const char* end = begin + text_.size();
+  for (const char* p = begin; p != end;) {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    if (!nl) break;
+    p = static_cast<const char*>(nl) + 1;
+    line_starts_.push_back(static_cast<uint32_t>(p - begin));
   }
 }
 
@@ -28,7 +34,18 @@ std::string_view SourceFile::line_text(uint32_t line) const {
 std::size_t find_invalid_utf8(std::string_view t) {
   const auto* s = reinterpret_cast<const unsigned char*>(t.data());
   std::size_t n = t.size(), i = 0;
+  // Fast path: eight bytes at a time while they are all ASCII and none is NUL.
+  constexpr uint64_t kHighBits = 0x8080808080808080ull;
+  constexpr uint64_t kLowBits = 0x0101010101010101ull;
   while (i < n) {
+    while (i + sizeof(uint64_t) <= n) {
+      uint64_t w;
+      std::memcpy(&w, s + i, sizeof w);
+      bool has_zero = ((w - kLowBits) & ~w & kHighBits) != 0;
+      if ((w & kHighBits) != 0 || has_zero) break;
+      i += sizeof w;
+    }
+    if (i >= n) break;
     unsigned char c = s[i];
     if (c == 0) return i;
     if (c < 0x80) { ++i; continue; }
@@ -61,10 +78,20 @@ const SourceFile* SourceManager::load(const std::string& path) {
     throw SourceError(fmt::format("{}: error: is a directory, not a scene file", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SourceError(fmt::format("{}: error: cannot open file for reading", path));
-  std::ostringstream ss;
-  ss << in.rdbuf();
+  // Read straight into the string (one copy, no stream buffer doubling): scene files can be
+  // tens of megabytes. Files whose size is not known up front (pipes) are read in chunks.
+  std::string text;
+  std::error_code size_ec;
+  auto size = fs::is_regular_file(status) ? fs::file_size(path, size_ec) : 0;
+  if (!size_ec && size > 0) {
+    text.resize(static_cast<std::size_t>(size));
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+  }
+  constexpr std::size_t kChunk = 1 << 16;
+  char chunk[kChunk];
+  while (in.read(chunk, kChunk) || in.gcount() > 0) text.append(chunk, static_cast<std::size_t>(in.gcount()));
   if (in.bad()) throw SourceError(fmt::format("{}: error: read failed", path));
-  std::string text = ss.str();
   if (auto bad = find_invalid_utf8(text); bad != std::string_view::npos) {
     // Report the line and column of the offending byte so the user can find it.
     uint32_t line = 1, col = 1;

@@ -1,0 +1,478 @@
+#include "parser/node_builders.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+namespace rts::parse_detail {
+namespace {
+
+using namespace rts::ast;
+
+[[noreturn]] void too_high(SourceLoc loc) {
+  throw LanguageError(loc, fmt::format("expression nested too deeply (the syntax tree would be "
+                                       "deeper than {} levels; split it with 'let')",
+                                       kMaxTreeHeight));
+}
+
+uint32_t checked_height(uint32_t h, SourceLoc loc) {
+  if (h > kMaxTreeHeight) too_high(loc);
+  return h;
+}
+
+void push_expr(ParseState& st, ExprPtr e, uint32_t height) {
+  SourceLoc loc = e->loc;
+  st.exprs.push_back({std::move(e), checked_height(height, loc)});
+}
+
+void push_stmt(ParseState& st, StmtPtr s, uint32_t height) {
+  SourceLoc loc = s->loc;
+  st.stmts.push_back({std::move(s), checked_height(height, loc)});
+}
+
+Sized<ExprPtr> pop_expr(ParseState& st) {
+  Sized<ExprPtr> e = std::move(st.exprs.back());
+  st.exprs.pop_back();
+  return e;
+}
+
+NamePiece pop_name(ParseState& st) {
+  NamePiece n = st.names.back();
+  st.names.pop_back();
+  return n;
+}
+
+template <typename T>
+Sized<T> pop(std::vector<Sized<T>>& v) {
+  Sized<T> x = std::move(v.back());
+  v.pop_back();
+  return x;
+}
+
+// Moves the expressions pushed since `mark` into `out`; returns their tallest height.
+uint32_t collect_exprs(ParseState& st, uint32_t mark, std::vector<ExprPtr>& out) {
+  uint32_t tallest = 0;
+  out.reserve(st.exprs.size() - mark);
+  for (std::size_t i = mark; i < st.exprs.size(); ++i) {
+    tallest = std::max(tallest, st.exprs[i].height);
+    out.push_back(std::move(st.exprs[i].node));
+  }
+  st.exprs.resize(mark);
+  return tallest;
+}
+
+void append_utf8(std::string& out, uint32_t cp) {
+  if (cp < 0x80) {
+    out += static_cast<char>(cp);
+  } else if (cp < 0x800) {
+    out += static_cast<char>(0xC0 | (cp >> 6));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  } else if (cp < 0x10000) {
+    out += static_cast<char>(0xE0 | (cp >> 12));
+    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (cp >> 18));
+    out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  }
+}
+
+constexpr uint32_t kMaxCodePoint = 0x10FFFF;
+constexpr uint32_t kSurrogateFirst = 0xD800;
+constexpr uint32_t kSurrogateLast = 0xDFFF;
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// Leaves
+// ---------------------------------------------------------------------------------------
+void push_number(ParseState& st, SourceLoc loc, std::string_view text) {
+  double value = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc::result_out_of_range) {
+    // from_chars leaves the value unset on overflow and underflow; strtod tells them apart.
+    value = std::strtod(std::string(text).c_str(), nullptr);
+    if (std::isinf(value))
+      throw LanguageError(loc, fmt::format("number '{}' is too large", text));
+  } else if (ec != std::errc() || end != text.data() + text.size()) {
+    throw LanguageError(loc, fmt::format("malformed number '{}'", text));
+  }
+  push_expr(st, std::make_unique<NumberExpr>(loc, value), 1);
+}
+
+std::string decode_string(ParseState& st) {
+  std::string_view raw = st.string_body;
+  std::string out;
+  out.reserve(raw.size());
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    char c = raw[i];
+    if (c != '\\') {
+      out += c;
+      continue;
+    }
+    std::size_t escape_start = i;
+    char code = raw[++i];  // the grammar guarantees a valid escape code follows
+    switch (code) {
+      case 'n': out += '\n'; break;
+      case 't': out += '\t'; break;
+      case 'r': out += '\r'; break;
+      case '0': out += '\0'; break;
+      case '\\': out += '\\'; break;
+      case '"': out += '"'; break;
+      case 'u': {
+        std::size_t open = i + 1, close = raw.find('}', open);
+        std::string_view hex = raw.substr(open + 1, close - open - 1);
+        uint32_t cp = 0;
+        std::from_chars(hex.data(), hex.data() + hex.size(), cp, 16);
+        if (cp > kMaxCodePoint || (cp >= kSurrogateFirst && cp <= kSurrogateLast)) {
+          SourceLoc at = st.string_body_loc;
+          at.col += static_cast<uint32_t>(escape_start);
+          throw LanguageError(at, fmt::format("'\\u{{{}}}' is not a valid Unicode code point", hex));
+        }
+        append_utf8(out, cp);
+        i = close;
+        break;
+      }
+      default: out += code; break;
+    }
+  }
+  return out;
+}
+
+void push_string(ParseState& st, SourceLoc quote_loc) {
+  push_expr(st, std::make_unique<StringExpr>(quote_loc, decode_string(st)), 1);
+}
+
+void push_bool(ParseState& st, SourceLoc loc, bool value) {
+  push_expr(st, std::make_unique<BoolExpr>(loc, value), 1);
+}
+
+void push_none(ParseState& st, SourceLoc loc) { push_expr(st, std::make_unique<NoneExpr>(loc), 1); }
+
+void push_name_ref(ParseState& st, SourceLoc loc, std::string_view name) {
+  push_expr(st, std::make_unique<NameExpr>(loc, st.symbol(name)), 1);
+}
+
+void push_name(ParseState& st, SourceLoc loc, std::string_view name) {
+  st.names.push_back({st.symbol(name), loc});
+}
+
+// ---------------------------------------------------------------------------------------
+// Brackets
+// ---------------------------------------------------------------------------------------
+void open_bracket(ParseState& st, SourceLoc loc, char ch, uint32_t mark) {
+  st.opens.push_back({loc, mark, ch});
+}
+
+Open close_bracket(ParseState& st) {
+  Open o = st.opens.back();
+  st.opens.pop_back();
+  return o;
+}
+
+void finish_list(ParseState& st) {
+  Open o = close_bracket(st);
+  auto list = std::make_unique<ListExpr>(o.loc);
+  uint32_t h = collect_exprs(st, o.mark, list->elements);
+  push_expr(st, std::move(list), h + 1);
+}
+
+void finish_vector(ParseState& st) {
+  Open o = close_bracket(st);
+  auto vec = std::make_unique<VectorExpr>(o.loc);
+  uint32_t h = collect_exprs(st, o.mark, vec->components);
+  push_expr(st, std::move(vec), h + 1);
+}
+
+void finish_call(ParseState& st) {
+  Open o = close_bracket(st);
+  Sized<ExprPtr> callee = pop_expr(st);
+  auto call = std::make_unique<CallExpr>(callee.node->loc, std::move(callee.node));
+  uint32_t h = callee.height;
+  call->args.reserve(st.args.size() - o.mark);
+  std::optional<SourceLoc> first_named;
+  for (std::size_t i = o.mark; i < st.args.size(); ++i) {
+    Argument& a = st.args[i].node;
+    if (a.name) {
+      if (!first_named) first_named = a.loc;
+    } else if (first_named) {
+      LanguageError e(a.loc, "positional argument after a named argument");
+      e.diag.notes.push_back(Note{*first_named, "the first named argument is here"});
+      throw e;
+    }
+    h = std::max(h, st.args[i].height);
+    call->args.push_back(std::move(a));
+  }
+  st.args.resize(o.mark);
+  push_expr(st, std::move(call), h + 1);
+}
+
+void finish_index(ParseState& st) {
+  close_bracket(st);
+  Sized<ExprPtr> index = pop_expr(st);
+  Sized<ExprPtr> object = pop_expr(st);
+  SourceLoc loc = object.node->loc;
+  uint32_t h = std::max(index.height, object.height) + 1;
+  push_expr(st, std::make_unique<IndexExpr>(loc, std::move(object.node), std::move(index.node)), h);
+}
+
+void finish_block_body(ParseState& st) {
+  Open o = close_bracket(st);
+  BlockBody body;
+  body.open_loc = o.loc;
+  body.items.reserve(st.items.size() - o.mark);
+  uint32_t h = 0;
+  for (std::size_t i = o.mark; i < st.items.size(); ++i) {
+    h = std::max(h, st.items[i].height);
+    body.items.push_back(std::move(st.items[i].node));
+  }
+  st.items.resize(o.mark);
+  st.block_bodies.push_back({std::move(body), h});
+}
+
+void finish_body(ParseState& st) {
+  Open o = close_bracket(st);
+  Body body;
+  body.open_loc = o.loc;
+  body.stmts.reserve(st.stmts.size() - o.mark);
+  uint32_t h = 0;
+  for (std::size_t i = o.mark; i < st.stmts.size(); ++i) {
+    h = std::max(h, st.stmts[i].height);
+    body.stmts.push_back(std::move(st.stmts[i].node));
+  }
+  st.stmts.resize(o.mark);
+  st.bodies.push_back({std::move(body), h});
+}
+
+void finish_params(ParseState& st) {
+  Open o = close_bracket(st);
+  std::vector<Param> list;
+  list.reserve(st.params.size() - o.mark);
+  uint32_t h = 0;
+  std::unordered_map<Symbol, SourceLoc> seen;
+  std::optional<SourceLoc> first_default;
+  for (std::size_t i = o.mark; i < st.params.size(); ++i) {
+    Param& p = st.params[i].node;
+    if (auto [it, inserted] = seen.try_emplace(p.name, p.loc); !inserted) {
+      LanguageError e(p.loc, fmt::format("duplicate parameter '{}'", *p.name));
+      e.diag.notes.push_back(Note{it->second, "first declared here"});
+      throw e;
+    }
+    if (p.default_value) {
+      if (!first_default) first_default = p.loc;
+    } else if (first_default) {
+      LanguageError e(p.loc, fmt::format("required parameter '{}' follows a parameter with a "
+                                         "default value", *p.name));
+      e.diag.notes.push_back(Note{*first_default, "the first parameter with a default is here"});
+      throw e;
+    }
+    h = std::max(h, st.params[i].height);
+    list.push_back(std::move(p));
+  }
+  st.params.resize(o.mark);
+  st.param_lists.push_back({std::move(list), h});
+}
+
+// ---------------------------------------------------------------------------------------
+// Expressions
+// ---------------------------------------------------------------------------------------
+void build_unary(ParseState& st, SourceLoc op_loc, UnaryOp op) {
+  Sized<ExprPtr> operand = pop_expr(st);
+  push_expr(st, std::make_unique<UnaryExpr>(op_loc, op, std::move(operand.node)), operand.height + 1);
+}
+
+void build_binary(ParseState& st, SourceLoc op_loc, BinaryOp op) {
+  Sized<ExprPtr> rhs = pop_expr(st);
+  Sized<ExprPtr> lhs = pop_expr(st);
+  SourceLoc loc = lhs.node->loc;
+  uint32_t h = std::max(lhs.height, rhs.height) + 1;
+  if (h > kMaxTreeHeight) too_high(op_loc);
+  push_expr(st, std::make_unique<BinaryExpr>(loc, op, std::move(lhs.node), std::move(rhs.node), op_loc), h);
+}
+
+void build_range(ParseState& st, bool inclusive) {
+  Sized<ExprPtr> step{nullptr, 0};
+  if (st.has_step) step = pop_expr(st);
+  st.has_step = false;
+  Sized<ExprPtr> to = pop_expr(st);
+  Sized<ExprPtr> from = pop_expr(st);
+  SourceLoc loc = from.node->loc;
+  uint32_t h = std::max({from.height, to.height, step.height}) + 1;
+  push_expr(st, std::make_unique<RangeExpr>(loc, std::move(from.node), std::move(to.node),
+                                            std::move(step.node), inclusive), h);
+}
+
+void build_transform(ParseState& st, SourceLoc op_loc, TransformOp op) {
+  Sized<ExprPtr> arg = pop_expr(st);
+  Sized<ExprPtr> object = pop_expr(st);
+  SourceLoc loc = object.node->loc;
+  uint32_t h = std::max(arg.height, object.height) + 1;
+  if (h > kMaxTreeHeight) too_high(op_loc);
+  push_expr(st, std::make_unique<TransformExpr>(loc, std::move(object.node), op, std::move(arg.node), op_loc), h);
+}
+
+void build_member(ParseState& st) {
+  NamePiece member = pop_name(st);
+  Sized<ExprPtr> object = pop_expr(st);
+  SourceLoc loc = object.node->loc;
+  if (object.height + 1 > kMaxTreeHeight) too_high(member.loc);
+  push_expr(st, std::make_unique<MemberExpr>(loc, std::move(object.node), member.name, member.loc),
+            object.height + 1);
+}
+
+void build_with(ParseState& st) {
+  Sized<BlockBody> body = pop(st.block_bodies);
+  Sized<ExprPtr> base = pop_expr(st);
+  auto with = std::make_unique<WithExpr>(base.node->loc, std::move(base.node));
+  with->body = std::move(body.node);
+  push_expr(st, std::move(with), std::max(base.height, body.height) + 1);
+}
+
+void build_block(ParseState& st) {
+  Sized<BlockBody> body = pop(st.block_bodies);
+  NamePiece kind = pop_name(st);
+  auto block = std::make_unique<BlockExpr>(kind.loc, kind.name);
+  block->body = std::move(body.node);
+  push_expr(st, std::move(block), body.height + 1);
+}
+
+void build_named_arg(ParseState& st) {
+  Sized<ExprPtr> value = pop_expr(st);
+  NamePiece name = pop_name(st);
+  st.args.push_back({Argument{name.name, std::move(value.node), name.loc}, value.height + 1});
+}
+
+void build_positional_arg(ParseState& st) {
+  Sized<ExprPtr> value = pop_expr(st);
+  SourceLoc loc = value.node->loc;
+  st.args.push_back({Argument{nullptr, std::move(value.node), loc}, value.height + 1});
+}
+
+void build_property(ParseState& st) {
+  Sized<ExprPtr> value = pop_expr(st);
+  NamePiece name = pop_name(st);
+  BlockItem item;
+  item.property = name.name;
+  item.value = std::move(value.node);
+  item.loc = name.loc;
+  st.items.push_back({std::move(item), value.height + 1});
+}
+
+void build_block_statement(ParseState& st) {
+  Sized<StmtPtr> stmt = pop(st.stmts);
+  BlockItem item;
+  item.loc = stmt.node->loc;
+  item.stmt = std::move(stmt.node);
+  st.items.push_back({std::move(item), stmt.height + 1});
+}
+
+// ---------------------------------------------------------------------------------------
+// Statements
+// ---------------------------------------------------------------------------------------
+void build_let(ParseState& st, SourceLoc loc) {
+  Sized<ExprPtr> value = pop_expr(st);
+  NamePiece name = pop_name(st);
+  push_stmt(st, std::make_unique<LetStmt>(loc, name.name, std::move(value.node), name.loc), value.height + 1);
+}
+
+void build_assign(ParseState& st) {
+  Sized<ExprPtr> value = pop_expr(st);
+  NamePiece name = pop_name(st);
+  push_stmt(st, std::make_unique<AssignStmt>(name.loc, name.name, st.assign_op, std::move(value.node)),
+            value.height + 1);
+}
+
+void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {
+  std::unique_ptr<Body> else_body;
+  uint32_t h = 0;
+  if (st.has_else) {
+    Sized<Body> e = pop(st.bodies);
+    h = e.height;
+    else_body = std::make_unique<Body>(std::move(e.node));
+  }
+  st.has_else = false;
+  Sized<Body> then_body = pop(st.bodies);
+  Sized<ExprPtr> cond = pop_expr(st);
+  h = std::max({h, then_body.height, cond.height}) + 1;
+  auto stmt = std::make_unique<IfStmt>(loc, std::move(cond.node));
+  stmt->then_body = std::move(then_body.node);
+  stmt->else_body = std::move(else_body);
+  if (!as_else_body) {
+    push_stmt(st, std::move(stmt), h);
+    return;
+  }
+  // `else if`: the nested if is the only statement of the else body.
+  Body body;
+  body.open_loc = loc;
+  body.stmts.push_back(std::move(stmt));
+  st.bodies.push_back({std::move(body), checked_height(h + 1, loc)});
+}
+
+void build_for(ParseState& st, SourceLoc loc) {
+  Sized<Body> body = pop(st.bodies);
+  Sized<ExprPtr> iterable = pop_expr(st);
+  NamePiece var = pop_name(st);
+  auto stmt = std::make_unique<ForStmt>(loc, var.name, var.loc, std::move(iterable.node));
+  stmt->body = std::move(body.node);
+  push_stmt(st, std::move(stmt), std::max(body.height, iterable.height) + 1);
+}
+
+void build_while(ParseState& st, SourceLoc loc) {
+  Sized<Body> body = pop(st.bodies);
+  Sized<ExprPtr> cond = pop_expr(st);
+  auto stmt = std::make_unique<WhileStmt>(loc, std::move(cond.node));
+  stmt->body = std::move(body.node);
+  push_stmt(st, std::move(stmt), std::max(body.height, cond.height) + 1);
+}
+
+void build_param(ParseState& st) {
+  Sized<ExprPtr> value{nullptr, 0};
+  if (st.has_default) value = pop_expr(st);
+  st.has_default = false;
+  NamePiece name = pop_name(st);
+  st.params.push_back({Param{name.name, std::move(value.node), name.loc}, value.height + 1});
+}
+
+void build_macro(ParseState& st, SourceLoc loc) {
+  Sized<Body> body = pop(st.bodies);
+  Sized<std::vector<Param>> params = pop(st.param_lists);
+  NamePiece name = pop_name(st);
+  auto stmt = std::make_unique<MacroStmt>(loc, name.name);
+  stmt->params = std::move(params.node);
+  stmt->body = std::move(body.node);
+  push_stmt(st, std::move(stmt), std::max(body.height, params.height) + 1);
+}
+
+void build_return(ParseState& st, SourceLoc loc) {
+  Sized<ExprPtr> value{nullptr, 0};
+  if (st.has_return_value) value = pop_expr(st);
+  st.has_return_value = false;
+  push_stmt(st, std::make_unique<ReturnStmt>(loc, std::move(value.node)), value.height + 1);
+}
+
+void build_break(ParseState& st, SourceLoc loc) { push_stmt(st, std::make_unique<BreakStmt>(loc), 1); }
+
+void build_continue(ParseState& st, SourceLoc loc) {
+  push_stmt(st, std::make_unique<ContinueStmt>(loc), 1);
+}
+
+void build_include(ParseState& st, SourceLoc loc) {
+  push_stmt(st, std::make_unique<IncludeStmt>(loc, std::move(st.include_path)), 1);
+  st.include_path.clear();
+}
+
+void build_expr_stmt(ParseState& st) {
+  Sized<ExprPtr> e = pop_expr(st);
+  SourceLoc loc = e.node->loc;
+  push_stmt(st, std::make_unique<ExprStmt>(loc, std::move(e.node)), e.height + 1);
+}
+
+}  // namespace rts::parse_detail

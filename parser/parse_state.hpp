@@ -1,0 +1,100 @@
+// The state the parser's actions share while PEGTL walks the grammar: one value stack per
+// kind of AST piece, and the open brackets. Actions push finished pieces; the action of the
+// enclosing rule pops them and pushes the node built from them (a manual value stack: no
+// std::function, no parse tree). The grammar only backtracks over rules that fired no
+// action (every action-bearing construct commits with must<> after its first token), so
+// the stacks never hold pieces of an abandoned alternative.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "parser/ast.hpp"
+#include "parser/diagnostics.hpp"
+#include "parser/parser.hpp"
+#include "parser/source.hpp"
+
+namespace rts::parse_detail {
+
+// Deepest syntax tree the parser builds (operator chains such as 1+1+...+1 included):
+// everything that walks the tree afterwards (printer, evaluator, destructors) recurses, so
+// the tree height is capped to keep their stacks safe.
+inline constexpr uint32_t kMaxTreeHeight = 1024;
+
+// A piece on a value stack, with the height of the subtree it roots.
+template <typename T>
+struct Sized {
+  T node;
+  uint32_t height;
+};
+
+struct NamePiece {
+  ast::Symbol name;
+  SourceLoc loc;
+};
+
+// An open bracket (or string quote) whose closer has not been seen yet: for the "to match
+// this '{'" note, and the stack size to collect the bracket's children from.
+struct Open {
+  SourceLoc loc;
+  uint32_t mark;
+  char ch;
+};
+
+struct ParseState {
+  ParseState(const SourceFile& f, const ParseLimits& l) : file(&f), limits(l) {}
+
+  const SourceFile* file;
+  ParseLimits limits;
+  uint32_t depth = 0;  // current nesting of brackets, bodies and prefix operators
+
+  std::vector<Sized<ast::ExprPtr>> exprs;
+  std::vector<Sized<ast::StmtPtr>> stmts;
+  std::vector<Sized<ast::BlockItem>> items;
+  std::vector<Sized<ast::Argument>> args;
+  std::vector<Sized<ast::Param>> params;
+  std::vector<Sized<std::vector<ast::Param>>> param_lists;
+  std::vector<Sized<ast::Body>> bodies;
+  std::vector<Sized<ast::BlockBody>> block_bodies;
+  std::vector<NamePiece> names;
+  std::vector<Open> opens;
+
+  // Optional parts announce themselves to the action of the rule that contains them; each
+  // flag is set by the optional part and consumed by the very next enclosing action.
+  bool has_step = false;
+  bool has_else = false;
+  bool has_default = false;
+  bool has_return_value = false;
+  ast::AssignOp assign_op = ast::AssignOp::Set;
+  std::string_view string_body;  // raw text between the quotes of the last string
+  SourceLoc string_body_loc;
+  std::string include_path;
+
+  // Interned names by their spelling in the source text (views into file->text()).
+  std::unordered_map<std::string_view, ast::Symbol> symbols;
+
+  template <typename Iterator>
+  SourceLoc loc(const Iterator& it) const {
+    return SourceLoc{file, static_cast<uint32_t>(it.line), static_cast<uint32_t>(it.column)};
+  }
+
+  ast::Symbol symbol(std::string_view spelling) {
+    auto [it, inserted] = symbols.try_emplace(spelling, nullptr);
+    if (inserted) it->second = ast::intern(spelling);
+    return it->second;
+  }
+};
+
+// The identifier at the start of a matched rule (rules include the whitespace after them).
+inline std::string_view word_at(const char* begin, const char* end) {
+  const char* p = begin;
+  while (p != end && ((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
+                      (*p >= '0' && *p <= '9') || *p == '_'))
+    ++p;
+  return {begin, static_cast<std::size_t>(p - begin)};
+}
+
+}  // namespace rts::parse_detail
