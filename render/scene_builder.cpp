@@ -1,0 +1,440 @@
+// SceneBuilder: validates block parameters and fills the SceneDesc.
+#include "render/scene_builder.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "render/obj_loader.hpp"
+
+namespace rts::render {
+
+namespace {
+
+// Vectors shorter than this cannot give a direction (normals, axes, light directions).
+constexpr double kMinDirectionLength = 1e-12;
+constexpr double kMaxFovDegrees = 180.0;
+
+struct KindInfo {
+  std::string_view name;
+  BlockCategory category;
+};
+constexpr KindInfo kKinds[] = {
+    {"settings", BlockCategory::Settings},     {"camera", BlockCategory::Camera},
+    {"material", BlockCategory::Material},     {"checker", BlockCategory::Texture},
+    {"stripes", BlockCategory::Texture},       {"gradient", BlockCategory::Texture},
+    {"image_texture", BlockCategory::Texture}, {"sphere", BlockCategory::Shape},
+    {"plane", BlockCategory::Shape},           {"triangle", BlockCategory::Shape},
+    {"box", BlockCategory::Shape},             {"cylinder", BlockCategory::Shape},
+    {"cone", BlockCategory::Shape},            {"disc", BlockCategory::Shape},
+    {"mesh", BlockCategory::Shape},            {"point_light", BlockCategory::Light},
+    {"spot_light", BlockCategory::Light},      {"directional_light", BlockCategory::Light},
+    {"area_light", BlockCategory::Light},      {"group", BlockCategory::Group},
+};
+
+// The property names each block kind accepts (for unknown-name checks and suggestions).
+const std::vector<std::string_view> kSettingsNames = {"width",      "height",        "samples", "max_depth",
+                                                      "background", "ambient_light", "seed"};
+const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
+                                                    "fov",        "view_width", "aperture", "focus_distance"};
+const std::vector<std::string_view> kImageTextureNames = {"file", "mapping"};
+const std::vector<std::string_view> kCheckerNames = {"color1", "color2", "scale"};
+const std::vector<std::string_view> kPatternTextureNames = {"color1", "color2", "scale", "axis"};
+const std::vector<std::string_view> kMaterialNames = {"color",    "texture",  "emission",  "ambient",
+                                                      "diffuse",  "specular", "shininess", "reflect",
+                                                      "transmit", "ior",      "fresnel",   "roughness"};
+const std::vector<std::string_view> kSphereNames = {"material", "center", "radius"};
+const std::vector<std::string_view> kPlaneNames = {"material", "normal", "offset"};
+const std::vector<std::string_view> kTriangleNames = {"material", "v0", "v1", "v2", "n0", "n1", "n2"};
+const std::vector<std::string_view> kBoxNames = {"material", "min", "max"};
+const std::vector<std::string_view> kCylinderNames = {"material", "from", "to", "radius", "capped"};
+const std::vector<std::string_view> kConeNames = {"material", "from", "to", "radius_from", "radius_to", "capped"};
+const std::vector<std::string_view> kDiscNames = {"material", "center", "normal", "radius", "inner_radius"};
+const std::vector<std::string_view> kMeshNames = {"material", "file", "smooth", "vertices", "faces", "normals"};
+const std::vector<std::string_view> kPointLightNames = {"position", "color", "intensity", "attenuation", "shadows"};
+const std::vector<std::string_view> kSpotLightNames = {"position", "point_at",  "radius",      "falloff",
+                                                       "color",    "intensity", "attenuation", "shadows"};
+const std::vector<std::string_view> kDirectionalLightNames = {"direction", "color", "intensity", "shadows"};
+const std::vector<std::string_view> kAreaLightNames = {"position", "u",         "v",           "samples", "disc",
+                                                       "color",    "intensity", "attenuation", "shadows"};
+
+SourceRef loc_of(ParamSet& ps, std::string_view name) {
+  const Param* p = ps.find(name);
+  return p ? p->loc : ps.loc();
+}
+
+// Range checks: "property 'radius' of sphere must be > 0, got -1".
+void require(ParamSet& ps, std::string_view name, bool ok, std::string_view what, double got) {
+  if (ok) return;
+  throw SceneError(loc_of(ps, name),
+                   fmt::format("property '{}' of {} must be {}, got {}", name, ps.kind(), what, got));
+}
+double positive(ParamSet& ps, std::string_view name, double v) {
+  require(ps, name, v > 0, "> 0", v);
+  return v;
+}
+double non_negative(ParamSet& ps, std::string_view name, double v) {
+  require(ps, name, v >= 0, ">= 0", v);
+  return v;
+}
+Vec3 direction(ParamSet& ps, std::string_view name, Vec3 v) {
+  if (glm::length(v) < kMinDirectionLength)
+    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be a non-zero vector",
+                                                   name, ps.kind()));
+  return v;
+}
+void non_negative_color(ParamSet& ps, std::string_view name, const Color& c) {
+  if (c.r < 0 || c.g < 0 || c.b < 0)
+    throw SceneError(loc_of(ps, name),
+                     fmt::format("property '{}' of {} must not be negative", name, ps.kind()));
+}
+
+// Texture axis: 0/1/2 or "x"/"y"/"z".
+int axis_of(ParamSet& ps) {
+  const ParamValue* v = ps.value("axis");
+  if (!v) return 0;
+  if (auto* s = std::get_if<std::string>(v)) {
+    if (*s == "x") return 0;
+    if (*s == "y") return 1;
+    if (*s == "z") return 2;
+    throw SceneError(loc_of(ps, "axis"),
+                     fmt::format("property 'axis' of {} must be \"x\", \"y\" or \"z\", got \"{}\"", ps.kind(), *s));
+  }
+  int a = ps.integer("axis", 0);
+  require(ps, "axis", a >= 0 && a <= 2, "0, 1 or 2", a);
+  return a;
+}
+
+// Paths in a scene are relative to the file that names them.
+std::string resolve_path(const std::string& path, SourceRef where) {
+  namespace fs = std::filesystem;
+  fs::path p(path);
+  if (p.is_absolute() || where.file == nullptr || where.file[0] == '\0') return path;
+  return (fs::path(where.file).parent_path() / p).lexically_normal().string();
+}
+
+}  // namespace
+
+BlockCategory SceneBuilder::category(std::string_view kind) {
+  for (const KindInfo& k : kKinds)
+    if (k.name == kind) return k.category;
+  return BlockCategory::Unknown;
+}
+
+std::vector<std::string_view> SceneBuilder::block_kinds() {
+  std::vector<std::string_view> out;
+  for (const KindInfo& k : kKinds) out.push_back(k.name);
+  return out;
+}
+
+void SceneBuilder::settings(ParamSet& ps) {
+  Settings& s = scene_.settings;
+  s.width = ps.integer("width", s.width);
+  require(ps, "width", s.width >= 1, ">= 1", s.width);
+  s.height = ps.integer("height", s.height);
+  require(ps, "height", s.height >= 1, ">= 1", s.height);
+  s.samples = ps.integer("samples", s.samples);
+  require(ps, "samples", s.samples >= 1, ">= 1", s.samples);
+  s.max_depth = ps.integer("max_depth", s.max_depth);
+  require(ps, "max_depth", s.max_depth >= 0, ">= 0", s.max_depth);
+  s.background = ps.color("background", s.background);
+  s.ambient_light = ps.color("ambient_light", s.ambient_light);
+  non_negative_color(ps, "ambient_light", s.ambient_light);
+  if (ps.has("seed")) {
+    double seed = ps.number("seed", 0);
+    require(ps, "seed", seed >= 0 && std::floor(seed) == seed, "a whole number >= 0", seed);
+    s.seed = static_cast<uint64_t>(seed);
+  }
+  s.loc = ps.loc();
+  ps.check_unused(kSettingsNames);
+}
+
+void SceneBuilder::camera(ParamSet& ps) {
+  CameraDesc& c = scene_.camera;
+  std::string proj = ps.string("projection", c.projection == Projection::Perspective ? "perspective" : "orthographic");
+  if (proj == "perspective") c.projection = Projection::Perspective;
+  else if (proj == "orthographic") c.projection = Projection::Orthographic;
+  else
+    throw SceneError(loc_of(ps, "projection"),
+                     fmt::format("property 'projection' of camera must be \"perspective\" or \"orthographic\", got \"{}\"", proj));
+  c.position = ps.vec3("position", c.position);
+  c.look_at = ps.vec3("look_at", c.look_at);
+  c.up = direction(ps, "up", ps.vec3("up", c.up));
+  c.fov = ps.number("fov", c.fov);
+  require(ps, "fov", c.fov > 0 && c.fov < kMaxFovDegrees, "between 0 and 180 (exclusive)", c.fov);
+  c.view_width = positive(ps, "view_width", ps.number("view_width", c.view_width));
+  c.aperture = non_negative(ps, "aperture", ps.number("aperture", c.aperture));
+  c.focus_distance = non_negative(ps, "focus_distance", ps.number("focus_distance", c.focus_distance));
+  if (glm::length(c.look_at - c.position) < kMinDirectionLength)
+    ps.fail_block("camera position and look_at must differ");
+  if (glm::length(glm::cross(glm::normalize(c.look_at - c.position), glm::normalize(c.up))) < kMinDirectionLength)
+    ps.fail_block("camera up must not be parallel to the viewing direction");
+  c.loc = ps.loc();
+  scene_.has_camera = true;
+  ps.check_unused(kCameraNames);
+}
+
+TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4& transform) {
+  TextureDesc t;
+  t.transform = transform;
+  t.loc = ps.loc();
+  if (kind == "image_texture") {
+    t.kind = TextureKind::Image;
+    std::string file = ps.require_string("file");
+    t.image_path = resolve_path(file, loc_of(ps, "file"));
+    t.mapping = ps.string("mapping", "uv");
+    if (t.mapping != "uv" && t.mapping != "planar" && t.mapping != "spherical")
+      throw SceneError(loc_of(ps, "mapping"),
+                       fmt::format("property 'mapping' of image_texture must be \"uv\", \"planar\" or \"spherical\", got \"{}\"", t.mapping));
+    ps.check_unused(kImageTextureNames);
+  } else {
+    if (kind == "checker") t.kind = TextureKind::Checker;
+    else if (kind == "stripes") t.kind = TextureKind::Stripes;
+    else if (kind == "gradient") t.kind = TextureKind::Gradient;
+    else ps.fail_block(fmt::format("'{}' is not a texture", kind));
+    t.color1 = ps.color("color1", t.color1);
+    t.color2 = ps.color("color2", t.color2);
+    t.scale = positive(ps, "scale", ps.number("scale", t.scale));
+    if (kind == "checker") {
+      ps.check_unused(kCheckerNames);
+    } else {
+      t.axis = axis_of(ps);
+      ps.check_unused(kPatternTextureNames);
+    }
+  }
+  scene_.textures.push_back(std::move(t));
+  return static_cast<TextureId>(scene_.textures.size() - 1);
+}
+
+MaterialId SceneBuilder::material(ParamSet& ps) {
+  MaterialDesc m;
+  m.loc = ps.loc();
+  if (const ParamValue* c = ps.value("color")) {
+    if (auto* t = std::get_if<TextureRef>(c)) m.texture = t->id;
+    else m.color = ps.color("color", m.color);
+  }
+  if (const ParamValue* t = ps.value("texture")) {
+    auto* ref = std::get_if<TextureRef>(t);
+    if (!ref)
+      ps.fail(*ps.find("texture"), fmt::format("property 'texture' of material expects a texture, got a {}",
+                                               param_type_name(*t)));
+    m.texture = ref->id;
+  }
+  m.emission = ps.color("emission", m.emission);
+  non_negative_color(ps, "emission", m.emission);
+  m.ambient = non_negative(ps, "ambient", ps.number("ambient", m.ambient));
+  m.diffuse = non_negative(ps, "diffuse", ps.number("diffuse", m.diffuse));
+  m.specular = non_negative(ps, "specular", ps.number("specular", m.specular));
+  m.shininess = non_negative(ps, "shininess", ps.number("shininess", m.shininess));
+  m.reflect = ps.color("reflect", m.reflect);
+  non_negative_color(ps, "reflect", m.reflect);
+  m.transmit = ps.color("transmit", m.transmit);
+  non_negative_color(ps, "transmit", m.transmit);
+  m.ior = positive(ps, "ior", ps.number("ior", m.ior));
+  m.fresnel = ps.boolean("fresnel", m.fresnel);
+  m.roughness = non_negative(ps, "roughness", ps.number("roughness", m.roughness));
+  ps.check_unused(kMaterialNames);
+  scene_.materials.push_back(std::move(m));
+  return static_cast<MaterialId>(scene_.materials.size() - 1);
+}
+
+namespace {
+
+uint32_t mesh_index(ParamSet& ps, double v, std::size_t vertex_count) {
+  if (std::floor(v) != v || v < 0 || v >= static_cast<double>(vertex_count))
+    throw SceneError(loc_of(ps, "faces"),
+                     fmt::format("mesh face index {} out of range ({} vertices)", v, vertex_count));
+  return static_cast<uint32_t>(v);
+}
+
+// `vertices`/`faces`/`normals` are lists of vectors; an empty list arrives as numbers.
+std::vector<Vec3> vector_list(ParamSet& ps, std::string_view name) {
+  const ParamValue* v = ps.value(name);
+  if (!v) return {};
+  if (auto* l = std::get_if<std::vector<Vec3>>(v)) return *l;
+  if (auto* l = std::get_if<std::vector<double>>(v); l && l->empty()) return {};
+  throw SceneError(loc_of(ps, name), fmt::format("property '{}' of mesh expects a list of vectors, got a {}",
+                                                 name, param_type_name(*v)));
+}
+
+}  // namespace
+
+NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
+  ShapeDesc s;
+  s.loc = ps.loc();
+  if (const ParamValue* m = ps.value("material")) {
+    auto* ref = std::get_if<MaterialRef>(m);
+    if (!ref)
+      ps.fail(*ps.find("material"), fmt::format("property 'material' of {} expects a material, got a {}",
+                                                kind, param_type_name(*m)));
+    s.material = ref->id;
+  }
+  if (kind == "sphere") {
+    Sphere g;
+    g.center = ps.vec3("center", g.center);
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    s.geometry = g;
+    ps.check_unused(kSphereNames);
+  } else if (kind == "plane") {
+    Plane g;
+    g.normal = glm::normalize(direction(ps, "normal", ps.require_vec3("normal")));
+    g.offset = ps.number("offset", g.offset);
+    s.geometry = g;
+    ps.check_unused(kPlaneNames);
+  } else if (kind == "triangle") {
+    Triangle g;
+    g.v0 = ps.require_vec3("v0");
+    g.v1 = ps.require_vec3("v1");
+    g.v2 = ps.require_vec3("v2");
+    int normals = ps.has("n0") + ps.has("n1") + ps.has("n2");
+    if (normals != 0 && normals != 3) ps.fail_block("triangle needs all of n0, n1, n2 or none of them");
+    if (normals == 3) {
+      g.has_normals = true;
+      g.n0 = ps.vec3("n0", Vec3(0.0));
+      g.n1 = ps.vec3("n1", Vec3(0.0));
+      g.n2 = ps.vec3("n2", Vec3(0.0));
+    }
+    s.geometry = g;
+    ps.check_unused(kTriangleNames);
+  } else if (kind == "box") {
+    Box g;
+    g.min = ps.require_vec3("min");
+    g.max = ps.require_vec3("max");
+    if (g.min.x > g.max.x || g.min.y > g.max.y || g.min.z > g.max.z)
+      throw SceneError(loc_of(ps, "max"), "box max must be >= min in every component");
+    s.geometry = g;
+    ps.check_unused(kBoxNames);
+  } else if (kind == "cylinder") {
+    Cylinder g;
+    g.from = ps.require_vec3("from");
+    g.to = ps.require_vec3("to");
+    direction(ps, "to", g.to - g.from);
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    g.capped = ps.boolean("capped", g.capped);
+    s.geometry = g;
+    ps.check_unused(kCylinderNames);
+  } else if (kind == "cone") {
+    Cone g;
+    g.from = ps.require_vec3("from");
+    g.to = ps.require_vec3("to");
+    direction(ps, "to", g.to - g.from);
+    g.radius_from = non_negative(ps, "radius_from", ps.require_number("radius_from"));
+    g.radius_to = non_negative(ps, "radius_to", ps.number("radius_to", g.radius_to));
+    if (g.radius_from == 0 && g.radius_to == 0) ps.fail_block("cone needs a non-zero radius_from or radius_to");
+    g.capped = ps.boolean("capped", g.capped);
+    s.geometry = g;
+    ps.check_unused(kConeNames);
+  } else if (kind == "disc") {
+    Disc g;
+    g.center = ps.vec3("center", g.center);
+    g.normal = glm::normalize(direction(ps, "normal", ps.vec3("normal", g.normal)));
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    g.inner_radius = non_negative(ps, "inner_radius", ps.number("inner_radius", g.inner_radius));
+    require(ps, "inner_radius", g.inner_radius < g.radius, "< radius", g.inner_radius);
+    s.geometry = g;
+    ps.check_unused(kDiscNames);
+  } else if (kind == "mesh") {
+    MeshRef g;
+    g.smooth = ps.boolean("smooth", g.smooth);
+    std::shared_ptr<MeshData> mesh;
+    if (ps.has("file")) {
+      if (ps.has("vertices") || ps.has("faces"))
+        ps.fail_block("mesh takes either 'file' or 'vertices' and 'faces', not both");
+      SourceRef where = loc_of(ps, "file");
+      std::string file = ps.string("file", "");
+      mesh = load_obj(resolve_path(file, where), file, g.smooth, where);
+    } else {
+      if (!ps.has("vertices")) ps.fail_block("mesh needs property 'file' or 'vertices' and 'faces'");
+      if (!ps.has("faces")) ps.fail_block("mesh needs property 'faces'");
+      std::vector<Vec3> vertices = vector_list(ps, "vertices");
+      std::vector<Vec3> faces = vector_list(ps, "faces");
+      std::vector<Vec3> normals = vector_list(ps, "normals");
+      if (faces.empty()) throw SceneError(loc_of(ps, "faces"), "mesh needs at least one face");
+      if (!normals.empty() && normals.size() != vertices.size())
+        throw SceneError(loc_of(ps, "normals"),
+                         fmt::format("mesh has {} vertices but {} normals", vertices.size(), normals.size()));
+      mesh = std::make_shared<MeshData>();
+      for (const Vec3& v : vertices) mesh->positions.emplace_back(v);
+      for (const Vec3& n : normals) mesh->normals.emplace_back(glm::normalize(n));
+      for (const Vec3& f : faces)
+        for (int k = 0; k < 3; ++k) mesh->indices.push_back(mesh_index(ps, f[k], vertices.size()));
+      if (normals.empty() && g.smooth) compute_smooth_normals(*mesh);
+    }
+    mesh_triangles_ += mesh->indices.size() / 3;
+    if (mesh_triangles_ > limits_.max_mesh_triangles)
+      ps.fail_block(fmt::format("meshes have more than {} triangles in total (raise with --max-mesh-triangles)",
+                                limits_.max_mesh_triangles));
+    scene_.meshes.push_back(std::move(mesh));
+    g.mesh = static_cast<MeshId>(scene_.meshes.size() - 1);
+    s.geometry = g;
+    ps.check_unused(kMeshNames);
+  } else {
+    ps.fail_block(fmt::format("'{}' is not a shape", kind));
+  }
+  scene_.shapes.push_back(std::move(s));
+  scene_.nodes.push_back(Node{NodeKind::Shape, static_cast<uint32_t>(scene_.shapes.size() - 1), ps.loc()});
+  return static_cast<NodeId>(scene_.nodes.size() - 1);
+}
+
+NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
+  LightDesc l;
+  l.loc = ps.loc();
+  l.color = ps.color("color", l.color);
+  non_negative_color(ps, "color", l.color);
+  l.intensity = non_negative(ps, "intensity", ps.number("intensity", l.intensity));
+  l.shadows = ps.boolean("shadows", l.shadows);
+  auto attenuation = [&] {
+    l.attenuation = ps.vec3("attenuation", l.attenuation);
+    const Vec3& a = l.attenuation;
+    if (a.x < 0 || a.y < 0 || a.z < 0 || a.x + a.y + a.z <= 0)
+      throw SceneError(loc_of(ps, "attenuation"),
+                       "property 'attenuation' must have non-negative components, not all zero");
+  };
+  if (kind == "point_light") {
+    l.kind = LightKind::Point;
+    l.position = ps.require_vec3("position");
+    attenuation();
+    ps.check_unused(kPointLightNames);
+  } else if (kind == "spot_light") {
+    l.kind = LightKind::Spot;
+    l.position = ps.require_vec3("position");
+    l.point_at = ps.require_vec3("point_at");
+    direction(ps, "point_at", l.point_at - l.position);
+    l.radius = ps.number("radius", l.radius);
+    require(ps, "radius", l.radius > 0 && l.radius < 90, "between 0 and 90 degrees", l.radius);
+    l.falloff = ps.number("falloff", std::max(l.falloff, l.radius));
+    require(ps, "falloff", l.falloff >= l.radius && l.falloff <= 90, ">= radius and <= 90 degrees", l.falloff);
+    attenuation();
+    ps.check_unused(kSpotLightNames);
+  } else if (kind == "directional_light") {
+    l.kind = LightKind::Directional;
+    l.direction = glm::normalize(direction(ps, "direction", ps.require_vec3("direction")));
+    ps.check_unused(kDirectionalLightNames);
+  } else if (kind == "area_light") {
+    l.kind = LightKind::Area;
+    l.position = ps.require_vec3("position");
+    l.u = direction(ps, "u", ps.require_vec3("u"));
+    l.v = direction(ps, "v", ps.require_vec3("v"));
+    l.samples = ps.integer("samples", l.samples);
+    require(ps, "samples", l.samples >= 1, ">= 1", l.samples);
+    l.disc = ps.boolean("disc", l.disc);
+    attenuation();
+    ps.check_unused(kAreaLightNames);
+  } else {
+    ps.fail_block(fmt::format("'{}' is not a light", kind));
+  }
+  scene_.lights.push_back(std::move(l));
+  scene_.nodes.push_back(Node{NodeKind::Light, static_cast<uint32_t>(scene_.lights.size() - 1), ps.loc()});
+  return static_cast<NodeId>(scene_.nodes.size() - 1);
+}
+
+NodeId SceneBuilder::group(std::vector<Child> children, SourceRef loc) {
+  scene_.groups.push_back(GroupDesc{std::move(children)});
+  scene_.nodes.push_back(Node{NodeKind::Group, static_cast<uint32_t>(scene_.groups.size() - 1), loc});
+  return static_cast<NodeId>(scene_.nodes.size() - 1);
+}
+
+void SceneBuilder::place(const Child& instance) { scene_.roots.push_back(instance); }
+
+}  // namespace rts::render

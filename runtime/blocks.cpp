@@ -1,0 +1,279 @@
+// Blocks (`sphere { ... }`, `material { ... }`, `group { ... }`), `with` derivation,
+// transform postfixes, conversion of values to builder parameters, and object placement.
+#include <cmath>
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "runtime/interpreter.hpp"
+
+namespace rts::runtime {
+
+namespace {
+
+// Restores the interpreter state that a block body changes, however the body ends.
+template <typename T>
+struct Restore {
+  T& ref;
+  T saved;
+  explicit Restore(T& r) : ref(r), saved(r) {}
+  ~Restore() { ref = saved; }
+};
+
+void set_or_add(std::vector<Property>& props, Property p) {
+  for (Property& q : props)
+    if (q.name == p.name) {
+      q = std::move(p);
+      return;
+    }
+  props.push_back(std::move(p));
+}
+
+}  // namespace
+
+void Interpreter::collect_properties(const ast::BlockBody& body, std::vector<Property>& props, bool allow_placement) {
+  Restore<unsigned> loops(loop_depth_);
+  Restore<bool> in_macro(in_macro_);
+  Restore<bool> placement(placement_allowed_);
+  loop_depth_ = 0;     // `break` cannot leave a block
+  in_macro_ = false;   // nor can `return`
+  placement_allowed_ = allow_placement;
+  push_scope();
+  for (const ast::BlockItem& item : body.items) {
+    if (item.property) {
+      set_or_add(props, Property{item.property, eval(*item.value), item.loc});
+    } else {
+      exec(*item.stmt);
+    }
+  }
+  pop_scope();
+}
+
+Value Interpreter::eval_block(const ast::BlockExpr& e) {
+  const std::string& kind = *e.kind_name;
+  render::BlockCategory cat = render::SceneBuilder::category(kind);
+  switch (cat) {
+    case render::BlockCategory::Unknown: {
+      std::string msg = fmt::format("unknown block kind '{}'", kind);
+      std::string hint = render::closest_name(kind, render::SceneBuilder::block_kinds());
+      if (!hint.empty()) msg += fmt::format("; did you mean '{}'?", hint);
+      fail(e.loc, msg);
+    }
+    case render::BlockCategory::Group: {
+      std::vector<render::Child> children;
+      std::vector<Property> props;
+      {
+        Restore<std::vector<render::Child>*> target(target_);
+        target_ = &children;
+        collect_properties(e.body, props, true);
+      }
+      if (!props.empty()) fail(props.front().loc, fmt::format("unknown property '{}' for group (a group takes no properties)", *props.front().name));
+      Value v;
+      v.type = Type::Object;
+      v.id = builder_.group(std::move(children), ref(e.loc));
+      return v;
+    }
+    case render::BlockCategory::Material:
+    case render::BlockCategory::Texture: {
+      auto rec = std::make_shared<RecordValue>();
+      rec->kind = e.kind_name;
+      rec->loc = e.loc;
+      collect_properties(e.body, rec->props, false);
+      Value v;
+      v.type = cat == render::BlockCategory::Material ? Type::Material : Type::Texture;
+      v.ref = std::move(rec);
+      return v;
+    }
+    default: break;
+  }
+  std::vector<Property> props;
+  props.reserve(e.body.items.size());
+  collect_properties(e.body, props, false);
+  render::ParamSet ps = to_params(kind, e.loc, props);
+  Value v;
+  switch (cat) {
+    case render::BlockCategory::Settings: builder_.settings(ps); return v;
+    case render::BlockCategory::Camera: builder_.camera(ps); return v;
+    case render::BlockCategory::Shape:
+      v.type = Type::Object;
+      v.id = builder_.shape(kind, ps);
+      return v;
+    case render::BlockCategory::Light:
+      v.type = Type::Object;
+      v.id = builder_.light(kind, ps);
+      return v;
+    default: break;
+  }
+  fail(e.loc, "internal error: unhandled block category");
+}
+
+Value Interpreter::eval_with(const ast::WithExpr& e) {
+  Value base = eval(*e.base);
+  if (base.type != Type::Material && base.type != Type::Texture)
+    fail(e.base->loc, fmt::format("'with' derives from a material or a texture, got {}", with_article(base.type)));
+  auto rec = std::make_shared<RecordValue>(as_record(base));
+  rec->built_id = render::kNoId;
+  rec->loc = e.loc;
+  collect_properties(e.body, rec->props, false);
+  Value v;
+  v.type = base.type;
+  v.ref = std::move(rec);
+  return v;
+}
+
+Value Interpreter::make_texture(ast::Symbol kind, std::vector<Property> props, SourceLoc loc) {
+  auto rec = std::make_shared<RecordValue>();
+  rec->kind = kind;
+  rec->props = std::move(props);
+  rec->loc = loc;
+  Value v;
+  v.type = Type::Texture;
+  v.ref = std::move(rec);
+  return v;
+}
+
+Value Interpreter::eval_transform(const ast::TransformExpr& e) {
+  Value obj = eval(*e.object);
+  Value arg = eval(*e.arg);
+  const char* op = ast::to_string(e.op);
+  auto need = [&](bool ok, const char* what) {
+    if (!ok) fail(e.arg->loc, fmt::format("'{}' needs {}, got {}", op, what, with_article(arg.type)));
+  };
+  render::Mat4 t(1.0);
+  switch (e.op) {
+    case ast::TransformOp::Translate:
+      need(arg.type == Type::Vector, "a vector");
+      t = glm::translate(render::Mat4(1.0), arg.v);
+      break;
+    case ast::TransformOp::Rotate:
+      need(arg.type == Type::Vector, "a vector of angles in degrees");
+      // About x first, then y, then z (matrices apply right to left).
+      t = glm::rotate(render::Mat4(1.0), glm::radians(arg.v.z), render::Vec3(0, 0, 1)) *
+          glm::rotate(render::Mat4(1.0), glm::radians(arg.v.y), render::Vec3(0, 1, 0)) *
+          glm::rotate(render::Mat4(1.0), glm::radians(arg.v.x), render::Vec3(1, 0, 0));
+      break;
+    case ast::TransformOp::Scale: {
+      need(arg.type == Type::Vector || arg.type == Type::Number, "a number or a vector");
+      render::Vec3 s = arg.type == Type::Number ? render::Vec3(arg.v.x) : arg.v;
+      if (s.x == 0 || s.y == 0 || s.z == 0) fail(e.arg->loc, "cannot scale by zero (the result would be flat)");
+      t = glm::scale(render::Mat4(1.0), s);
+      break;
+    }
+    case ast::TransformOp::Matrix:
+      if (arg.type == Type::Transform) {
+        t = as_transform(arg);
+        break;
+      }
+      need(arg.type == Type::List && as_list(arg).size() == 12, "a list of 12 numbers or a transform");
+      // POV-Ray order: the 3x3 part row by row, then the translation; row i of POV-Ray's
+      // row-vector matrix is column i of ours.
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const Value& x = as_list(arg)[static_cast<std::size_t>(i * 3 + j)];
+          if (x.type != Type::Number) fail(e.arg->loc, "'matrix' needs a list of 12 numbers");
+          t[i][j] = x.v.x;
+        }
+      if (std::fabs(glm::determinant(t)) == 0.0) fail(e.arg->loc, "this matrix is singular (not invertible)");
+      break;
+  }
+  switch (obj.type) {
+    case Type::Object: {
+      Value r = obj;
+      r.ref = std::make_shared<TransformValue>(t * object_transform(obj));
+      return r;
+    }
+    case Type::Transform: {
+      Value r = obj;
+      r.ref = std::make_shared<TransformValue>(t * as_transform(obj));
+      return r;
+    }
+    case Type::Texture: {
+      auto rec = std::make_shared<RecordValue>(as_record(obj));
+      rec->built_id = render::kNoId;
+      rec->transform = t * rec->transform;
+      Value r = obj;
+      r.ref = std::move(rec);
+      return r;
+    }
+    default:
+      fail(e.op_loc, fmt::format("cannot {} {}; transforms apply to objects, textures and transforms", op,
+                                 with_article(obj.type)));
+  }
+}
+
+render::ParamValue Interpreter::to_param(const Property& p, const std::string& kind) {
+  const Value& v = p.value;
+  switch (v.type) {
+    case Type::Number: return v.v.x;
+    case Type::Bool: return v.truth();
+    case Type::String: return as_string(v);
+    case Type::Vector: return render::Vec3(v.v);
+    case Type::Color: return render::Color(v.v.x, v.v.y, v.v.z);
+    case Type::Texture: return render::TextureRef{realize_texture(v, p.loc)};
+    case Type::Material: return render::MaterialRef{realize_material(v, p.loc)};
+    case Type::List: {
+      const auto& items = as_list(v);
+      if (items.empty()) return std::vector<double>{};
+      if (items.front().type == Type::Vector) {
+        std::vector<render::Vec3> out;
+        out.reserve(items.size());
+        for (const Value& x : items) {
+          if (x.type != Type::Vector) break;
+          out.push_back(x.v);
+        }
+        if (out.size() == items.size()) return out;
+      } else if (items.front().type == Type::Number) {
+        std::vector<double> out;
+        out.reserve(items.size());
+        for (const Value& x : items) {
+          if (x.type != Type::Number) break;
+          out.push_back(x.v.x);
+        }
+        if (out.size() == items.size()) return out;
+      }
+      fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: properties take lists of numbers or of vectors",
+                              *p.name, kind));
+    }
+    default:
+      fail(p.loc, fmt::format("property '{}' of {} cannot hold {}", *p.name, kind, with_article(v.type)));
+  }
+}
+
+render::ParamSet Interpreter::to_params(const std::string& kind, SourceLoc loc, const std::vector<Property>& props) {
+  render::ParamSet ps(kind, ref(loc));
+  for (const Property& p : props) {
+    if (p.value.type == Type::None) continue;  // `name = none` leaves the property unset
+    ps.add(*p.name, to_param(p, kind), ref(p.loc));
+  }
+  return ps;
+}
+
+uint32_t Interpreter::realize_material(const Value& material, SourceLoc) {
+  RecordValue& rec = as_record(material);
+  if (rec.built_id == render::kNoId) {
+    render::ParamSet ps = to_params(*rec.kind, rec.loc, rec.props);
+    rec.built_id = builder_.material(ps);
+  }
+  return rec.built_id;
+}
+
+uint32_t Interpreter::realize_texture(const Value& texture, SourceLoc) {
+  RecordValue& rec = as_record(texture);
+  if (rec.built_id == render::kNoId) {
+    render::ParamSet ps = to_params(*rec.kind, rec.loc, rec.props);
+    rec.built_id = builder_.texture(*rec.kind, ps, rec.transform);
+  }
+  return rec.built_id;
+}
+
+void Interpreter::place(const Value& object, SourceLoc loc) {
+  if (!placement_allowed_)
+    fail(loc, "objects can only be placed at top level, in a group or in a macro (not inside another block)");
+  if (++placements_ > options_.limits.max_objects)
+    fail(loc, fmt::format("more than {} objects placed (raise the limit with --max-objects)", options_.limits.max_objects));
+  render::Child c{object.id, object_transform(object), ref(loc)};
+  if (target_) target_->push_back(c);
+  else builder_.place(c);
+}
+
+}  // namespace rts::runtime

@@ -1,0 +1,263 @@
+// The builtin functions. Trigonometry works in radians (radians()/degrees() convert);
+// `rotate` is the only place the language takes degrees.
+#include <cmath>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "runtime/interpreter.hpp"
+#include "runtime/ops.hpp"
+
+namespace rts::runtime {
+
+namespace {
+
+SourceLoc arg_loc(const BuiltinCall& c, std::size_t i) { return c.call.args[i].value->loc; }
+
+[[noreturn]] void bad_arg(const BuiltinCall& c, std::size_t i, const char* expected) {
+  c.in.fail(arg_loc(c, i), fmt::format("argument {} of '{}' must be {}, got {}", i + 1, c.def.name, expected,
+                                       with_article(c.args[i].type)));
+}
+
+double num(const BuiltinCall& c, std::size_t i) {
+  if (c.args[i].type != Type::Number) bad_arg(c, i, "a number");
+  return c.args[i].v.x;
+}
+glm::dvec3 vec(const BuiltinCall& c, std::size_t i) {
+  if (c.args[i].type != Type::Vector) bad_arg(c, i, "a vector");
+  return c.args[i].v;
+}
+const std::string& str(const BuiltinCall& c, std::size_t i) {
+  if (c.args[i].type != Type::String) bad_arg(c, i, "a string");
+  return as_string(c.args[i]);
+}
+
+// A number result that must be finite: "sqrt(-1) produced NaN (not a number)".
+Value finite(const BuiltinCall& c, double r) {
+  if (!std::isfinite(r)) {
+    std::string args;
+    for (std::size_t i = 0; i < c.argc; ++i) {
+      if (i) args += ", ";
+      args += to_text(c.args[i], true);
+    }
+    check_finite(r, c.call.loc, fmt::format("{}({})", c.def.name, args).c_str());
+  }
+  return Value::number(r);
+}
+
+template <double (*F)(double)>
+Value math1(BuiltinCall& c) {
+  return finite(c, F(num(c, 0)));
+}
+template <double (*F)(double, double)>
+Value math2(BuiltinCall& c) {
+  return finite(c, F(num(c, 0), num(c, 1)));
+}
+
+double radians(double d) { return d * (M_PI / 180.0); }
+double degrees(double r) { return r * (180.0 / M_PI); }
+double sin_(double x) { return std::sin(x); }
+double cos_(double x) { return std::cos(x); }
+double tan_(double x) { return std::tan(x); }
+double asin_(double x) { return std::asin(x); }
+double acos_(double x) { return std::acos(x); }
+double atan_(double x) { return std::atan(x); }
+double atan2_(double y, double x) { return std::atan2(y, x); }
+double sqrt_(double x) { return std::sqrt(x); }
+double pow_(double x, double y) { return std::pow(x, y); }
+double exp_(double x) { return std::exp(x); }
+double log_(double x) { return std::log(x); }
+double abs_(double x) { return std::fabs(x); }
+double floor_(double x) { return std::floor(x); }
+double ceil_(double x) { return std::ceil(x); }
+double round_(double x) { return std::round(x); }
+
+// min/max over numbers given as arguments, or over one list of numbers.
+template <bool Max>
+Value extreme(BuiltinCall& c) {
+  const Value* items = c.args;
+  std::size_t n = c.argc;
+  if (n == 1 && c.args[0].type == Type::List) {
+    items = as_list(c.args[0]).data();
+    n = as_list(c.args[0]).size();
+    if (n == 0) c.in.fail(arg_loc(c, 0), fmt::format("'{}' of an empty list", c.def.name));
+  }
+  double best = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (items[i].type != Type::Number)
+      c.in.fail(arg_loc(c, c.argc == n ? i : 0), fmt::format("'{}' needs numbers, got {}", c.def.name, with_article(items[i].type)));
+    double x = items[i].v.x;
+    if (i == 0 || (Max ? x > best : x < best)) best = x;
+  }
+  return Value::number(best);
+}
+
+Value clamp(BuiltinCall& c) {
+  double x = num(c, 0), lo = num(c, 1), hi = num(c, 2);
+  if (lo > hi) c.in.fail(c.call.loc, fmt::format("clamp: lower bound {} is above upper bound {}", lo, hi));
+  return Value::number(std::min(std::max(x, lo), hi));
+}
+
+Value mix(BuiltinCall& c) {
+  const Value& a = c.args[0];
+  const Value& b = c.args[1];
+  double t = num(c, 2);
+  if (a.type != b.type || (a.type != Type::Number && a.type != Type::Vector && a.type != Type::Color))
+    c.in.fail(c.call.loc, fmt::format("'mix' needs two numbers, vectors or colors of the same kind, got {} and {}",
+                                      with_article(a.type), with_article(b.type)));
+  Value r = a;
+  r.v = a.v + (b.v - a.v) * t;
+  return r;
+}
+
+Value dot(BuiltinCall& c) { return finite(c, glm::dot(vec(c, 0), vec(c, 1))); }
+Value cross(BuiltinCall& c) { return Value::vector(glm::cross(vec(c, 0), vec(c, 1))); }
+Value length(BuiltinCall& c) { return finite(c, glm::length(vec(c, 0))); }
+Value normalize(BuiltinCall& c) {
+  glm::dvec3 v = vec(c, 0);
+  double len = glm::length(v);
+  if (len == 0.0) c.in.fail(arg_loc(c, 0), "cannot normalize a zero-length vector");
+  return Value::vector(v / len);
+}
+
+Value rgb(BuiltinCall& c) {
+  if (c.argc == 1) {
+    if (c.args[0].type == Type::Vector || c.args[0].type == Type::Color) return Value::color(c.args[0].v);
+    return Value::color(glm::dvec3(num(c, 0)));
+  }
+  if (c.argc != 3) c.in.fail(c.call.loc, fmt::format("'rgb' takes 1 or 3 arguments, got {}", c.argc));
+  return Value::color({num(c, 0), num(c, 1), num(c, 2)});
+}
+
+Value vec_(BuiltinCall& c) { return Value::vector({num(c, 0), num(c, 1), num(c, 2)}); }
+
+Value len(BuiltinCall& c) {
+  const Value& v = c.args[0];
+  if (v.type == Type::List) return Value::number(static_cast<double>(as_list(v).size()));
+  if (v.type == Type::String) return Value::number(static_cast<double>(as_string(v).size()));
+  if (v.type == Type::Range) return Value::number(static_cast<double>(range_count(v)));
+  bad_arg(c, 0, "a list, a string or a range");
+}
+
+Value str_(BuiltinCall& c) { return Value::string(to_text(c.args[0])); }
+
+Value format(BuiltinCall& c) {
+  const std::string& f = str(c, 0);
+  std::string out;
+  std::size_t next = 1;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (f[i] == '{' && i + 1 < f.size() && f[i + 1] == '{') {
+      out += '{';
+      ++i;
+    } else if (f[i] == '}' && i + 1 < f.size() && f[i + 1] == '}') {
+      out += '}';
+      ++i;
+    } else if (f[i] == '{' && i + 1 < f.size() && f[i + 1] == '}') {
+      if (next >= c.argc)
+        c.in.fail(arg_loc(c, 0), fmt::format("format string has more '{{}}' than the {} value{} given", c.argc - 1,
+                                             c.argc == 2 ? "" : "s"));
+      out += to_text(c.args[next++]);
+      ++i;
+    } else {
+      out += f[i];
+    }
+  }
+  if (next != c.argc)
+    c.in.fail(arg_loc(c, next), fmt::format("format string has {} '{{}}' but {} values were given", next - 1, c.argc - 1));
+  return Value::string(std::move(out));
+}
+
+Value print(BuiltinCall& c) {
+  std::string text;
+  for (std::size_t i = 0; i < c.argc; ++i) {
+    if (i) text += " ";
+    text += to_text(c.args[i]);
+  }
+  const SourceLoc& l = c.call.loc;
+  std::cerr << fmt::format("{}:{}:{}: print: {}\n", l.file ? l.file->path() : "", l.line, l.col, text);
+  return Value::none();
+}
+
+Value assert_(BuiltinCall& c) {
+  if (c.args[0].type != Type::Bool) bad_arg(c, 0, "a bool");
+  if (!c.args[0].truth()) {
+    std::string msg = "assertion failed";
+    if (c.argc > 1) msg += ": " + to_text(c.args[1]);
+    c.in.fail(c.call.loc, msg);
+  }
+  return Value::none();
+}
+
+Value error(BuiltinCall& c) { c.in.fail(c.call.loc, to_text(c.args[0])); }
+
+// checker(c1, c2, scale), stripes(c1, c2, scale, axis), gradient(...), image_texture(file, mapping):
+// the same properties as the block forms, checked by the builder when the texture is used.
+Value texture(BuiltinCall& c, const char* kind, std::initializer_list<const char*> names) {
+  std::vector<Property> props;
+  std::size_t i = 0;
+  for (const char* n : names) {
+    if (i >= c.argc) break;
+    props.push_back(Property{ast::intern(n), c.args[i], arg_loc(c, i)});
+    ++i;
+  }
+  return c.in.make_texture(ast::intern(kind), std::move(props), c.call.loc);
+}
+Value checker(BuiltinCall& c) { return texture(c, "checker", {"color1", "color2", "scale"}); }
+Value stripes(BuiltinCall& c) { return texture(c, "stripes", {"color1", "color2", "scale", "axis"}); }
+Value gradient(BuiltinCall& c) { return texture(c, "gradient", {"color1", "color2", "scale", "axis"}); }
+Value image_texture(BuiltinCall& c) { return texture(c, "image_texture", {"file", "mapping"}); }
+
+// random(seed) makes a stream; rand(r) draws from it in [0, 1), rand(r, lo, hi) in [lo, hi).
+Value random(BuiltinCall& c) {
+  double seed = num(c, 0);
+  if (seed < 0 || std::floor(seed) != seed) bad_arg(c, 0, "a whole number >= 0");
+  Value v;
+  v.type = Type::Random;
+  v.ref = std::make_shared<RandomValue>(static_cast<uint64_t>(seed));
+  return v;
+}
+Value rand(BuiltinCall& c) {
+  if (c.args[0].type != Type::Random) bad_arg(c, 0, "a random stream (from random(seed))");
+  if (c.argc == 2) c.in.fail(c.call.loc, "'rand' takes 1 or 3 arguments: rand(r) or rand(r, lo, hi)");
+  double u = as_random(c.args[0]).next_unit();
+  if (c.argc == 1) return Value::number(u);
+  double lo = num(c, 1), hi = num(c, 2);
+  return Value::number(lo + (hi - lo) * u);
+}
+
+Value identity(BuiltinCall&) {
+  Value v;
+  v.type = Type::Transform;
+  v.ref = std::make_shared<TransformValue>(render::Mat4(1.0));
+  return v;
+}
+
+}  // namespace
+
+const std::vector<Builtin>& builtin_table() {
+  static const std::vector<Builtin> table = {
+      {"sin", 1, 1, math1<sin_>},        {"cos", 1, 1, math1<cos_>},
+      {"tan", 1, 1, math1<tan_>},        {"asin", 1, 1, math1<asin_>},
+      {"acos", 1, 1, math1<acos_>},      {"atan", 1, 1, math1<atan_>},
+      {"atan2", 2, 2, math2<atan2_>},    {"sqrt", 1, 1, math1<sqrt_>},
+      {"pow", 2, 2, math2<pow_>},        {"exp", 1, 1, math1<exp_>},
+      {"log", 1, 1, math1<log_>},        {"abs", 1, 1, math1<abs_>},
+      {"floor", 1, 1, math1<floor_>},    {"ceil", 1, 1, math1<ceil_>},
+      {"round", 1, 1, math1<round_>},    {"radians", 1, 1, math1<radians>},
+      {"degrees", 1, 1, math1<degrees>}, {"min", 1, -1, extreme<false>},
+      {"max", 1, -1, extreme<true>},     {"clamp", 3, 3, clamp},
+      {"mix", 3, 3, mix},                {"dot", 2, 2, dot},
+      {"cross", 2, 2, cross},            {"length", 1, 1, length},
+      {"normalize", 1, 1, normalize},    {"rgb", 1, 3, rgb},
+      {"vec", 3, 3, vec_},               {"len", 1, 1, len},
+      {"str", 1, 1, str_},               {"format", 1, -1, format},
+      {"print", 0, -1, print},           {"assert", 1, 2, assert_},
+      {"error", 1, 1, error},            {"checker", 2, 3, checker},
+      {"stripes", 2, 4, stripes},        {"gradient", 2, 4, gradient},
+      {"image_texture", 1, 2, image_texture}, {"random", 1, 1, random},
+      {"rand", 1, 3, rand},              {"identity", 0, 0, identity},
+  };
+  return table;
+}
+
+}  // namespace rts::runtime

@@ -1,0 +1,94 @@
+// evaluate_file(): runs the interpreter on a thread with a large stack and times it.
+#include "runtime/evaluator.hpp"
+
+#include <pthread.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <exception>
+#include <functional>
+
+#include "runtime/interpreter.hpp"
+
+namespace rts {
+
+namespace {
+
+// The evaluator recurses in C++ for every macro call and nested expression; give it a stack
+// big enough for the recursion limit (memory is only committed as it is touched).
+constexpr std::size_t kMinStackBytes = 256u << 20;
+constexpr std::size_t kStackBytesPerMacroLevel = 64u << 10;
+constexpr std::size_t kMaxStackBytes = std::size_t(8) << 30;
+
+void run_with_big_stack(std::size_t stack_bytes, const std::function<void()>& fn) {
+  struct Job {
+    const std::function<void()>* fn;
+    std::exception_ptr error;
+  } job{&fn, nullptr};
+  auto start = [&](std::size_t bytes, pthread_t& thread) {
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    bool ok = pthread_attr_setstacksize(&attr, bytes) == 0 &&
+              pthread_create(&thread, &attr, [](void* p) -> void* {
+                auto* j = static_cast<Job*>(p);
+                try {
+                  (*j->fn)();
+                } catch (...) {
+                  j->error = std::current_exception();
+                }
+                return nullptr;
+              }, &job) == 0;
+    pthread_attr_destroy(&attr);
+    return ok;
+  };
+  pthread_t thread;
+  // A huge request can fail where address space is limited (ulimit -v): fall back to less.
+  if (!start(stack_bytes, thread) && !start(kMinStackBytes, thread)) {
+    fn();  // no thread available: run here, with the default stack
+    return;
+  }
+  pthread_join(thread, nullptr);
+  if (job.error) std::rethrow_exception(job.error);
+}
+
+}  // namespace
+
+EvalResult evaluate_source(SourceManager& sources, const SourceFile& file, const EvalOptions& options,
+                           DiagnosticSink& warnings) {
+  EvalResult result;
+  auto start = std::chrono::steady_clock::now();
+  std::size_t stack = std::clamp<std::size_t>(
+      kMinStackBytes + std::size_t(options.limits.max_recursion) * kStackBytesPerMacroLevel, kMinStackBytes,
+      kMaxStackBytes);
+  run_with_big_stack(stack, [&] {
+    runtime::Interpreter interp(sources, options, warnings);
+    interp.run(file);
+    result.scene = interp.finish();
+  });
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+EvalResult evaluate_file(SourceManager& sources, const std::string& path, const EvalOptions& options,
+                         DiagnosticSink& warnings) {
+  auto start = std::chrono::steady_clock::now();
+  const SourceFile* file = sources.load(path);
+  EvalResult r = evaluate_source(sources, *file, options, warnings);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+bool parse_define(const std::string& text, Define& out) {
+  std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) return false;
+  std::string name = text.substr(0, eq);
+  if (!(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  out.name = name;
+  out.value = text.substr(eq + 1);
+  return true;
+}
+
+}  // namespace rts

@@ -1,0 +1,64 @@
+// The evaluator: runs a scene program (an rts::ast::Program) and builds a render::SceneDesc
+// through render::SceneBuilder. Entry point for `rts check`, `rts eval` and `rts render`.
+//
+//   rts::EvalOptions opts;                       // -I, -D and limits (see add_eval_options)
+//   rts::DiagnosticSink warnings(std::cerr);
+//   rts::EvalResult r = rts::evaluate_file(sources, "scene.rts", opts, warnings);
+//
+// Errors: a syntax or runtime error in any file is thrown as LanguageError (located, with
+// "in call to macro" / "in file included from here" notes, innermost first); a main file that
+// cannot be read is thrown as SourceError. Warnings (e.g. a -D define that matches no `let`)
+// go to `warnings`.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "parser/diagnostics.hpp"
+#include "parser/source.hpp"
+#include "render/scene.hpp"
+
+namespace rts {
+
+// -D name=value: `value` is an rts expression (2, "x", <1,2,3>, rgb(1,0,0)...). It replaces
+// the expression of the FIRST top-level `let name = ...` of the main file.
+struct Define {
+  std::string name, value;
+};
+
+// Limits no sensible scene reaches; each has a command-line flag to raise it.
+struct EvalLimits {
+  uint64_t max_iterations = 10'000'000;         // --max-iterations: loop iterations, in total
+  unsigned max_recursion = 1000;                // --max-recursion: macro call depth
+  std::size_t max_objects = 10'000'000;         // --max-objects: object placements, in total
+  std::size_t max_mesh_triangles = 50'000'000;  // --max-mesh-triangles: OBJ + inline meshes
+};
+
+struct EvalOptions {
+  std::vector<std::string> include_paths;  // -I, searched after the including file's folder
+  std::vector<Define> defines;             // -D
+  EvalLimits limits;
+};
+
+struct EvalResult {
+  render::SceneDesc scene;
+  double seconds = 0.0;  // wall-clock time of parsing + evaluation
+};
+
+// Parses and evaluates the scene file at `path` (loaded through `sources`, which must outlive
+// the result: SourceRefs in the scene point into it). Runs on a thread with a large stack so
+// that deep macro recursion (up to limits.max_recursion) cannot overflow the C++ stack.
+EvalResult evaluate_file(SourceManager& sources, const std::string& path, const EvalOptions& options,
+                         DiagnosticSink& warnings);
+
+// The same for an already loaded file (tests: SourceManager::add of in-memory text).
+EvalResult evaluate_source(SourceManager& sources, const SourceFile& file, const EvalOptions& options,
+                           DiagnosticSink& warnings);
+
+// Parses a -D argument "name=value" into a Define; returns false when it has no '=' or the
+// name is not an identifier.
+bool parse_define(const std::string& text, Define& out);
+
+}  // namespace rts

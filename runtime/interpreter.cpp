@@ -1,0 +1,615 @@
+// Statements, names, expressions, macro calls and includes.
+#include "runtime/interpreter.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "parser/parser.hpp"
+#include "render/params.hpp"
+#include "runtime/ops.hpp"
+
+namespace rts::runtime {
+
+namespace fs = std::filesystem;
+
+namespace {
+// Builtin calls with at most this many arguments keep them on the C++ stack.
+constexpr std::size_t kInlineArgs = 8;
+}  // namespace
+
+Interpreter::Interpreter(SourceManager& sources, const EvalOptions& options, DiagnosticSink& warnings)
+    : sources_(sources),
+      options_(options),
+      warnings_(warnings),
+      builder_(render::BuilderLimits{options.limits.max_mesh_triangles}) {
+  const auto& table = builtin_table();
+  for (uint32_t i = 0; i < table.size(); ++i) builtins_[ast::intern(table[i].name)] = i;
+}
+
+void Interpreter::fail(SourceLoc loc, std::string message) const { throw LanguageError(loc, std::move(message)); }
+
+render::SourceRef Interpreter::ref(SourceLoc loc) {
+  if (!loc.file) return {};
+  return render::SourceRef{loc.file->path().c_str(), loc.line, loc.col};
+}
+
+void Interpreter::add_notes(Diagnostic& d) const {
+  // Deep recursion would print a note per level: keep the innermost and outermost ones.
+  constexpr std::size_t kNotesKeptAtEachEnd = 5;
+  const std::size_t n = contexts_.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Context& c = contexts_[n - 1 - k];  // innermost first
+    if (n > 2 * kNotesKeptAtEachEnd + 1 && k >= kNotesKeptAtEachEnd && k < n - kNotesKeptAtEachEnd) {
+      if (k == kNotesKeptAtEachEnd)
+        d.notes.push_back(Note{c.site, fmt::format("({} more calls and includes not shown)", n - 2 * kNotesKeptAtEachEnd)});
+      continue;
+    }
+    if (c.kind == Context::Macro)
+      d.notes.push_back(Note{c.site, fmt::format("in call to macro '{}' from here", *c.name)});
+    else
+      d.notes.push_back(Note{c.site, "in file included from here"});
+  }
+}
+
+LanguageError Interpreter::from_scene_error(const render::SceneError& e) const {
+  Diagnostic d;
+  d.message = e.what();
+  auto it = files_by_name_.find(e.where.file);
+  if (it != files_by_name_.end()) d.loc = SourceLoc{it->second, e.where.line, e.where.col};
+  add_notes(d);
+  return LanguageError(std::move(d));
+}
+
+// ---------------------------------------------------------------------------------------
+// Running files
+// ---------------------------------------------------------------------------------------
+
+void Interpreter::run(const SourceFile& main) {
+  try {
+    files_by_name_[main.path().c_str()] = &main;
+    programs_.push_back(parse(main));
+    main_program_ = &programs_.back();
+    std::error_code ec;
+    include_chain_.push_back(fs::weakly_canonical(main.path(), ec).string());
+    parsed_[include_chain_.back()] = main_program_;
+
+    // Each define is parsed as `let __define = <value>` from a small file of its own, so its
+    // errors point into "<define name>" with the define's own text.
+    for (const Define& d : options_.defines) {
+      const SourceFile* f = sources_.add(fmt::format("<define {}>", d.name), "let __define = " + d.value);
+      files_by_name_[f->path().c_str()] = f;
+      programs_.push_back(parse(*f));
+      const ast::Program& p = programs_.back();
+      if (p.stmts.size() != 1 || p.stmts[0]->kind != ast::StmtKind::Let)
+        fail(SourceLoc{f, 1, 1}, fmt::format("define '{}={}' is not a single value", d.name, d.value));
+      defines_.push_back(DefineExpr{ast::intern(d.name),
+                                    static_cast<const ast::LetStmt&>(*p.stmts[0]).value.get(),
+                                    d.name + "=" + d.value});
+    }
+
+    push_scope();  // the global scope
+    run_program(*main_program_, true);
+  } catch (LanguageError& e) {
+    add_notes(e.diag);
+    throw;
+  } catch (const render::SceneError& e) {
+    throw from_scene_error(e);
+  }
+  for (const DefineExpr& d : defines_)
+    if (!d.used)
+      warnings_.warning(SourceLoc{&main, 0, 0},
+                        fmt::format("define '{}' matches no top-level 'let {}' in this file", d.text, *d.name));
+}
+
+void Interpreter::run_program(const ast::Program& program, bool is_main) {
+  unsigned saved_loops = loop_depth_;
+  bool saved_macro = in_macro_;
+  loop_depth_ = 0;  // `break` in an included file cannot leave a loop of the includer
+  in_macro_ = false;
+  for (const ast::StmtPtr& s : program.stmts) {
+    if (is_main && s->kind == ast::StmtKind::Let) {
+      const auto& let = static_cast<const ast::LetStmt&>(*s);
+      DefineExpr* def = nullptr;
+      for (DefineExpr& d : defines_)
+        if (d.name == let.name && !d.used) def = &d;
+      if (def) {
+        def->used = true;
+        declare(let.name, eval(*def->expr), let.name_loc);
+        continue;
+      }
+    }
+    exec(*s);
+  }
+  loop_depth_ = saved_loops;
+  in_macro_ = saved_macro;
+}
+
+void Interpreter::exec_include(const ast::IncludeStmt& s) {
+  fs::path including_dir = fs::path(s.loc.file->path()).parent_path();
+  std::vector<fs::path> candidates;
+  if (fs::path(s.path).is_absolute()) {
+    candidates.emplace_back(s.path);
+  } else {
+    candidates.push_back(including_dir / s.path);
+    for (const std::string& dir : options_.include_paths) candidates.push_back(fs::path(dir) / s.path);
+  }
+  std::error_code ec;
+  const fs::path* found = nullptr;
+  for (const fs::path& c : candidates)
+    if (fs::is_regular_file(c, ec)) {
+      found = &c;
+      break;
+    }
+  if (!found) {
+    std::string where = "next to this file";
+    if (!options_.include_paths.empty()) {
+      where += " or in the -I folders";
+      for (std::size_t i = 0; i < options_.include_paths.size(); ++i)
+        where += (i ? ", " : " ") + options_.include_paths[i];
+    }
+    fail(s.loc, fmt::format("cannot find include file '{}' {}", s.path, where));
+  }
+  std::string canonical = fs::weakly_canonical(*found, ec).string();
+  contexts_.push_back(Context{Context::Include, s.loc, nullptr, 0, 0, false});
+  for (const std::string& open : include_chain_)
+    if (open == canonical) {
+      contexts_.pop_back();  // the note for this include is the error itself
+      fail(s.loc, fmt::format("include cycle: '{}' is already being included", s.path));
+    }
+  const ast::Program* program;
+  if (auto it = parsed_.find(canonical); it != parsed_.end()) {
+    program = it->second;
+  } else {
+    const SourceFile* file;
+    try {
+      file = sources_.load(found->lexically_normal().string());
+    } catch (const SourceError& e) {
+      fail(s.loc, fmt::format("cannot read include file '{}': {}", s.path, e.message));
+    }
+    files_by_name_[file->path().c_str()] = file;
+    programs_.push_back(parse(*file));
+    program = &programs_.back();
+    parsed_[canonical] = program;
+  }
+  include_chain_.push_back(canonical);
+  run_program(*program, false);
+  include_chain_.pop_back();
+  contexts_.pop_back();
+}
+
+// ---------------------------------------------------------------------------------------
+// Scopes and names
+// ---------------------------------------------------------------------------------------
+
+void Interpreter::declare(ast::Symbol name, Value value, SourceLoc loc) {
+  for (std::size_t i = scopes_.back(); i < bindings_.size(); ++i) {
+    if (bindings_[i].name == name) {
+      Diagnostic d;
+      d.loc = loc;
+      d.message = fmt::format("'{}' is already defined in this scope (assign with '{} = ...' instead)", *name, *name);
+      d.notes.push_back(Note{bindings_[i].loc, "previously defined here"});
+      throw LanguageError(std::move(d));
+    }
+  }
+  bindings_.push_back(Binding{name, std::move(value), loc});
+}
+
+Binding* Interpreter::lookup(ast::Symbol name) {
+  for (std::size_t i = bindings_.size(); i-- > frame_base_;)
+    if (bindings_[i].name == name) return &bindings_[i];
+  if (frame_base_ > 0)
+    for (std::size_t i = globals_end(); i-- > 0;)
+      if (bindings_[i].name == name) return &bindings_[i];
+  return nullptr;
+}
+
+uint32_t Interpreter::find_builtin(ast::Symbol name) {
+  // Symbols are interned pointers: a direct-mapped cache on the pointer answers repeated
+  // calls (sin, cos... in loops) without hashing.
+  BuiltinCacheEntry& slot = builtin_cache_[(reinterpret_cast<std::uintptr_t>(name) >> 4) % kBuiltinCacheSize];
+  if (slot.name == name) return slot.id;
+  auto it = builtins_.find(name);
+  uint32_t id = it == builtins_.end() ? kNotBuiltin : it->second;
+  slot = BuiltinCacheEntry{name, id};
+  return id;
+}
+
+void Interpreter::undefined(ast::Symbol name, SourceLoc loc) {
+  std::vector<std::string_view> candidates;
+  for (std::size_t i = frame_base_; i < bindings_.size(); ++i) candidates.push_back(*bindings_[i].name);
+  if (frame_base_ > 0)
+    for (std::size_t i = 0; i < globals_end(); ++i) candidates.push_back(*bindings_[i].name);
+  for (const Builtin& b : builtin_table()) candidates.push_back(b.name);
+  std::string msg = fmt::format("undefined name '{}'", *name);
+  std::string hint = render::closest_name(*name, candidates);
+  if (!hint.empty()) msg += fmt::format("; did you mean '{}'?", hint);
+  fail(loc, msg);
+}
+
+// ---------------------------------------------------------------------------------------
+// Statements
+// ---------------------------------------------------------------------------------------
+
+Flow Interpreter::exec_list(const ast::StmtList& stmts) {
+  for (const ast::StmtPtr& s : stmts) {
+    Flow f = exec(*s);
+    if (f != Flow::Normal) return f;
+  }
+  return Flow::Normal;
+}
+
+Flow Interpreter::exec_body(const ast::Body& body) {
+  push_scope();
+  Flow f = exec_list(body.stmts);
+  pop_scope();
+  return f;
+}
+
+Flow Interpreter::exec(const ast::Stmt& s) {
+  switch (s.kind) {
+    case ast::StmtKind::Let: exec_let(static_cast<const ast::LetStmt&>(s)); return Flow::Normal;
+    case ast::StmtKind::Assign: exec_assign(static_cast<const ast::AssignStmt&>(s)); return Flow::Normal;
+    case ast::StmtKind::If: {
+      const auto& st = static_cast<const ast::IfStmt&>(s);
+      Value c = eval(*st.cond);
+      if (c.type != Type::Bool)
+        fail(st.cond->loc, fmt::format("'if' condition must be a bool, got {}", with_article(c.type)));
+      if (c.truth()) return exec_body(st.then_body);
+      if (st.else_body) return exec_body(*st.else_body);
+      return Flow::Normal;
+    }
+    case ast::StmtKind::For: return exec_for(static_cast<const ast::ForStmt&>(s));
+    case ast::StmtKind::While: return exec_while(static_cast<const ast::WhileStmt&>(s));
+    case ast::StmtKind::Macro: {
+      const auto& m = static_cast<const ast::MacroStmt&>(s);
+      Value v;
+      v.type = Type::Macro;
+      v.ref = std::make_shared<MacroValue>(&m);
+      declare(m.name, std::move(v), m.loc);
+      return Flow::Normal;
+    }
+    case ast::StmtKind::Return: {
+      if (!in_macro_) fail(s.loc, "'return' outside a macro");
+      const auto& r = static_cast<const ast::ReturnStmt&>(s);
+      return_value_ = r.value ? eval(*r.value) : Value::none();
+      return Flow::Return;
+    }
+    case ast::StmtKind::Break:
+      if (loop_depth_ == 0) fail(s.loc, "'break' outside a loop");
+      return Flow::Break;
+    case ast::StmtKind::Continue:
+      if (loop_depth_ == 0) fail(s.loc, "'continue' outside a loop");
+      return Flow::Continue;
+    case ast::StmtKind::Include: exec_include(static_cast<const ast::IncludeStmt&>(s)); return Flow::Normal;
+    case ast::StmtKind::ExprStmt: {
+      const auto& e = static_cast<const ast::ExprStmt&>(s);
+      Value v = eval(*e.expr);
+      if (v.type == Type::Object) place(v, e.expr->loc);
+      return Flow::Normal;
+    }
+  }
+  return Flow::Normal;
+}
+
+void Interpreter::exec_let(const ast::LetStmt& s) { declare(s.name, eval(*s.value), s.name_loc); }
+
+void Interpreter::exec_assign(const ast::AssignStmt& s) {
+  Value v = eval(*s.value);
+  Binding* b = lookup(s.name);
+  if (!b) {
+    std::vector<std::string_view> candidates;
+    for (std::size_t i = frame_base_; i < bindings_.size(); ++i) candidates.push_back(*bindings_[i].name);
+    if (frame_base_ > 0)
+      for (std::size_t i = 0; i < globals_end(); ++i) candidates.push_back(*bindings_[i].name);
+    std::string msg = fmt::format("cannot assign to undefined name '{}'", *s.name);
+    std::string hint = render::closest_name(*s.name, candidates);
+    if (!hint.empty()) msg += fmt::format("; did you mean '{}'?", hint);
+    else msg += fmt::format(" (declare it with 'let {} = ...')", *s.name);
+    fail(s.loc, msg);
+  }
+  switch (s.op) {
+    case ast::AssignOp::Set: b->value = std::move(v); break;
+    case ast::AssignOp::Add: b->value = binary_op(ast::BinaryOp::Add, b->value, v, s.loc); break;
+    case ast::AssignOp::Sub: b->value = binary_op(ast::BinaryOp::Sub, b->value, v, s.loc); break;
+    case ast::AssignOp::Mul: b->value = binary_op(ast::BinaryOp::Mul, b->value, v, s.loc); break;
+    case ast::AssignOp::Div: b->value = binary_op(ast::BinaryOp::Div, b->value, v, s.loc); break;
+  }
+}
+
+void Interpreter::count_iteration(SourceLoc loc) {
+  if (++iterations_ > options_.limits.max_iterations)
+    fail(loc, fmt::format("loops ran more than {} iterations in total (raise the limit with --max-iterations)",
+                          options_.limits.max_iterations));
+}
+
+Flow Interpreter::exec_for(const ast::ForStmt& s) {
+  Value seq = eval(*s.iterable);
+  if (seq.type != Type::Range && seq.type != Type::List)
+    fail(s.iterable->loc, fmt::format("'for' needs a range or a list to iterate over, got {}", with_article(seq.type)));
+  push_scope();
+  declare(s.var, Value::none(), s.var_loc);
+  const std::size_t slot = bindings_.size() - 1;
+  ++loop_depth_;
+  Flow result = Flow::Normal;
+  uint64_t n = seq.type == Type::Range ? range_count(seq) : as_list(seq).size();
+  for (uint64_t k = 0; k < n; ++k) {
+    count_iteration(s.loc);
+    bindings_[slot].value = seq.type == Type::Range ? Value::number(range_at(seq, k)) : as_list(seq)[k];
+    Flow f = exec_body(s.body);
+    if (f == Flow::Break) break;
+    if (f == Flow::Return) {
+      result = f;
+      break;
+    }
+  }
+  --loop_depth_;
+  pop_scope();
+  return result;
+}
+
+Flow Interpreter::exec_while(const ast::WhileStmt& s) {
+  ++loop_depth_;
+  Flow result = Flow::Normal;
+  for (;;) {
+    Value c = eval(*s.cond);
+    if (c.type != Type::Bool)
+      fail(s.cond->loc, fmt::format("'while' condition must be a bool, got {}", with_article(c.type)));
+    if (!c.truth()) break;
+    count_iteration(s.loc);
+    Flow f = exec_body(s.body);
+    if (f == Flow::Break) break;
+    if (f == Flow::Return) {
+      result = f;
+      break;
+    }
+  }
+  --loop_depth_;
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------
+// Expressions
+// ---------------------------------------------------------------------------------------
+
+double Interpreter::expect_number(const ast::Expr& e, const char* what) {
+  Value v = eval(e);
+  if (v.type != Type::Number) fail(e.loc, fmt::format("{} must be a number, got {}", what, with_article(v.type)));
+  return v.v.x;
+}
+
+Value Interpreter::eval(const ast::Expr& e) {
+  switch (e.kind) {
+    case ast::ExprKind::Number: return Value::number(static_cast<const ast::NumberExpr&>(e).value);
+    case ast::ExprKind::String: return Value::string(static_cast<const ast::StringExpr&>(e).value);
+    case ast::ExprKind::Bool: return Value::boolean(static_cast<const ast::BoolExpr&>(e).value);
+    case ast::ExprKind::None: return Value::none();
+    case ast::ExprKind::Name: return eval_name(static_cast<const ast::NameExpr&>(e));
+    case ast::ExprKind::Vector: {
+      const auto& ve = static_cast<const ast::VectorExpr&>(e);
+      if (ve.components.size() != 3)
+        fail(e.loc, fmt::format("vectors have 3 components, this one has {}", ve.components.size()));
+      glm::dvec3 r;
+      for (int i = 0; i < 3; ++i) r[i] = expect_number(*ve.components[i], "a vector component");
+      return Value::vector(r);
+    }
+    case ast::ExprKind::List: {
+      const auto& le = static_cast<const ast::ListExpr&>(e);
+      std::vector<Value> items;
+      items.reserve(le.elements.size());
+      for (const ast::ExprPtr& x : le.elements) items.push_back(eval(*x));
+      return Value::list(std::move(items));
+    }
+    case ast::ExprKind::Unary: return eval_unary(static_cast<const ast::UnaryExpr&>(e));
+    case ast::ExprKind::Binary: return eval_binary(static_cast<const ast::BinaryExpr&>(e));
+    case ast::ExprKind::Range: return eval_range(static_cast<const ast::RangeExpr&>(e));
+    case ast::ExprKind::Call: return eval_call(static_cast<const ast::CallExpr&>(e));
+    case ast::ExprKind::Index: return eval_index(static_cast<const ast::IndexExpr&>(e));
+    case ast::ExprKind::Member: return eval_member(static_cast<const ast::MemberExpr&>(e));
+    case ast::ExprKind::Block: return eval_block(static_cast<const ast::BlockExpr&>(e));
+    case ast::ExprKind::With: return eval_with(static_cast<const ast::WithExpr&>(e));
+    case ast::ExprKind::Transform: return eval_transform(static_cast<const ast::TransformExpr&>(e));
+  }
+  fail(e.loc, "internal error: unknown expression kind");
+}
+
+Value Interpreter::eval_name(const ast::NameExpr& e) {
+  if (Binding* b = lookup(e.name)) return b->value;
+  if (uint32_t id = find_builtin(e.name); id != kNotBuiltin) {
+    Value v;
+    v.type = Type::Builtin;
+    v.id = id;
+    return v;
+  }
+  undefined(e.name, e.loc);
+}
+
+Value Interpreter::eval_unary(const ast::UnaryExpr& e) { return unary_op(e.op, eval(*e.operand), e.loc); }
+
+Value Interpreter::eval_binary(const ast::BinaryExpr& e) {
+  if (e.op == ast::BinaryOp::And || e.op == ast::BinaryOp::Or) {
+    Value a = eval(*e.lhs);
+    if (a.type != Type::Bool)
+      fail(e.lhs->loc, fmt::format("'{}' needs bools, got {}", ast::to_string(e.op), with_article(a.type)));
+    if (e.op == ast::BinaryOp::And ? !a.truth() : a.truth()) return a;  // short-circuit
+    Value b = eval(*e.rhs);
+    if (b.type != Type::Bool)
+      fail(e.rhs->loc, fmt::format("'{}' needs bools, got {}", ast::to_string(e.op), with_article(b.type)));
+    return b;
+  }
+  Value a = eval(*e.lhs);
+  Value b = eval(*e.rhs);
+  return binary_op(e.op, a, b, e.op_loc);
+}
+
+Value Interpreter::eval_range(const ast::RangeExpr& e) {
+  Value r;
+  r.type = Type::Range;
+  r.inclusive = e.inclusive;
+  r.v.x = expect_number(*e.from, "the start of a range");
+  r.v.y = expect_number(*e.to, "the end of a range");
+  r.v.z = e.step ? expect_number(*e.step, "a range step") : 1.0;
+  if (r.v.z == 0.0) fail(e.step->loc, "a range step must not be zero");
+  return r;
+}
+
+Value Interpreter::eval_index(const ast::IndexExpr& e) {
+  Value obj = eval(*e.object);
+  double i = expect_number(*e.index, "an index");
+  std::size_t n;
+  if (obj.type == Type::List) n = as_list(obj).size();
+  else if (obj.type == Type::Vector || obj.type == Type::Color) n = 3;
+  else if (obj.type == Type::Range) n = range_count(obj);
+  else fail(e.object->loc, fmt::format("cannot index {} (only lists, vectors, colors and ranges)", with_article(obj.type)));
+  if (i != std::floor(i) || i < 0 || i >= static_cast<double>(n))
+    fail(e.index->loc, fmt::format("index {} out of range for {} of {} element{}", to_text(Value::number(i)),
+                                   with_article(obj.type), n, n == 1 ? "" : "s"));
+  auto k = static_cast<std::size_t>(i);
+  if (obj.type == Type::List) return as_list(obj)[k];
+  if (obj.type == Type::Range) return Value::number(range_at(obj, k));
+  return Value::number(obj.v[static_cast<int>(k)]);
+}
+
+Value Interpreter::eval_member(const ast::MemberExpr& e) {
+  Value obj = eval(*e.object);
+  const std::string& m = *e.member;
+  if (obj.type == Type::Vector) {
+    if (m == "x") return Value::number(obj.v.x);
+    if (m == "y") return Value::number(obj.v.y);
+    if (m == "z") return Value::number(obj.v.z);
+    fail(e.member_loc, fmt::format("a vector has no member '{}' (it has x, y and z)", m));
+  }
+  if (obj.type == Type::Color) {
+    if (m == "r") return Value::number(obj.v.x);
+    if (m == "g") return Value::number(obj.v.y);
+    if (m == "b") return Value::number(obj.v.z);
+    fail(e.member_loc, fmt::format("a color has no member '{}' (it has r, g and b)", m));
+  }
+  if (obj.type == Type::Material || obj.type == Type::Texture) {
+    const RecordValue& rec = as_record(obj);
+    for (auto it = rec.props.rbegin(); it != rec.props.rend(); ++it)
+      if (it->name == e.member) return it->value;
+    fail(e.member_loc, fmt::format("this {} has no property '{}' set", type_name(obj.type), m));
+  }
+  fail(e.member_loc, fmt::format("{} has no members", with_article(obj.type)));
+}
+
+Value Interpreter::eval_call(const ast::CallExpr& e) {
+  Value callee;
+  if (e.callee->kind == ast::ExprKind::Name) {
+    const auto& name = static_cast<const ast::NameExpr&>(*e.callee);
+    if (Binding* b = lookup(name.name)) {
+      callee = b->value;
+    } else if (uint32_t id = find_builtin(name.name); id != kNotBuiltin) {
+      callee.type = Type::Builtin;
+      callee.id = id;
+    } else {
+      undefined(name.name, name.loc);
+    }
+  } else {
+    callee = eval(*e.callee);
+  }
+  if (callee.type == Type::Macro) return call_macro(*as_macro(callee), e);
+  if (callee.type != Type::Builtin)
+    fail(e.callee->loc, fmt::format("cannot call {}; only macros and builtin functions can be called",
+                                    with_article(callee.type)));
+  const Builtin& b = builtin_table()[callee.id];
+  for (const ast::Argument& a : e.args)
+    if (a.name) fail(a.loc, fmt::format("builtin '{}' takes no named arguments", b.name));
+  std::size_t argc = e.args.size();
+  if (static_cast<int>(argc) < b.min_args || (b.max_args >= 0 && static_cast<int>(argc) > b.max_args)) {
+    std::string expected = b.max_args < 0      ? fmt::format("at least {}", b.min_args)
+                           : b.min_args == b.max_args ? fmt::format("{}", b.min_args)
+                                                      : fmt::format("{} to {}", b.min_args, b.max_args);
+    fail(e.loc, fmt::format("'{}' takes {} argument{}, got {}", b.name, expected,
+                            (b.max_args == 1 && b.min_args == 1) ? "" : "s", argc));
+  }
+  if (argc <= kInlineArgs) {
+    // Only the arguments given are constructed: an unused Value slot still costs a
+    // constructor and a destructor, which shows in tight loops of sin() and cos().
+    struct InlineArgs {
+      alignas(Value) unsigned char bytes[kInlineArgs * sizeof(Value)];
+      std::size_t count = 0;
+      Value* data() { return reinterpret_cast<Value*>(bytes); }
+      ~InlineArgs() {
+        for (std::size_t i = 0; i < count; ++i) data()[i].~Value();
+      }
+    } args;
+    for (std::size_t i = 0; i < argc; ++i) {
+      new (args.data() + i) Value(eval(*e.args[i].value));
+      ++args.count;
+    }
+    BuiltinCall c{*this, e, b, args.data(), argc};
+    return b.fn(c);
+  }
+  std::vector<Value> args;
+  args.reserve(argc);
+  for (const ast::Argument& a : e.args) args.push_back(eval(*a.value));
+  BuiltinCall c{*this, e, b, args.data(), argc};
+  return b.fn(c);
+}
+
+Value Interpreter::call_macro(const ast::MacroStmt& m, const ast::CallExpr& call) {
+  const auto& params = m.params;
+  std::size_t positional = 0;
+  while (positional < call.args.size() && !call.args[positional].name) ++positional;
+  if (positional > params.size())
+    fail(call.args[params.size()].loc, fmt::format("macro '{}' takes at most {} argument{}, got {}", *m.name,
+                                                   params.size(), params.size() == 1 ? "" : "s", positional));
+  // Arguments are evaluated in the caller's scope, then bound in the macro's frame.
+  std::vector<Value> values(params.size());
+  std::vector<const ast::Argument*> given(params.size(), nullptr);
+  for (std::size_t i = 0; i < call.args.size(); ++i) {
+    const ast::Argument& a = call.args[i];
+    std::size_t slot = i;
+    if (a.name) {
+      slot = params.size();
+      for (std::size_t p = 0; p < params.size(); ++p)
+        if (params[p].name == a.name) slot = p;
+      if (slot == params.size()) {
+        std::vector<std::string_view> names;
+        for (const ast::Param& p : params) names.push_back(*p.name);
+        std::string msg = fmt::format("macro '{}' has no parameter '{}'", *m.name, *a.name);
+        std::string hint = render::closest_name(*a.name, names);
+        if (!hint.empty()) msg += fmt::format("; did you mean '{}'?", hint);
+        fail(a.loc, msg);
+      }
+      if (given[slot]) fail(a.loc, fmt::format("argument '{}' given twice", *a.name));
+    }
+    given[slot] = &a;
+    values[slot] = eval(*a.value);
+  }
+  for (std::size_t p = 0; p < params.size(); ++p)
+    if (!given[p] && !params[p].default_value)
+      fail(call.loc, fmt::format("missing argument '{}' in call to macro '{}'", *params[p].name, *m.name));
+  if (macro_depth_ >= options_.limits.max_recursion)
+    fail(call.loc, fmt::format("macro calls nested deeper than {} (raise the limit with --max-recursion)",
+                               options_.limits.max_recursion));
+
+  contexts_.push_back(Context{Context::Macro, call.loc, m.name, frame_base_, loop_depth_, in_macro_});
+  const std::size_t saved_base = frame_base_;
+  const unsigned saved_loops = loop_depth_;
+  const bool saved_in_macro = in_macro_;
+  frame_base_ = bindings_.size();
+  loop_depth_ = 0;
+  in_macro_ = true;
+  ++macro_depth_;
+  push_scope();
+  for (std::size_t p = 0; p < params.size(); ++p) {
+    // Defaults are evaluated in the macro's frame, so they may use earlier parameters.
+    Value v = given[p] ? std::move(values[p]) : eval(*params[p].default_value);
+    declare(params[p].name, std::move(v), params[p].loc);
+  }
+  Flow f = exec_list(m.body.stmts);
+  Value result = f == Flow::Return ? std::move(return_value_) : Value::none();
+  return_value_ = Value::none();
+  pop_scope();
+  --macro_depth_;
+  in_macro_ = saved_in_macro;
+  loop_depth_ = saved_loops;
+  frame_base_ = saved_base;
+  contexts_.pop_back();
+  return result;
+}
+
+}  // namespace rts::runtime

@@ -1,0 +1,183 @@
+// The tree-walking interpreter behind evaluate_file(). Internal to runtime/.
+//
+// Bindings live in one flat stack of (symbol, value) pairs; a scope is a start index into it,
+// and a macro call opens a frame whose code sees its own bindings plus the global (top-level)
+// ones. Lookups compare interned symbol pointers from the top down, so the common case (a
+// handful of live names) costs a few pointer comparisons and no hashing or allocation.
+//
+// Errors are thrown as LanguageError without notes; evaluate() adds the "in call to macro" and
+// "in file included from here" notes from the context stack, which is deliberately left as it
+// was at the throw (frames are popped only on normal exit).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "parser/ast.hpp"
+#include "parser/diagnostics.hpp"
+#include "parser/source.hpp"
+#include "render/scene_builder.hpp"
+#include "runtime/evaluator.hpp"
+#include "runtime/value.hpp"
+
+namespace rts::runtime {
+
+enum class Flow : uint8_t { Normal, Break, Continue, Return };
+
+struct Binding {
+  ast::Symbol name;
+  Value value;
+  SourceLoc loc;  // where it was declared, for "already defined" notes
+};
+
+// One active macro call or include, for error notes.
+struct Context {
+  enum Kind : uint8_t { Macro, Include } kind;
+  SourceLoc site;       // the call or the include statement
+  ast::Symbol name;     // the macro's name (Macro)
+  std::size_t frame_base;   // bindings visible from a macro body start here (Macro)
+  unsigned saved_loop_depth;
+  bool saved_in_macro;
+};
+
+class Interpreter;
+struct BuiltinCall;
+using BuiltinFn = Value (*)(BuiltinCall&);
+struct Builtin {
+  const char* name;
+  int min_args, max_args;  // max_args < 0: variadic
+  BuiltinFn fn;
+};
+struct BuiltinCall {
+  Interpreter& in;
+  const ast::CallExpr& call;
+  const Builtin& def;
+  const Value* args;
+  std::size_t argc;
+};
+const std::vector<Builtin>& builtin_table();
+
+class Interpreter {
+ public:
+  Interpreter(SourceManager& sources, const EvalOptions& options, DiagnosticSink& warnings);
+
+  // Runs the main file; throws LanguageError (with notes) on any error.
+  void run(const SourceFile& main);
+  render::SceneDesc finish() { return builder_.finish(); }
+
+  // ---- services for builtins and blocks ----
+  [[noreturn]] void fail(SourceLoc loc, std::string message) const;
+  render::SourceRef ref(SourceLoc loc);
+  Value make_texture(ast::Symbol kind, std::vector<Property> props, SourceLoc loc);
+  uint32_t realize_material(const Value& material, SourceLoc use);
+  uint32_t realize_texture(const Value& texture, SourceLoc use);
+
+ private:
+  // statements (interpreter.cpp)
+  void run_program(const ast::Program& program, bool is_main);
+  Flow exec_list(const ast::StmtList& stmts);
+  Flow exec_body(const ast::Body& body);
+  Flow exec(const ast::Stmt& s);
+  void exec_let(const ast::LetStmt& s);
+  void exec_assign(const ast::AssignStmt& s);
+  Flow exec_for(const ast::ForStmt& s);
+  Flow exec_while(const ast::WhileStmt& s);
+  void exec_include(const ast::IncludeStmt& s);
+  void count_iteration(SourceLoc loc);
+
+  // scopes
+  void push_scope() { scopes_.push_back(bindings_.size()); }
+  void pop_scope() {
+    bindings_.resize(scopes_.back());
+    scopes_.pop_back();
+  }
+  void declare(ast::Symbol name, Value value, SourceLoc loc);
+  Binding* lookup(ast::Symbol name);
+  [[noreturn]] void undefined(ast::Symbol name, SourceLoc loc);
+  std::size_t globals_end() const { return scopes_.size() > 1 ? scopes_[1] : bindings_.size(); }
+
+  // expressions (interpreter.cpp, ops.cpp)
+  Value eval(const ast::Expr& e);
+  Value eval_name(const ast::NameExpr& e);
+  Value eval_binary(const ast::BinaryExpr& e);
+  Value eval_unary(const ast::UnaryExpr& e);
+  Value eval_call(const ast::CallExpr& e);
+  Value eval_index(const ast::IndexExpr& e);
+  Value eval_member(const ast::MemberExpr& e);
+  Value eval_range(const ast::RangeExpr& e);
+  Value call_macro(const ast::MacroStmt& m, const ast::CallExpr& call);
+  double expect_number(const ast::Expr& e, const char* what);
+
+  // blocks, `with`, transforms, placement (blocks.cpp)
+  Value eval_block(const ast::BlockExpr& e);
+  Value eval_with(const ast::WithExpr& e);
+  Value eval_transform(const ast::TransformExpr& e);
+  void collect_properties(const ast::BlockBody& body, std::vector<Property>& props, bool allow_placement);
+  render::ParamSet to_params(const std::string& kind, SourceLoc loc, const std::vector<Property>& props);
+  render::ParamValue to_param(const Property& p, const std::string& kind);
+  void place(const Value& object, SourceLoc loc);
+
+  SourceManager& sources_;
+  const EvalOptions& options_;
+  DiagnosticSink& warnings_;
+  render::SceneBuilder builder_;
+
+  std::vector<Binding> bindings_;
+  std::vector<std::size_t> scopes_;
+  std::size_t frame_base_ = 0;  // first binding of the current macro frame (0 at top level)
+  std::vector<Context> contexts_;
+  unsigned macro_depth_ = 0;
+  unsigned loop_depth_ = 0;     // loops enclosing the current code in this frame
+  bool in_macro_ = false;       // `return` allowed
+  Value return_value_;
+
+  uint64_t iterations_ = 0;
+  std::size_t placements_ = 0;
+
+  // Placement target: the world (null), a group's children, or "nowhere" (inside a
+  // non-group block, where placing an object is an error).
+  std::vector<render::Child>* target_ = nullptr;
+  bool placement_allowed_ = true;
+
+  // Built-in functions by symbol (a binding of the same name shadows them), with a small
+  // direct-mapped cache in front.
+  static constexpr uint32_t kNotBuiltin = UINT32_MAX;
+  static constexpr std::size_t kBuiltinCacheSize = 64;
+  struct BuiltinCacheEntry {
+    ast::Symbol name = nullptr;
+    uint32_t id = kNotBuiltin;
+  };
+  uint32_t find_builtin(ast::Symbol name);
+  std::unordered_map<ast::Symbol, uint32_t> builtins_;
+  std::array<BuiltinCacheEntry, kBuiltinCacheSize> builtin_cache_{};
+
+  // Files: parsed programs (kept alive: macros point into them), include cache, cycle check.
+  std::deque<ast::Program> programs_;
+  std::map<std::string, const ast::Program*> parsed_;  // canonical path → program
+  std::vector<std::string> include_chain_;             // canonical paths being run
+  std::unordered_map<const char*, const SourceFile*> files_by_name_;
+
+  // -D defines: parsed expressions, and whether each matched a top-level let.
+  struct DefineExpr {
+    ast::Symbol name;
+    const ast::Expr* expr;
+    std::string text;
+    bool used = false;
+  };
+  std::vector<DefineExpr> defines_;
+  const ast::Program* main_program_ = nullptr;
+
+ public:
+  // Attaches the context notes (innermost first) to an error thrown while running.
+  void add_notes(Diagnostic& d) const;
+  // Converts a builder SceneError into a located LanguageError.
+  LanguageError from_scene_error(const render::SceneError& e) const;
+};
+
+}  // namespace rts::runtime

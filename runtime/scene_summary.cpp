@@ -1,0 +1,178 @@
+#include "runtime/scene_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace rts::runtime {
+
+namespace {
+
+using render::Mat4;
+using render::Vec3;
+
+// Object-space bounds of a shape; false for unbounded shapes (planes).
+bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Vec3& lo, Vec3& hi) {
+  struct V {
+    const render::SceneDesc& scene;
+    Vec3& lo;
+    Vec3& hi;
+    bool operator()(const render::Sphere& g) { lo = g.center - g.radius; hi = g.center + g.radius; return true; }
+    bool operator()(const render::Plane&) { return false; }
+    bool operator()(const render::Triangle& g) {
+      lo = glm::min(g.v0, glm::min(g.v1, g.v2));
+      hi = glm::max(g.v0, glm::max(g.v1, g.v2));
+      return true;
+    }
+    bool operator()(const render::Box& g) { lo = g.min; hi = g.max; return true; }
+    bool operator()(const render::Cylinder& g) {
+      lo = glm::min(g.from, g.to) - g.radius;  // a loose box: the caps' full spheres
+      hi = glm::max(g.from, g.to) + g.radius;
+      return true;
+    }
+    bool operator()(const render::Cone& g) {
+      double r = std::max(g.radius_from, g.radius_to);
+      lo = glm::min(g.from, g.to) - r;
+      hi = glm::max(g.from, g.to) + r;
+      return true;
+    }
+    bool operator()(const render::Disc& g) { lo = g.center - g.radius; hi = g.center + g.radius; return true; }
+    bool operator()(const render::MeshRef& g) {
+      const render::MeshData& m = *scene.meshes[g.mesh];
+      if (m.positions.empty()) return false;
+      lo = Vec3(std::numeric_limits<double>::max());
+      hi = -lo;
+      for (const glm::vec3& p : m.positions) {
+        lo = glm::min(lo, Vec3(p));
+        hi = glm::max(hi, Vec3(p));
+      }
+      return true;
+    }
+  };
+  return std::visit(V{scene, lo, hi}, s.geometry);
+}
+
+const char* shape_kind(const render::ShapeGeometry& g) {
+  static const char* names[] = {"sphere", "plane", "triangle", "box", "cylinder", "cone", "disc", "mesh"};
+  return names[g.index()];
+}
+
+const char* light_kind(render::LightKind k) {
+  switch (k) {
+    case render::LightKind::Point: return "point_light";
+    case render::LightKind::Spot: return "spot_light";
+    case render::LightKind::Directional: return "directional_light";
+    case render::LightKind::Area: return "area_light";
+  }
+  return "light";
+}
+
+struct Walker {
+  const render::SceneDesc& scene;
+  SceneSummary& out;
+  std::vector<std::pair<bool, std::pair<Vec3, Vec3>>> shape_box;  // cached per shape
+
+  // Iterative: groups may nest as deep as macro recursion goes (far past the C++ stack).
+  void walk(render::NodeId root, const Mat4& root_transform) {
+    std::vector<std::pair<render::NodeId, Mat4>> todo{{root, root_transform}};
+    while (!todo.empty()) {
+      auto [id, m] = todo.back();
+      todo.pop_back();
+      visit(id, m, todo);
+    }
+  }
+
+  void visit(render::NodeId id, const Mat4& m, std::vector<std::pair<render::NodeId, Mat4>>& todo) {
+    ++out.instances;
+    const render::Node& n = scene.nodes[id];
+    switch (n.kind) {
+      case render::NodeKind::Shape: {
+        const render::ShapeDesc& s = scene.shapes[n.index];
+        ++out.shapes[shape_kind(s.geometry)];
+        if (auto* mesh = std::get_if<render::MeshRef>(&s.geometry))
+          out.triangles += scene.meshes[mesh->mesh]->indices.size() / 3;
+        auto& [bounded, box] = shape_box[n.index];
+        if (!bounded) {
+          out.unbounded = out.unbounded || std::holds_alternative<render::Plane>(s.geometry);
+          return;
+        }
+        for (int c = 0; c < 8; ++c) {
+          Vec3 corner((c & 1) ? box.second.x : box.first.x, (c & 2) ? box.second.y : box.first.y,
+                      (c & 4) ? box.second.z : box.first.z);
+          Vec3 w = Vec3(m * glm::dvec4(corner, 1.0));
+          if (!out.has_bounds) {
+            out.bounds_min = out.bounds_max = w;
+            out.has_bounds = true;
+          }
+          out.bounds_min = glm::min(out.bounds_min, w);
+          out.bounds_max = glm::max(out.bounds_max, w);
+        }
+        return;
+      }
+      case render::NodeKind::Light: ++out.lights[light_kind(scene.lights[n.index].kind)]; return;
+      case render::NodeKind::Group:
+        for (const render::Child& c : scene.groups[n.index].children) todo.emplace_back(c.node, m * c.transform);
+        return;
+    }
+  }
+};
+
+std::string num(double x) {
+  constexpr double kPrintZero = 1e-9;
+  if (std::fabs(x) < kPrintZero) x = 0;
+  return fmt::format("{:.6g}", x);
+}
+std::string vec(const Vec3& v) { return fmt::format("<{}, {}, {}>", num(v.x), num(v.y), num(v.z)); }
+
+}  // namespace
+
+SceneSummary summarize(const render::SceneDesc& scene) {
+  SceneSummary s;
+  s.shape_definitions = scene.shapes.size();
+  s.materials = scene.materials.size();
+  s.textures = scene.textures.size();
+  s.meshes = scene.meshes.size();
+  s.groups = scene.groups.size();
+  Walker w{scene, s, {}};
+  w.shape_box.resize(scene.shapes.size());
+  for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
+    Vec3 lo(0.0), hi(0.0);
+    bool b = shape_bounds(scene, scene.shapes[i], lo, hi);
+    w.shape_box[i] = {b, {lo, hi}};
+  }
+  for (const render::Child& c : scene.roots) w.walk(c.node, c.transform);
+  return s;
+}
+
+void print_summary(std::ostream& out, const render::SceneDesc& scene, const SceneSummary& s, double seconds) {
+  std::size_t placed_shapes = 0, placed_lights = 0;
+  for (auto& [k, n] : s.shapes) placed_shapes += n;
+  for (auto& [k, n] : s.lights) placed_lights += n;
+  out << fmt::format("objects:    {} placed ({} shape definitions, {} groups, {} instances in all)\n", placed_shapes,
+                     s.shape_definitions, s.groups, s.instances);
+  for (auto& [k, n] : s.shapes) out << fmt::format("  {:<18} {}\n", k, n);
+  out << fmt::format("triangles:  {} (in {} mesh{})\n", s.triangles, s.meshes, s.meshes == 1 ? "" : "es");
+  out << fmt::format("lights:     {}\n", placed_lights);
+  for (auto& [k, n] : s.lights) out << fmt::format("  {:<18} {}\n", k, n);
+  out << fmt::format("materials:  {}\n", s.materials);
+  out << fmt::format("textures:   {}\n", s.textures);
+  if (s.has_bounds)
+    out << fmt::format("bounds:     {} .. {}{}\n", vec(s.bounds_min), vec(s.bounds_max),
+                       s.unbounded ? " (plus unbounded planes)" : "");
+  else
+    out << fmt::format("bounds:     none{}\n", s.unbounded ? " (only unbounded planes)" : "");
+  const render::CameraDesc& c = scene.camera;
+  out << fmt::format("camera:     {}{} at {} looking at {}, {}\n",
+                     c.projection == render::Projection::Perspective ? "perspective" : "orthographic",
+                     scene.has_camera ? "" : " (default)", vec(c.position), vec(c.look_at),
+                     c.projection == render::Projection::Perspective ? fmt::format("fov {}", num(c.fov))
+                                                                       : fmt::format("view width {}", num(c.view_width)));
+  const render::Settings& st = scene.settings;
+  out << fmt::format("image:      {}x{}, {} sample{} per pixel, max depth {}\n", st.width, st.height, st.samples,
+                     st.samples == 1 ? "" : "s", st.max_depth);
+  out << fmt::format("evaluated in {:.3f} s\n", seconds);
+}
+
+}  // namespace rts::runtime

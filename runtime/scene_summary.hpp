@@ -1,0 +1,31 @@
+// A summary of an evaluated scene for `rts check`: what it contains, how many instances,
+// where it is (world-space bounds of everything bounded), camera and image settings.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <ostream>
+#include <string>
+
+#include "render/scene.hpp"
+
+namespace rts::runtime {
+
+struct SceneSummary {
+  std::map<std::string, std::size_t> shapes;   // kind → placed instances (world-space count)
+  std::map<std::string, std::size_t> lights;   // kind → placed instances
+  std::size_t shape_definitions = 0;           // ShapeDescs (one per block evaluated)
+  std::size_t instances = 0;                   // placements of shapes, lights and groups
+  std::size_t triangles = 0;                   // mesh triangles over all placed instances
+  std::size_t materials = 0, textures = 0, meshes = 0, groups = 0;
+  bool has_bounds = false;                     // false when nothing bounded is placed
+  render::Vec3 bounds_min{0.0}, bounds_max{0.0};
+  bool unbounded = false;                      // a plane is placed (not in the bounds)
+};
+
+SceneSummary summarize(const render::SceneDesc& scene);
+
+// The `rts check` report; `seconds` is the evaluation time.
+void print_summary(std::ostream& out, const render::SceneDesc& scene, const SceneSummary& s, double seconds);
+
+}  // namespace rts::runtime

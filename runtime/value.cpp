@@ -1,0 +1,130 @@
+#include "runtime/value.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace rts::runtime {
+
+const char* type_name(Type t) {
+  switch (t) {
+    case Type::None: return "none";
+    case Type::Number: return "number";
+    case Type::Bool: return "bool";
+    case Type::String: return "string";
+    case Type::Vector: return "vector";
+    case Type::Color: return "color";
+    case Type::List: return "list";
+    case Type::Range: return "range";
+    case Type::Material: return "material";
+    case Type::Texture: return "texture";
+    case Type::Object: return "object";
+    case Type::Transform: return "transform";
+    case Type::Macro: return "macro";
+    case Type::Builtin: return "builtin function";
+    case Type::Random: return "random stream";
+  }
+  return "value";
+}
+
+std::string with_article(Type t) {
+  if (t == Type::None) return "none";
+  const char* n = type_name(t);
+  bool vowel = n[0] == 'a' || n[0] == 'e' || n[0] == 'i' || n[0] == 'o' || n[0] == 'u';
+  return fmt::format("{} {}", vowel ? "an" : "a", n);
+}
+
+Value Value::string(std::string s) {
+  Value r;
+  r.type = Type::String;
+  r.ref = std::make_shared<StringValue>(std::move(s));
+  return r;
+}
+
+Value Value::list(std::vector<Value> items) {
+  Value r;
+  r.type = Type::List;
+  r.ref = std::make_shared<ListValue>(std::move(items));
+  return r;
+}
+
+uint64_t RandomValue::next_u64() {
+  // splitmix64 (Steele, Lea, Flood 2014): tiny, fast, and the same everywhere.
+  uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+double RandomValue::next_unit() {
+  constexpr double kTwoToMinus53 = 1.0 / 9007199254740992.0;
+  return static_cast<double>(next_u64() >> 11) * kTwoToMinus53;
+}
+
+render::Mat4 object_transform(const Value& v) {
+  return v.ref ? static_cast<const TransformValue&>(*v.ref).matrix : render::Mat4(1.0);
+}
+
+namespace {
+std::string num_text(double x) {
+  if (x == 0.0) x = 0.0;  // no "-0"
+  return fmt::format("{}", x);
+}
+}  // namespace
+
+std::string to_text(const Value& v, bool quote_strings) {
+  switch (v.type) {
+    case Type::None: return "none";
+    case Type::Number: return num_text(v.num());
+    case Type::Bool: return v.truth() ? "true" : "false";
+    case Type::String: return quote_strings ? fmt::format("\"{}\"", as_string(v)) : as_string(v);
+    case Type::Vector: return fmt::format("<{}, {}, {}>", num_text(v.v.x), num_text(v.v.y), num_text(v.v.z));
+    case Type::Color: return fmt::format("rgb({}, {}, {})", num_text(v.v.x), num_text(v.v.y), num_text(v.v.z));
+    case Type::List: {
+      std::string s = "[";
+      const auto& items = as_list(v);
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i) s += ", ";
+        s += to_text(items[i], true);
+      }
+      return s + "]";
+    }
+    case Type::Range:
+      return fmt::format("{} {} {} step {}", num_text(v.v.x), v.inclusive ? "..=" : "..", num_text(v.v.y),
+                         num_text(v.v.z));
+    case Type::Material: return "<material>";
+    case Type::Texture: return fmt::format("<texture {}>", *as_record(v).kind);
+    case Type::Object: return fmt::format("<object {}>", v.id);
+    case Type::Transform: return "<transform>";
+    case Type::Macro: return fmt::format("<macro {}>", *as_macro(v)->name);
+    case Type::Builtin: return "<builtin>";
+    case Type::Random: return "<random stream>";
+  }
+  return "?";
+}
+
+bool equal(const Value& a, const Value& b) {
+  if (a.type != b.type) return false;
+  switch (a.type) {
+    case Type::None: return true;
+    case Type::Number:
+    case Type::Bool: return a.v.x == b.v.x;
+    case Type::Vector:
+    case Type::Color: return a.v == b.v;
+    case Type::Range: return a.v == b.v && a.inclusive == b.inclusive;
+    case Type::String: return as_string(a) == as_string(b);
+    case Type::List: {
+      const auto& x = as_list(a);
+      const auto& y = as_list(b);
+      if (x.size() != y.size()) return false;
+      for (std::size_t i = 0; i < x.size(); ++i)
+        if (!equal(x[i], y[i])) return false;
+      return true;
+    }
+    case Type::Object: return a.id == b.id && object_transform(a) == object_transform(b);
+    case Type::Builtin: return a.id == b.id;
+    default: return a.ref == b.ref;
+  }
+}
+
+}  // namespace rts::runtime

@@ -1,0 +1,136 @@
+// Run-time values of the scene language. A Value is small (48 bytes) and cheap to copy:
+// numbers, bools, vectors, colors, ranges and object handles live inline; strings, lists,
+// materials, textures, transforms, macros and random streams are shared, immutable heap
+// objects (except a random stream's state, which advances in place: it is a stream).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "parser/ast.hpp"
+#include "render/scene.hpp"
+
+namespace rts::runtime {
+
+enum class Type : uint8_t {
+  None, Number, Bool, String, Vector, Color, List, Range, Material, Texture, Object, Transform,
+  Macro, Builtin, Random,
+};
+
+// "number", "vector", ... for messages; with_article gives "a number", "an object".
+const char* type_name(Type t);
+std::string with_article(Type t);
+
+struct HeapValue {
+  virtual ~HeapValue() = default;
+};
+
+struct Value {
+  Type type = Type::None;
+  bool inclusive = false;  // Range: end included (..=)
+  uint32_t id = 0;         // Object: NodeId; Builtin: index into the builtin table
+  glm::dvec3 v{0.0};       // Number/Bool: v.x; Vector/Color: x,y,z; Range: from, to, step
+  std::shared_ptr<HeapValue> ref;  // String, List, Material, Texture, Macro, Random; Object: transform or null
+
+  static Value none() { return {}; }
+  static Value number(double x) {
+    Value r;
+    r.type = Type::Number;
+    r.v.x = x;
+    return r;
+  }
+  static Value boolean(bool b) {
+    Value r;
+    r.type = Type::Bool;
+    r.v.x = b ? 1.0 : 0.0;
+    return r;
+  }
+  static Value vector(glm::dvec3 x) {
+    Value r;
+    r.type = Type::Vector;
+    r.v = x;
+    return r;
+  }
+  static Value color(glm::dvec3 c) {
+    Value r;
+    r.type = Type::Color;
+    r.v = c;
+    return r;
+  }
+  static Value string(std::string s);
+  static Value list(std::vector<Value> items);
+
+  double num() const { return v.x; }
+  bool truth() const { return v.x != 0.0; }
+  bool is(Type t) const { return type == t; }
+};
+
+struct StringValue : HeapValue {
+  std::string text;
+  explicit StringValue(std::string t) : text(std::move(t)) {}
+};
+
+struct ListValue : HeapValue {
+  std::vector<Value> items;
+  explicit ListValue(std::vector<Value> i) : items(std::move(i)) {}
+};
+
+// A property of a material or texture record: `name = value`, where it was written.
+struct Property {
+  ast::Symbol name;
+  Value value;
+  SourceLoc loc;
+};
+
+// A material or texture value: its properties (so `with` can derive new ones), and the
+// builder id it became when first used (one value → one MaterialId/TextureId).
+struct RecordValue : HeapValue {
+  ast::Symbol kind;  // "material", "checker", ...
+  std::vector<Property> props;
+  render::Mat4 transform{1.0};  // textures: accumulated transform postfixes
+  SourceLoc loc;
+  uint32_t built_id = render::kNoId;
+};
+
+struct TransformValue : HeapValue {
+  render::Mat4 matrix;
+  explicit TransformValue(const render::Mat4& m) : matrix(m) {}
+};
+
+struct MacroValue : HeapValue {
+  const ast::MacroStmt* def;
+  explicit MacroValue(const ast::MacroStmt* d) : def(d) {}
+};
+
+// A deterministic random stream (splitmix64): the same seed gives the same numbers on
+// every platform and run.
+struct RandomValue : HeapValue {
+  uint64_t state;
+  explicit RandomValue(uint64_t seed) : state(seed) {}
+  uint64_t next_u64();
+  double next_unit();  // uniform in [0, 1), 53 random bits
+};
+
+inline const std::string& as_string(const Value& v) { return static_cast<const StringValue&>(*v.ref).text; }
+inline const std::vector<Value>& as_list(const Value& v) { return static_cast<const ListValue&>(*v.ref).items; }
+inline RecordValue& as_record(const Value& v) { return static_cast<RecordValue&>(*v.ref); }
+inline RandomValue& as_random(const Value& v) { return static_cast<RandomValue&>(*v.ref); }
+inline const ast::MacroStmt* as_macro(const Value& v) { return static_cast<const MacroValue&>(*v.ref).def; }
+// An object's transform (identity when it has none).
+render::Mat4 object_transform(const Value& v);
+// A transform value's matrix.
+inline const render::Mat4& as_transform(const Value& v) { return static_cast<const TransformValue&>(*v.ref).matrix; }
+
+// Text form used by str(), format() and print(): numbers in shortest form ("3", "0.25"),
+// vectors "<1, 2, 3>", colors "rgb(1, 0, 0)", lists "[1, \"a\"]" (strings quoted inside).
+std::string to_text(const Value& v, bool quote_strings = false);
+
+// Structural equality (numbers, bools, strings, vectors, colors, lists, ranges); identity
+// for heap objects such as materials.
+bool equal(const Value& a, const Value& b);
+
+}  // namespace rts::runtime

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# `rts check` and `rts eval` end to end: output, -D and -I flags, limits, exit codes.
+# Usage: cli_check_eval.sh RTS_BINARY SOURCE_DIR
+set -uo pipefail
+rts="$1"
+src="$2"
+golden="$src/tests/golden/eval"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+
+# expect CODE CMD...: runs CMD, output in $tmp/out and $tmp/err, checks the exit code.
+expect() {
+  local want="$1"; shift
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  [[ $got -eq $want ]] || fail "exit $got (wanted $want): $*; stderr: $(head -3 "$tmp/err")"
+}
+contains() { grep -qF -- "$2" "$1" || fail "$1 lacks '$2': $(head -5 "$1")"; }
+
+# rts eval prints exactly the golden dump (the in-process golden test compares the same).
+expect 0 "$rts" eval "$golden/loops.rts"
+diff -u "$golden/loops.dump" "$tmp/out" >/dev/null || fail "rts eval loops.rts differs from loops.dump"
+
+# rts check summarises.
+expect 0 "$rts" check "$golden/language_example.rts" -D quality=2
+contains "$tmp/out" "triangles:  8 (in 1 mesh)"
+contains "$tmp/out" "camera:     perspective at <0, 6, -14>"
+contains "$tmp/out" "image:      800x600, 4 samples per pixel, max depth 6"
+contains "$tmp/out" "evaluated in"
+expect 0 "$rts" check "$golden/language_example.rts"
+contains "$tmp/out" "triangles:  0 (in 0 meshes)"   # quality stays 1: no mesh
+
+# -D: a define that matches nothing warns; a malformed one is a usage error.
+expect 0 "$rts" check "$golden/loops.rts" -D nothing=1
+contains "$tmp/err" "warning: define 'nothing=1' matches no top-level 'let nothing'"
+expect 2 "$rts" check "$golden/loops.rts" -D novalue
+expect 2 "$rts" eval "$golden/loops.rts" -D 1x=2
+# A define whose value is not an expression is a language error pointing into the define.
+expect 1 "$rts" check "$golden/defines.rts" -D 'quality=('
+contains "$tmp/err" "<define quality>:1:"
+
+# -I: searched after the including file's folder.
+mkdir -p "$tmp/lib"
+echo 'let from_lib = 3' >"$tmp/lib/lib.rts"
+printf 'include "lib.rts"\nsphere { radius = from_lib }\n' >"$tmp/main.rts"
+expect 1 "$rts" eval "$tmp/main.rts"
+contains "$tmp/err" "cannot find include file 'lib.rts'"
+expect 0 "$rts" eval "$tmp/main.rts" -I "$tmp/lib"
+contains "$tmp/out" "sphere center <0, 0, 0> radius 3"
+
+# Limits and their flags.
+printf 'let n = 0\nwhile n < 5000 { n += 1 }\n' >"$tmp/loop.rts"
+expect 1 "$rts" check "$tmp/loop.rts" --max-iterations 100
+contains "$tmp/err" "--max-iterations"
+expect 0 "$rts" check "$tmp/loop.rts" --max-iterations 5000
+expect 2 "$rts" check "$tmp/loop.rts" --max-recursion 0
+expect 2 "$rts" check "$tmp/loop.rts" --no-such-flag
+
+# Errors: exit 1 with a located, clang-style message; missing files too.
+expect 1 "$rts" check "$src/tests/golden/eval-errors/unknown_property.rts"
+contains "$tmp/err" "unknown_property.rts:3:24: error: unknown property 'centre' for sphere; did you mean 'center'?"
+contains "$tmp/err" "unknown_property.rts:5:1: note: in call to macro 'ball' from here"
+expect 1 "$rts" eval "$tmp/does_not_exist.rts"
+expect 2 "$rts" check
+
+if [[ $failures -gt 0 ]]; then
+  echo "$failures check(s) failed" >&2
+  exit 1
+fi
+echo "all rts check/eval command-line checks passed"

@@ -1,0 +1,257 @@
+// Evaluating whole programs: scopes, loops, macros, recursion, builtins, materials, textures,
+// transforms, placement and instancing, includes and defines.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "eval_helpers.hpp"
+
+using namespace rts;
+using namespace rts::render;
+using rts::test::eval_text;
+
+namespace {
+
+// Programs report values by placing spheres: `probe(x)` places a sphere whose radius is x.
+const std::string kProbe = "macro probe(x) { sphere { radius = x } }\n";
+
+std::vector<double> probes(const std::string& body, const EvalOptions& opts = {}) {
+  SceneDesc s = eval_text(kProbe + body, opts);
+  std::vector<double> out;
+  for (const Child& c : s.roots) {
+    const Node& n = s.nodes[c.node];
+    if (n.kind == NodeKind::Shape)
+      if (auto* sp = std::get_if<Sphere>(&s.shapes[n.index].geometry)) out.push_back(sp->radius);
+  }
+  return out;
+}
+
+double probe1(const std::string& body) {
+  auto p = probes(body);
+  REQUIRE(p.size() == 1);
+  return p[0];
+}
+
+}  // namespace
+
+TEST_CASE("let, assignment and compound assignment", "[eval]") {
+  CHECK(probe1("let a = 2  a += 3  a *= 4  a -= 1  a /= 19  probe(a)") == 1.0);
+  CHECK(probe1("let v = <1, 2, 3>  probe(v.y + v.z)") == 5.0);
+  CHECK(probe1("let c = rgb(0.25, 0.5, 1)  probe(c.r + c.b)") == 1.25);
+}
+
+TEST_CASE("scopes: inner lets shadow and vanish; assignment reaches the nearest binding", "[eval]") {
+  CHECK(probes("let x = 1  if true { let x = 2  probe(x) }  probe(x)") == std::vector<double>{2, 1});
+  CHECK(probe1("let x = 1  if true { x = 5 }  probe(x)") == 5);
+  CHECK(probe1("let t = 0  for i in 0 .. 3 { let sq = i * i  t += sq }  probe(t + 1)") == 6);
+  // A loop variable is local to its loop.
+  CHECK_THAT(test::eval_error("for i in 0 .. 2 { }  sphere { radius = i }"), Catch::Contains("undefined name 'i'"));
+}
+
+TEST_CASE("loops: ranges with steps, lists, break and continue, while", "[eval]") {
+  CHECK(probes("for i in 1 ..= 3 { probe(i) }") == std::vector<double>{1, 2, 3});
+  CHECK(probes("for i in 1 .. 2 step 0.25 { probe(i) }") == std::vector<double>{1, 1.25, 1.5, 1.75});
+  CHECK(probes("for r in [3, 1, 2] { probe(r) }") == std::vector<double>{3, 1, 2});
+  CHECK(probes("for i in 1 .. 100 { if i == 3 { break }  probe(i) }") == std::vector<double>{1, 2});
+  CHECK(probes("for i in 1 ..= 4 { if i % 2 == 0 { continue }  probe(i) }") == std::vector<double>{1, 3});
+  CHECK(probe1("let n = 0  while n < 10 { n += 3 }  probe(n)") == 12);
+}
+
+TEST_CASE("macros: defaults, named arguments, return values", "[eval]") {
+  std::string defs =
+      "macro area(w, h = 2) { return w * h }\n"
+      "macro third(a, b = a + 1, c = b * 10) { return c }\n";
+  CHECK(probe1(defs + "probe(area(3))") == 6);
+  CHECK(probe1(defs + "probe(area(3, 4))") == 12);
+  CHECK(probe1(defs + "probe(area(h = 5, w = 1))") == 5);
+  CHECK(probe1(defs + "probe(third(1))") == 20);  // defaults see earlier parameters
+  CHECK(probe1(defs + "probe(third(1, c = 7))") == 7);
+  CHECK(probe1("macro nothing() { return }  probe(1)  nothing()") == 1);
+}
+
+TEST_CASE("macros see globals but not their caller's locals", "[eval]") {
+  CHECK(probe1("let g = 4  macro f() { return g }  probe(f())") == 4);
+  CHECK_THAT(test::eval_error("macro f() { return local }\nif true { let local = 1  f() }"),
+             Catch::Contains("undefined name 'local'"));
+}
+
+TEST_CASE("recursion works to the limit and stops past it", "[eval]") {
+  std::string fact = "macro fact(n) { if n <= 1 { return 1 } return n * fact(n - 1) }\n";
+  CHECK(probe1(fact + "probe(fact(10))") == 3628800);
+  std::string deep = "macro down(n) { if n == 0 { return 0 } return down(n - 1) }\n";
+  EvalOptions opts;
+  opts.limits.max_recursion = 1000;
+  CHECK(probe1(deep + "probe(down(999) + 1)") == 1);
+  CHECK_THAT(test::eval_error(deep + "down(1000)", opts), Catch::Contains("nested deeper than 1000"));
+  opts.limits.max_recursion = 100000;  // the evaluator's stack grows with the limit
+  CHECK(probes(deep + "probe(down(50000) + 1)", opts).size() == 1);
+}
+
+TEST_CASE("macros place objects into the caller's current group", "[eval]") {
+  SceneDesc s = eval_text("macro two() { sphere { radius = 1 }  box { min = <0,0,0> max = <1,1,1> } }\n"
+                          "group { two() }\n two()");
+  REQUIRE(s.groups.size() == 1);
+  CHECK(s.groups[0].children.size() == 2);
+  CHECK(s.roots.size() == 3);  // the group and the second call's two objects
+}
+
+TEST_CASE("builtins", "[eval]") {
+  CHECK(probe1("probe(sqrt(16) + abs(-1) + floor(2.7) + ceil(0.2) + round(1.5))") == 10);
+  CHECK(probe1("probe(sin(radians(90)))") == Approx(1.0));
+  CHECK(probe1("probe(degrees(atan2(1, 1)))") == Approx(45.0));
+  CHECK(probe1("probe(min(3, 1, 2) + max([4, 9, 2]))") == 10);
+  CHECK(probe1("probe(clamp(5, 0, 2) + mix(0, 10, 0.25))") == 4.5);
+  CHECK(probe1("probe(dot(<1,2,3>, <4,5,6>))") == 32);
+  CHECK(probe1("probe(length(cross(<1,0,0>, <0,1,0>) * 3))") == 3);
+  CHECK(probe1("probe(length(normalize(<3, 4, 0>)))") == Approx(1.0));
+  CHECK(probe1("probe(len([1, 2, 3]) + len(\"abcd\") + len(0 .. 10 step 2))") == 12);
+  CHECK(probe1("probe(len(format(\"{} and {}\", 1, <1,2,3>)))") == std::string("1 and <1, 2, 3>").size());
+  CHECK(probe1("probe(len(str(0.5)))") == 3);
+  CHECK(probe1("probe(pow(2, 3) + exp(0) + log(1))") == 9);
+  CHECK(probe1("let v = vec(1, 2, 3)  probe(v.z)") == 3);
+  CHECK(probe1("assert(1 < 2, \"fine\")  probe(1)") == 1);
+}
+
+TEST_CASE("random streams are deterministic from their seed", "[eval][random]") {
+  std::string draws = "let r = random(7)  for i in 0 .. 5 { probe(rand(r, 1, 2)) }";
+  auto a = probes(draws), b = probes(draws);
+  CHECK(a == b);
+  REQUIRE(a.size() == 5);
+  for (double x : a) CHECK((x >= 1 && x < 2));
+  CHECK(a != probes("let r = random(8)  for i in 0 .. 5 { probe(rand(r, 1, 2)) }"));
+  CHECK(a[0] != a[1]);  // a stream advances
+}
+
+TEST_CASE("one definition placed many times is one shape and many instances", "[eval][instancing]") {
+  SceneDesc s = eval_text("let s = sphere { radius = 0.1 }\nfor i in 0 .. 100 { s translate <i, 0, 0> }");
+  CHECK(s.shapes.size() == 1);
+  CHECK(s.nodes.size() == 1);
+  REQUIRE(s.roots.size() == 100);
+  for (std::size_t i = 0; i < 100; ++i) {
+    CHECK(s.roots[i].node == s.roots[0].node);
+    CHECK(s.roots[i].transform[3].x == static_cast<double>(i));
+  }
+  // A block evaluated in a loop, by contrast, defines a shape per iteration.
+  SceneDesc t = eval_text("for i in 0 .. 10 { sphere { radius = 1 } }");
+  CHECK(t.shapes.size() == 10);
+}
+
+TEST_CASE("transforms compose in written order; rotate is in degrees x then y then z", "[eval][transform]") {
+  SceneDesc s = eval_text("sphere { radius = 1 } scale 2 translate <1, 0, 0>\n"
+                          "sphere { radius = 1 } rotate <0, 90, 0>\n"
+                          "sphere { radius = 1 } rotate <90, 90, 0>\n"
+                          "sphere { radius = 1 } matrix [1,0,0, 0,1,0, 0,0,1, 4,5,6]");
+  REQUIRE(s.roots.size() == 4);
+  auto apply = [&](std::size_t i, glm::dvec3 p) { return glm::dvec3(s.roots[i].transform * glm::dvec4(p, 1)); };
+  CHECK(apply(0, {1, 0, 0}) == glm::dvec3(3, 0, 0));  // scaled, then moved
+  glm::dvec3 r = apply(1, {1, 0, 0});
+  CHECK(r.x == Approx(0).margin(1e-12));
+  CHECK(r.z == Approx(-1));  // POV-Ray / glm convention
+  glm::dvec3 q = apply(2, {0, 1, 0});  // x first: y → z; then about y: z → x
+  CHECK(q.x == Approx(1));
+  CHECK(q.y == Approx(0).margin(1e-12));
+  CHECK(apply(3, {0, 0, 0}) == glm::dvec3(4, 5, 6));
+}
+
+TEST_CASE("groups nest and carry their transforms; lights in groups are children", "[eval]") {
+  SceneDesc s = eval_text(
+      "group { group { sphere { radius = 1 } } translate <0, 1, 0>  point_light { position = <0, 5, 0> } }"
+      " rotate <0, 45, 0>");
+  REQUIRE(s.roots.size() == 1);
+  REQUIRE(s.groups.size() == 2);
+  const Node& outer = s.nodes[s.roots[0].node];
+  CHECK(outer.kind == NodeKind::Group);
+  const GroupDesc& g = s.groups[outer.index];
+  REQUIRE(g.children.size() == 2);
+  CHECK(s.nodes[g.children[0].node].kind == NodeKind::Group);
+  CHECK(g.children[0].transform[3].y == 1);
+  CHECK(s.nodes[g.children[1].node].kind == NodeKind::Light);
+}
+
+TEST_CASE("materials: one value is one material; with derives new ones", "[eval][material]") {
+  SceneDesc s = eval_text(
+      "let ivory = material { color = rgb(0.9, 0.9, 0.8)  diffuse = 0.7  reflect = 0.2 }\n"
+      "let glass = ivory with { diffuse = 0  transmit = 0.95  ior = 1.5 }\n"
+      "for i in 0 .. 5 { sphere { radius = 1  material = ivory } }\n"
+      "sphere { radius = 1  material = glass }\n"
+      "sphere { radius = 1  material = ivory with { color = rgb(1, 0, 0) } }");
+  REQUIRE(s.materials.size() == 3);
+  const MaterialDesc& ivory = s.materials[s.shapes[0].material];
+  const MaterialDesc& glass = s.materials[s.shapes[5].material];
+  const MaterialDesc& red = s.materials[s.shapes[6].material];
+  for (int i = 1; i < 5; ++i) CHECK(s.shapes[i].material == s.shapes[0].material);
+  CHECK(ivory.diffuse == 0.7);
+  CHECK(glass.diffuse == 0);
+  CHECK(glass.transmit == Color(0.95));
+  CHECK(glass.reflect == Color(0.2));  // inherited
+  CHECK(glass.ior == 1.5);
+  CHECK(red.color == Color(1, 0, 0));
+  CHECK(red.diffuse == 0.7);
+}
+
+TEST_CASE("textures from builtins and blocks, with transforms", "[eval][texture]") {
+  SceneDesc s = eval_text(
+      "let c = checker(rgb(1), rgb(0), 0.5)\n"
+      "plane { normal = <0,1,0>  material = material { texture = c } }\n"
+      "plane { normal = <0,1,0>  material = material { color = stripes { color1 = rgb(1,0,0) axis = \"z\" } "
+      "scale 2 } }");
+  REQUIRE(s.textures.size() == 2);
+  CHECK(s.textures[0].kind == TextureKind::Checker);
+  CHECK(s.textures[0].scale == 0.5);
+  CHECK(s.textures[1].kind == TextureKind::Stripes);
+  CHECK(s.textures[1].axis == 2);
+  CHECK(s.textures[1].transform[0][0] == 2);
+  CHECK(s.materials[1].texture == 1);
+}
+
+TEST_CASE("settings and camera blocks configure the scene", "[eval]") {
+  SceneDesc s = eval_text("settings { width = 100  height = 50  samples = 4 }  camera { position = <0, 1, -3>  fov = 45 }");
+  CHECK(s.settings.width == 100);
+  CHECK(s.settings.height == 50);
+  CHECK(s.settings.samples == 4);
+  CHECK(s.has_camera);
+  CHECK(s.camera.fov == 45);
+}
+
+TEST_CASE("inline meshes from lists", "[eval]") {
+  SceneDesc s = eval_text("mesh { vertices = [<0,0,0>, <1,0,0>, <0,1,0>, <1,1,0>]  faces = [<0,1,2>, <1,3,2>] }");
+  REQUIRE(s.meshes.size() == 1);
+  CHECK(s.meshes[0]->indices.size() == 6);
+}
+
+TEST_CASE("defines replace the first top-level let of the main file", "[eval][defines]") {
+  EvalOptions opts;
+  opts.defines = {{"q", "2"}, {"v", "<1, 2, 3>"}};
+  CHECK(probes("let q = 1  let v = <0, 0, 0>  probe(q + v.z)", opts) == std::vector<double>{5});
+  // The defined let's own expression is not evaluated.
+  CHECK(probes("let q = 1 / 0  let v = 0  probe(q)", opts) == std::vector<double>{2});
+  EvalOptions unused;
+  unused.defines = {{"nothing", "3"}};
+  CHECK_THAT(test::eval_warnings("let a = 1", unused), Catch::Contains("define 'nothing=3' matches no top-level 'let nothing'"));
+}
+
+TEST_CASE("includes resolve relative to the including file, then -I paths", "[eval][include]") {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / ("rts_include_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "sub");
+  fs::create_directories(dir / "lib");
+  std::ofstream(dir / "sub" / "a.rts") << "include \"b.rts\"\nlet from_a = from_b + 1\n";
+  std::ofstream(dir / "sub" / "b.rts") << "let from_b = 10\n";
+  std::ofstream(dir / "lib" / "c.rts") << "let from_c = 100\n";
+  std::ofstream(dir / "main.rts") << kProbe << "include \"sub/a.rts\"\ninclude \"c.rts\"\nprobe(from_a + from_c)\n";
+  EvalOptions opts;
+  opts.include_paths = {(dir / "lib").string()};
+  SourceManager sm;
+  std::ostringstream w;
+  DiagnosticSink sink(w);
+  SceneDesc s = evaluate_file(sm, (dir / "main.rts").string(), opts, sink).scene;
+  REQUIRE(s.shapes.size() == 1);
+  CHECK(std::get<Sphere>(s.shapes[0].geometry).radius == 111);
+  fs::remove_all(dir);
+}
