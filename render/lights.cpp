@@ -1,0 +1,98 @@
+#include "render/lights.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "render/camera.hpp"
+#include "render/tolerances.hpp"
+
+namespace rts::render {
+
+double attenuation_factor(const Vec3& k, double d) {
+  double denom = k.x + k.y * d + k.z * d * d;
+  return denom > tol::kTinyLength ? 1.0 / denom : 0.0;
+}
+
+std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_lights) {
+  std::vector<CompiledLight> out;
+  for (const LightDesc& d : world_lights) {
+    CompiledLight l;
+    l.kind = d.kind;
+    l.power = Rgb(d.color.r, d.color.g, d.color.b) * d.intensity;
+    l.position = d.position;
+    double dl = glm::length(d.direction);
+    l.direction = dl > tol::kTinyLength ? d.direction / dl : Vec3(0, -1, 0);
+    Vec3 axis = d.point_at - d.position;
+    double al = glm::length(axis);
+    l.spot_axis = al > tol::kTinyLength ? axis / al : Vec3(0, -1, 0);
+    double inner = std::clamp(d.radius, 0.0, 180.0), outer = std::clamp(d.falloff, 0.0, 180.0);
+    if (outer < inner) outer = inner;
+    l.cos_inner = std::cos(inner * std::numbers::pi / 180.0);
+    l.cos_outer = std::cos(outer * std::numbers::pi / 180.0);
+    l.attenuation = d.attenuation;
+    l.u = d.u;
+    l.v = d.v;
+    l.disc = d.disc;
+    l.samples = d.kind == LightKind::Area ? std::clamp(d.samples, 1, kMaxAreaSamples) : 1;
+    l.shadows = d.shadows;
+    out.push_back(l);
+  }
+  return out;
+}
+
+namespace {
+
+// Smooth spot falloff: 1 inside the inner cone, 0 outside the outer one, smoothstep between.
+double spot_factor(const CompiledLight& l, const Vec3& light_to_point) {
+  double c = glm::dot(light_to_point, l.spot_axis);
+  if (c >= l.cos_inner) return 1.0;
+  if (c <= l.cos_outer) return 0.0;
+  double t = (c - l.cos_outer) / (l.cos_inner - l.cos_outer);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+LightSample toward(const Vec3& light_pos, const Vec3& point) {
+  LightSample s;
+  Vec3 d = light_pos - point;
+  s.distance = glm::length(d);
+  s.direction = s.distance > tol::kTinyLength ? d / s.distance : Vec3(0, 1, 0);
+  return s;
+}
+
+}  // namespace
+
+LightSample sample_light(const CompiledLight& l, const Vec3& point, int index, glm::dvec2 jitter,
+                         uint32_t perm_seed) {
+  switch (l.kind) {
+    case LightKind::Directional: {
+      LightSample s;
+      s.direction = -l.direction;
+      s.distance = std::numeric_limits<double>::infinity();
+      s.radiance = l.power;
+      return s;
+    }
+    case LightKind::Point: {
+      LightSample s = toward(l.position, point);
+      s.radiance = l.power * attenuation_factor(l.attenuation, s.distance);
+      return s;
+    }
+    case LightKind::Spot: {
+      LightSample s = toward(l.position, point);
+      s.radiance = l.power * attenuation_factor(l.attenuation, s.distance) * spot_factor(l, -s.direction);
+      return s;
+    }
+    case LightKind::Area: {
+      glm::dvec2 u = stratified_2d(static_cast<uint32_t>(index), static_cast<uint32_t>(l.samples),
+                                   jitter, perm_seed);
+      glm::dvec2 p = l.disc ? 0.5 * concentric_disc(u) : u - 0.5;  // both in [-0.5, 0.5]^2
+      LightSample s = toward(l.position + p.x * l.u + p.y * l.v, point);
+      s.radiance = l.power * (attenuation_factor(l.attenuation, s.distance) / l.samples);
+      return s;
+    }
+  }
+  return {};
+}
+
+}  // namespace rts::render

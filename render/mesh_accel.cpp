@@ -1,0 +1,98 @@
+#include "render/mesh_accel.hpp"
+
+#include "render/shapes/triangle.hpp"
+
+namespace rts::render {
+
+MeshAccel::MeshAccel(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mesh)) {
+  // Triangles whose indices point outside the vertex arrays are dropped (never hit).
+  std::size_t n = mesh_->indices.size() / 3;
+  std::vector<AABB> boxes(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const uint32_t* idx = &mesh_->indices[i * 3];
+    bool ok = idx[0] < mesh_->positions.size() && idx[1] < mesh_->positions.size() &&
+              idx[2] < mesh_->positions.size();
+    if (!ok) continue;  // an invalid (empty) box: its triangle is skipped below
+    for (int k = 0; k < 3; ++k) boxes[i].extend(Vec3(mesh_->positions[idx[k]]));
+  }
+  // Keep only valid triangles in the BVH; `valid` maps BVH primitive → triangle index.
+  std::vector<AABB> valid_boxes;
+  std::vector<uint32_t> valid;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (boxes[i].valid() && boxes[i].finite()) {
+      valid_boxes.push_back(boxes[i]);
+      valid.push_back(static_cast<uint32_t>(i));
+      bounds_.extend(boxes[i]);
+    }
+  }
+  triangle_count_ = valid.size();
+  bvh_ = build_bvh(valid_boxes);
+  for (uint32_t& o : bvh_.order) o = valid[o];  // leaves index triangles directly
+}
+
+void MeshAccel::triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const {
+  const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(tri) * 3];
+  v0 = Vec3(mesh_->positions[idx[0]]);
+  v1 = Vec3(mesh_->positions[idx[1]]);
+  v2 = Vec3(mesh_->positions[idx[2]]);
+}
+
+bool MeshAccel::intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const {
+  uint32_t best_tri = 0;
+  double best_b1 = 0, best_b2 = 0;
+  bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t tri, Interval& t_range) {
+    Vec3 v0, v1, v2;
+    triangle(tri, v0, v1, v2);
+    double t, b1, b2;
+    if (!intersect_triangle(v0, v1, v2, ray, t_range, t, b1, b2)) return false;
+    t_range.max = t;
+    best_tri = tri;
+    best_b1 = b1;
+    best_b2 = b2;
+    return true;
+  });
+  if (!found) return false;
+  Vec3 v0, v1, v2;
+  triangle(best_tri, v0, v1, v2);
+  const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(best_tri) * 3];
+  double b0 = 1.0 - best_b1 - best_b2;
+  hit.t = ray_t.max;
+  hit.point = ray.at(hit.t);
+  hit.normal = glm::normalize(glm::cross(v1 - v0, v2 - v0));
+  hit.shading_normal = hit.normal;
+  const auto& normals = mesh_->normals;
+  if (smooth && normals.size() == mesh_->positions.size()) {
+    Vec3 n = b0 * Vec3(normals[idx[0]]) + best_b1 * Vec3(normals[idx[1]]) +
+             best_b2 * Vec3(normals[idx[2]]);
+    double len = glm::length(n);
+    if (len > tol::kTinyLength) {
+      n /= len;
+      // Vertex normals state the intended outside: turn the geometric normal to agree when
+      // the triangle is wound the other way, so inside/outside tests stay consistent.
+      hit.shading_normal = n;
+      if (glm::dot(n, hit.normal) < 0.0) hit.normal = -hit.normal;
+    }
+  }
+  const auto& uvs = mesh_->uvs;
+  if (uvs.size() == mesh_->positions.size()) {
+    glm::dvec2 uv = b0 * glm::dvec2(uvs[idx[0]]) + best_b1 * glm::dvec2(uvs[idx[1]]) +
+                    best_b2 * glm::dvec2(uvs[idx[2]]);
+    hit.uv = uv;
+    hit.has_uv = true;
+  } else {
+    hit.uv = {best_b1, best_b2};
+    hit.has_uv = false;
+  }
+  return true;
+}
+
+bool MeshAccel::occluded(const Ray& ray, Interval ray_t) const {
+  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t tri, Interval& t_range) {
+    Vec3 v0, v1, v2;
+    triangle(tri, v0, v1, v2);
+    double t, b1, b2;
+    return intersect_triangle(v0, v1, v2, ray, t_range, t, b1, b2);
+  });
+}
+
+}  // namespace rts::render

@@ -1,0 +1,33 @@
+// A triangle mesh ready for tracing: its own BVH (the bottom level of the two-level BVH),
+// built once per MeshData and shared by every instance of that mesh.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "render/bvh.hpp"
+#include "render/scene.hpp"
+#include "render/surface_hit.hpp"
+
+namespace rts::render {
+
+class MeshAccel {
+ public:
+  explicit MeshAccel(std::shared_ptr<const MeshData> mesh);
+
+  AABB bounds() const { return bounds_; }
+  std::size_t triangle_count() const { return triangle_count_; }
+  // Closest hit in object space; `smooth` interpolates the mesh's vertex normals if it has them.
+  bool intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const;
+  bool occluded(const Ray& ray, Interval ray_t) const;
+
+ private:
+  void triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const;
+
+  std::shared_ptr<const MeshData> mesh_;
+  std::size_t triangle_count_ = 0;
+  BVH bvh_;
+  AABB bounds_;
+};
+
+}  // namespace rts::render

@@ -1,0 +1,161 @@
+// Procedural and image textures, evaluated in texture space = inverse(transform) * object point.
+//
+// Semantics (docs/rendering.md shows each):
+//  - checker:  3D cells of side `scale`; the parity of floor(x/s)+floor(y/s)+floor(z/s) picks
+//              color1 (even) or color2 (odd).
+//  - stripes:  slabs along `axis`, period `scale`: the first half of each period is color1,
+//              the second half color2.
+//  - gradient: color1 → color2 linearly along `axis` over `scale`, then repeats (a sawtooth,
+//              as POV-Ray's gradient pattern).
+//  - image:    bilinear lookup with repeat wrapping; v = 0 is the image's bottom row.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "render/texture.hpp"
+
+namespace rts::render {
+
+namespace {
+
+// Points exactly on a cell boundary (a checkered plane at y = 0, a box face at x = 1) would
+// pick a cell by the sign of rounding noise and flicker between two colors. Shifting every
+// coordinate by this fraction of a cell puts boundary points consistently in the upper cell.
+constexpr double kCellBoundaryBias = 1e-6;
+
+// Below this distance from the texture-space origin, the spherical mapping has no direction.
+constexpr double kMinSphericalRadius = 1e-12;
+
+// A non-positive or NaN scale (the builder should reject it) behaves as 1 instead of
+// dividing by zero.
+double safe_scale(double scale) { return scale > 0.0 && std::isfinite(scale) ? scale : 1.0; }
+
+// Which cell of side `size` holds x, robust on boundaries.
+double cell_index(double x, double size) { return std::floor(x / size + kCellBoundaryBias); }
+
+// Fractional part in [0,1) (NaN and infinities → 0, never a NaN color).
+double wrap01(double x) {
+  if (!std::isfinite(x)) return 0.0;
+  const double f = x - std::floor(x);
+  return f >= 1.0 ? 0.0 : f;   // x - floor(x) rounds to 1.0 for tiny negative x
+}
+
+Color mix(const Color& a, const Color& b, double t) {
+  return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
+}
+
+int clamp_axis(int axis) { return axis < 0 || axis > 2 ? 0 : axis; }
+
+Color checker(const TextureDesc& d, const Vec3& q) {
+  const double s = safe_scale(d.scale);
+  const double sum = cell_index(q.x, s) + cell_index(q.y, s) + cell_index(q.z, s);
+  const double parity = sum - 2.0 * std::floor(sum / 2.0);   // 0 or 1, also for negatives
+  return parity >= 0.5 ? d.color2 : d.color1;
+}
+
+Color stripes(const TextureDesc& d, const Vec3& q) {
+  const double t = wrap01(q[clamp_axis(d.axis)] / safe_scale(d.scale) + kCellBoundaryBias);
+  return t < 0.5 ? d.color1 : d.color2;
+}
+
+Color gradient(const TextureDesc& d, const Vec3& q) {
+  return mix(d.color1, d.color2, wrap01(q[clamp_axis(d.axis)] / safe_scale(d.scale)));
+}
+
+// Bilinear lookup at (u, v) with repeat wrapping; v = 0 at the bottom of the image.
+Color sample_bilinear(const Image& image, double u, double v) {
+  const int w = image.width, h = image.height;
+  // Continuous pixel coordinates with pixel centres at integers + 0.5.
+  const double x = wrap01(u) * w - 0.5;
+  const double y = (1.0 - wrap01(v)) * h - 0.5;
+  const double x0f = std::floor(x), y0f = std::floor(y);
+  const double fx = x - x0f, fy = y - y0f;
+  auto wrap = [](int i, int n) { return ((i % n) + n) % n; };
+  const int x0 = wrap(static_cast<int>(x0f), w), x1 = wrap(x0 + 1, w);
+  const int y0 = wrap(static_cast<int>(y0f), h), y1 = wrap(y0 + 1, h);
+  auto texel = [&](int px, int py) {
+    const float* p = image.at(px, py);
+    return Color(p[0], p[1], p[2]);
+  };
+  const Color top = mix(texel(x0, y0), texel(x1, y0), fx);
+  const Color bottom = mix(texel(x0, y1), texel(x1, y1), fx);
+  return mix(top, bottom, fy);
+}
+
+glm::dvec2 planar_uv(const Vec3& q) { return {q.x, q.z}; }
+
+// Longitude → u (0 at -x, going round through +z), latitude → v (0 at the south pole).
+glm::dvec2 spherical_uv(const Vec3& q) {
+  const double r = glm::length(q);
+  if (!(r > kMinSphericalRadius)) return {0.5, 0.5};
+  const Vec3 d = q / r;
+  const double u = 0.5 + std::atan2(d.z, d.x) / (2.0 * std::numbers::pi);
+  const double v = 0.5 + std::asin(std::clamp(d.y, -1.0, 1.0)) / std::numbers::pi;
+  return {u, v};
+}
+
+bool is_known_mapping(const std::string& mapping) {
+  return mapping == "uv" || mapping == "planar" || mapping == "spherical";
+}
+
+}  // namespace
+
+CompiledTexture::CompiledTexture(const TextureDesc& desc, std::shared_ptr<const Image> image)
+    : desc_(desc), inverse_(glm::inverse(desc.transform)), image_(std::move(image)) {
+  if (desc_.kind == TextureKind::Image) {
+    if (image_ == nullptr || image_->width <= 0 || image_->height <= 0) {
+      throw RenderError(desc_.loc, fmt::format("image texture '{}' has no image data",
+                                               desc_.image_path));
+    }
+    if (!is_known_mapping(desc_.mapping)) {
+      throw RenderError(desc_.loc, fmt::format("unknown image mapping '{}' (expected \"uv\", "
+                                               "\"planar\" or \"spherical\")", desc_.mapping));
+    }
+  }
+}
+
+Color CompiledTexture::eval(const TexturePoint& p) const {
+  const Vec3 q = Vec3(inverse_ * glm::dvec4(p.object_point, 1.0));
+  switch (desc_.kind) {
+    case TextureKind::Checker: return checker(desc_, q);
+    case TextureKind::Stripes: return stripes(desc_, q);
+    case TextureKind::Gradient: return gradient(desc_, q);
+    case TextureKind::Image: break;
+  }
+  glm::dvec2 uv;
+  if (desc_.mapping == "spherical") {
+    uv = spherical_uv(q);
+  } else if (desc_.mapping == "uv" && p.has_uv) {
+    // Surface UVs go through the same texture transform, so `scale 0.5` tiles twice.
+    const Vec3 t = Vec3(inverse_ * glm::dvec4(p.uv.x, p.uv.y, 0.0, 1.0));
+    uv = {t.x, t.y};
+  } else {
+    uv = planar_uv(q);
+  }
+  return sample_bilinear(*image_, uv.x, uv.y);
+}
+
+std::vector<CompiledTexture> compile_textures(const SceneDesc& scene) {
+  std::map<std::string, std::shared_ptr<const Image>> loaded;   // path → image, loaded once
+  std::vector<CompiledTexture> compiled;
+  compiled.reserve(scene.textures.size());
+  for (const TextureDesc& desc : scene.textures) {
+    std::shared_ptr<const Image> image;
+    if (desc.kind == TextureKind::Image) {
+      auto it = loaded.find(desc.image_path);
+      if (it == loaded.end()) {
+        auto fresh = std::make_shared<const Image>(read_png(desc.image_path, desc.loc));
+        it = loaded.emplace(desc.image_path, std::move(fresh)).first;
+      }
+      image = it->second;
+    }
+    compiled.emplace_back(desc, std::move(image));
+  }
+  return compiled;
+}
+
+}  // namespace rts::render

@@ -1,0 +1,184 @@
+#include "render/world.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "render/shapes/box.hpp"
+#include "render/shapes/cone.hpp"
+#include "render/shapes/cylinder.hpp"
+#include "render/shapes/disc.hpp"
+#include "render/shapes/plane.hpp"
+#include "render/shapes/sphere.hpp"
+#include "render/shapes/triangle.hpp"
+
+namespace rts::render {
+namespace {
+
+// A transform whose linear part has a determinant this small (relative to its scale) cannot
+// be inverted meaningfully (e.g. `scale 0`): the instance is flattened to nothing and skipped.
+constexpr double kSingularDeterminant = 1e-300;
+
+bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
+
+Ray to_object_ray(const Mat4& to_object, const Ray& r) {
+  return Ray{Vec3(to_object * glm::dvec4(r.origin, 1.0)), Vec3(to_object * glm::dvec4(r.direction, 0.0))};
+}
+
+}  // namespace
+
+World::World(const SceneDesc& scene, const FlatScene& flat) {
+  meshes_.resize(scene.meshes.size());
+  std::vector<Instance> bounded, unbounded;
+  std::vector<AABB> boxes;
+  for (const FlatShape& fs : flat.shapes) {
+    const ShapeDesc& shape = scene.shapes[fs.shape];
+    Instance inst;
+    inst.material = shape.material;
+    if (shape.material < scene.materials.size()) {
+      const Color& t = scene.materials[shape.material].transmit;
+      inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
+      has_transmissive_ = has_transmissive_ || inst.transmissive;
+    }
+    inst.loc = fs.loc;
+    inst.identity = is_identity(fs.to_world);
+    if (!inst.identity) {
+      double det = glm::determinant(glm::dmat3(fs.to_world));
+      if (!(std::abs(det) > kSingularDeterminant) || !std::isfinite(det)) continue;
+      inst.to_object = glm::inverse(fs.to_world);
+      inst.normal_to_world = glm::transpose(glm::dmat3(inst.to_object));
+    }
+    AABB object_bounds;
+    bool unbounded_shape = false;
+    std::visit(
+        [&](const auto& g) {
+          using T = std::decay_t<decltype(g)>;
+          if constexpr (std::is_same_v<T, Sphere>) {
+            inst.kind = PrimKind::Sphere; inst.index = spheres_.size(); spheres_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Plane>) {
+            inst.kind = PrimKind::Plane; inst.index = plane_shapes_.size(); plane_shapes_.push_back(g);
+            unbounded_shape = true;
+          } else if constexpr (std::is_same_v<T, Triangle>) {
+            inst.kind = PrimKind::Triangle; inst.index = triangles_.size(); triangles_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Box>) {
+            inst.kind = PrimKind::Box; inst.index = boxes_.size(); boxes_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Cylinder>) {
+            inst.kind = PrimKind::Cylinder; inst.index = cylinders_.size(); cylinders_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Cone>) {
+            inst.kind = PrimKind::Cone; inst.index = cones_.size(); cones_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Disc>) {
+            inst.kind = PrimKind::Disc; inst.index = discs_.size(); discs_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, MeshRef>) {
+            if (g.mesh >= scene.meshes.size() || !scene.meshes[g.mesh])
+              throw RenderError(shape.loc, "internal: shape refers to unknown mesh " + std::to_string(g.mesh));
+            if (!meshes_[g.mesh]) meshes_[g.mesh] = std::make_unique<MeshAccel>(scene.meshes[g.mesh]);
+            inst.kind = PrimKind::Mesh; inst.index = g.mesh; inst.smooth = g.smooth;
+            object_bounds = meshes_[g.mesh]->bounds();
+          }
+        },
+        shape.geometry);
+    if (unbounded_shape) {
+      unbounded.push_back(inst);
+      continue;
+    }
+    if (!object_bounds.valid()) continue;  // empty mesh, nothing to hit
+    inst.world_bounds = inst.identity ? object_bounds : transform_bounds(fs.to_world, object_bounds);
+    if (!inst.world_bounds.finite()) continue;  // NaN/inf coordinates: never hit
+    bounded.push_back(inst);
+    boxes.push_back(inst.world_bounds);
+  }
+  bvh_ = build_bvh(boxes);
+  instances_ = std::move(bounded);
+  for (Instance& p : unbounded) {
+    planes_.push_back(static_cast<uint32_t>(instances_.size()));
+    instances_.push_back(p);
+  }
+}
+
+bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
+                               SurfaceHit& hit) const {
+  Ray ray = inst.identity ? world_ray : to_object_ray(inst.to_object, world_ray);
+  switch (inst.kind) {
+    case PrimKind::Sphere: return render::intersect(spheres_[inst.index], ray, ray_t, hit);
+    case PrimKind::Plane: return render::intersect(plane_shapes_[inst.index], ray, ray_t, hit);
+    case PrimKind::Triangle: return render::intersect(triangles_[inst.index], ray, ray_t, hit);
+    case PrimKind::Box: return render::intersect(boxes_[inst.index], ray, ray_t, hit);
+    case PrimKind::Cylinder: return render::intersect(cylinders_[inst.index], ray, ray_t, hit);
+    case PrimKind::Cone: return render::intersect(cones_[inst.index], ray, ray_t, hit);
+    case PrimKind::Disc: return render::intersect(discs_[inst.index], ray, ray_t, hit);
+    case PrimKind::Mesh: return meshes_[inst.index]->intersect(ray, ray_t, hit, inst.smooth);
+  }
+  return false;
+}
+
+bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const {
+  if (inst.kind == PrimKind::Mesh) {
+    Ray ray = inst.identity ? world_ray : to_object_ray(inst.to_object, world_ray);
+    return meshes_[inst.index]->occluded(ray, ray_t);
+  }
+  SurfaceHit scratch;
+  return intersect_instance(inst, world_ray, ray_t, scratch);
+}
+
+bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only) const {
+  SurfaceHit best;
+  uint32_t best_instance = 0;
+  bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t i, Interval& t_range) {
+    if (transmissive_only && !instances_[i].transmissive) return false;
+    SurfaceHit h;
+    if (!intersect_instance(instances_[i], ray, t_range, h)) return false;
+    t_range.max = h.t;
+    best = h;
+    best_instance = i;
+    return true;
+  });
+  for (uint32_t i : planes_) {
+    if (transmissive_only && !instances_[i].transmissive) continue;
+    SurfaceHit h;
+    if (intersect_instance(instances_[i], ray, ray_t, h)) {
+      ray_t.max = h.t;
+      best = h;
+      best_instance = i;
+      found = true;
+    }
+  }
+  if (!found) return false;
+  const Instance& inst = instances_[best_instance];
+  hit.t = best.t;
+  hit.instance = best_instance;
+  hit.point = ray.at(best.t);
+  hit.object_point = best.point;
+  hit.uv = best.uv;
+  hit.has_uv = best.has_uv;
+  // Spherical UVs cost two inverse trigonometric calls: only for the hit that is kept.
+  if (inst.kind == PrimKind::Sphere) {
+    const Sphere& sp = spheres_[inst.index];
+    hit.uv = sphere_uv((best.point - sp.center) / sp.radius);
+    hit.has_uv = true;
+  }
+  if (inst.identity) {
+    hit.normal = glm::normalize(best.normal);
+    hit.shading_normal = glm::normalize(best.shading_normal);
+  } else {
+    hit.normal = glm::normalize(inst.normal_to_world * best.normal);
+    hit.shading_normal = glm::normalize(inst.normal_to_world * best.shading_normal);
+  }
+  return true;
+}
+
+bool World::occluded(const Ray& ray, Interval ray_t, bool opaque_only) const {
+  for (uint32_t i : planes_)
+    if (!(opaque_only && instances_[i].transmissive) && occluded_instance(instances_[i], ray, ray_t))
+      return true;
+  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t i, Interval& t_range) {
+    if (opaque_only && instances_[i].transmissive) return false;
+    return occluded_instance(instances_[i], ray, t_range);
+  });
+}
+
+}  // namespace rts::render

@@ -1,0 +1,79 @@
+// The traceable world: every shape instance with its world transform, a top-level BVH over
+// the bounded ones, unbounded planes kept aside, and one MeshAccel per referenced mesh.
+// Ray-primitive tests dispatch with a switch on the instance kind into per-kind arrays.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "render/bvh.hpp"
+#include "render/flatten.hpp"
+#include "render/mesh_accel.hpp"
+#include "render/scene.hpp"
+#include "render/surface_hit.hpp"
+
+namespace rts::render {
+
+enum class PrimKind : uint8_t { Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh };
+
+struct Instance {
+  PrimKind kind = PrimKind::Sphere;
+  bool identity = true;        // no transform: trace the world ray directly
+  bool smooth = true;          // meshes: interpolate vertex normals
+  bool transmissive = false;   // its material lets light through (shadow rays pass it)
+  uint32_t index = 0;          // into the World's array for `kind` (meshes: the MeshId)
+  MaterialId material = kNoId;
+  Mat4 to_object{1.0};         // world → object
+  glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
+  AABB world_bounds;
+  SourceRef loc;
+};
+
+// A hit in world space, plus what shading needs from object space.
+struct WorldHit {
+  double t = 0.0;
+  uint32_t instance = 0;
+  Vec3 point{0.0};             // world
+  Vec3 normal{0, 1, 0};        // world geometric normal, unit, outward
+  Vec3 shading_normal{0, 1, 0};  // world, unit, outward
+  Vec3 object_point{0.0};      // for textures
+  glm::dvec2 uv{0.0};
+  bool has_uv = false;
+};
+
+class World {
+ public:
+  World(const SceneDesc& scene, const FlatScene& flat);
+
+  // Closest hit; with `transmissive_only`, opaque instances are ignored.
+  bool intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only = false) const;
+  // Any hit (early exit); with `opaque_only`, transmissive instances are ignored.
+  bool occluded(const Ray& ray, Interval ray_t, bool opaque_only = false) const;
+  bool has_transmissive() const { return has_transmissive_; }
+
+  const Instance& instance(uint32_t i) const { return instances_[i]; }
+  std::size_t instance_count() const { return instances_.size(); }
+  std::size_t plane_count() const { return planes_.size(); }
+  const BVH& top_level() const { return bvh_; }
+
+ private:
+  bool intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
+                          SurfaceHit& hit) const;
+  bool occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const;
+
+  std::vector<Sphere> spheres_;
+  std::vector<Plane> plane_shapes_;
+  std::vector<Triangle> triangles_;
+  std::vector<Box> boxes_;
+  std::vector<Cylinder> cylinders_;
+  std::vector<Cone> cones_;
+  std::vector<Disc> discs_;
+  std::vector<std::unique_ptr<MeshAccel>> meshes_;  // by MeshId; null when unreferenced
+
+  std::vector<Instance> instances_;  // bounded instances first (BVH), then planes
+  std::vector<uint32_t> planes_;     // instance indices of unbounded planes
+  BVH bvh_;
+  bool has_transmissive_ = false;
+};
+
+}  // namespace rts::render

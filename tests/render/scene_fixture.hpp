@@ -1,0 +1,59 @@
+// Helpers to build small SceneDescs in tests, without the scene language.
+#pragma once
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/scene.hpp"
+
+namespace rts::render::test {
+
+inline MaterialId add_material(SceneDesc& s, const MaterialDesc& m) {
+  s.materials.push_back(m);
+  return static_cast<MaterialId>(s.materials.size() - 1);
+}
+
+inline NodeId add_shape(SceneDesc& s, ShapeGeometry g, MaterialId material = kNoId) {
+  s.shapes.push_back(ShapeDesc{std::move(g), material, {}});
+  s.nodes.push_back(Node{NodeKind::Shape, static_cast<uint32_t>(s.shapes.size() - 1), {}});
+  return static_cast<NodeId>(s.nodes.size() - 1);
+}
+
+inline NodeId add_light(SceneDesc& s, const LightDesc& l) {
+  s.lights.push_back(l);
+  s.nodes.push_back(Node{NodeKind::Light, static_cast<uint32_t>(s.lights.size() - 1), {}});
+  return static_cast<NodeId>(s.nodes.size() - 1);
+}
+
+inline NodeId add_group(SceneDesc& s, std::vector<Child> children) {
+  s.groups.push_back(GroupDesc{std::move(children)});
+  s.nodes.push_back(Node{NodeKind::Group, static_cast<uint32_t>(s.groups.size() - 1), {}});
+  return static_cast<NodeId>(s.nodes.size() - 1);
+}
+
+inline void place(SceneDesc& s, NodeId node, const Mat4& transform = Mat4(1.0)) {
+  s.roots.push_back(Child{node, transform, {}});
+}
+
+// Emits exactly `c`: no ambient, diffuse or specular response.
+inline MaterialDesc emissive(Color c) {
+  MaterialDesc m;
+  m.emission = c;
+  m.ambient = 0;
+  m.diffuse = 0;
+  return m;
+}
+
+// A flat triangle without vertex normals.
+inline Triangle triangle(Vec3 a, Vec3 b, Vec3 c) {
+  Triangle t;
+  t.v0 = a;
+  t.v1 = b;
+  t.v2 = c;
+  return t;
+}
+
+inline Mat4 translate(Vec3 v) { return glm::translate(Mat4(1.0), v); }
+inline Mat4 scale(Vec3 v) { return glm::scale(Mat4(1.0), v); }
+inline Mat4 rotate_deg(double deg, Vec3 axis) { return glm::rotate(Mat4(1.0), glm::radians(deg), axis); }
+
+}  // namespace rts::render::test

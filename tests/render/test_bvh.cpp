@@ -1,0 +1,133 @@
+// The BVHs against brute force: the same closest hit (and the same occlusion answer) for many
+// random rays, over random spheres (top level) and random triangles (a mesh's bottom level).
+#include <memory>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+#include "render/bvh.hpp"
+#include "render/flatten.hpp"
+#include "render/mesh_accel.hpp"
+#include "render/shapes/sphere.hpp"
+#include "render/shapes/triangle.hpp"
+#include "render/world.hpp"
+#include "scene_fixture.hpp"
+
+using namespace rts::render;
+using namespace rts::render::test;
+
+namespace {
+
+constexpr int kRays = 2000;
+
+Vec3 random_point(std::mt19937_64& rng, double extent) {
+  std::uniform_real_distribution<double> u(-extent, extent);
+  return Vec3(u(rng), u(rng), u(rng));
+}
+
+Ray random_ray(std::mt19937_64& rng) {
+  Vec3 o = random_point(rng, 15.0);
+  Vec3 target = random_point(rng, 8.0);
+  return Ray{o, target - o};  // deliberately not unit length
+}
+
+}  // namespace
+
+TEST_CASE("BVH over random spheres finds the brute-force closest hit", "[bvh]") {
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> radius(0.05, 1.0);
+  SceneDesc s;
+  std::vector<Sphere> spheres;
+  for (int i = 0; i < 300; ++i) {
+    Sphere sp{random_point(rng, 10.0), radius(rng)};
+    spheres.push_back(sp);
+    place(s, add_shape(s, sp));
+  }
+  World w(s, flatten_scene(s));
+  REQUIRE(w.top_level().nodes.size() > 1);
+  int hits = 0;
+  for (int r = 0; r < kRays; ++r) {
+    Ray ray = random_ray(rng);
+    double best = Interval::kInfinity;
+    for (const Sphere& sp : spheres) {
+      SurfaceHit h;
+      if (intersect(sp, ray, Interval(0.0, best), h)) best = h.t;
+    }
+    WorldHit wh;
+    bool found = w.intersect(ray, Interval::positive(), wh);
+    REQUIRE(found == (best < Interval::kInfinity));
+    if (found) {
+      ++hits;
+      CHECK(wh.t == best);
+    }
+    CHECK(w.occluded(ray, Interval(0.0, 1.0)) == (best <= 1.0));
+  }
+  CHECK(hits > kRays / 10);  // the test exercises hits, not only misses
+}
+
+TEST_CASE("mesh BVH over random triangles finds the brute-force closest hit", "[bvh]") {
+  std::mt19937_64 rng(777);
+  auto mesh = std::make_shared<MeshData>();
+  const int kTriangles = 500;
+  for (int i = 0; i < kTriangles; ++i) {
+    Vec3 c = random_point(rng, 8.0);
+    for (int k = 0; k < 3; ++k) {
+      mesh->positions.push_back(glm::vec3(c + random_point(rng, 1.5)));
+      mesh->indices.push_back(static_cast<uint32_t>(mesh->positions.size() - 1));
+    }
+  }
+  MeshAccel accel(mesh);
+  REQUIRE(accel.triangle_count() == kTriangles);
+  int hits = 0;
+  for (int r = 0; r < kRays; ++r) {
+    Ray ray = random_ray(rng);
+    double best = Interval::kInfinity;
+    for (int i = 0; i < kTriangles; ++i) {
+      double t, b1, b2;
+      Vec3 v0(mesh->positions[i * 3]), v1(mesh->positions[i * 3 + 1]), v2(mesh->positions[i * 3 + 2]);
+      if (intersect_triangle(v0, v1, v2, ray, Interval(0.0, best), t, b1, b2)) best = t;
+    }
+    SurfaceHit h;
+    bool found = accel.intersect(ray, Interval::positive(), h, true);
+    REQUIRE(found == (best < Interval::kInfinity));
+    if (found) {
+      ++hits;
+      CHECK(h.t == best);
+    }
+    CHECK(accel.occluded(ray, Interval(0.0, 0.5)) == (best <= 0.5));
+  }
+  CHECK(hits > kRays / 10);
+}
+
+TEST_CASE("BVH build: every primitive appears once; leaves are small", "[bvh]") {
+  std::mt19937_64 rng(5);
+  std::vector<AABB> boxes;
+  for (int i = 0; i < 1000; ++i) {
+    Vec3 c = random_point(rng, 100.0);
+    boxes.push_back(AABB{c - Vec3(0.5), c + Vec3(0.5)});
+  }
+  BVH bvh = build_bvh(boxes);
+  std::vector<int> seen(boxes.size(), 0);
+  std::size_t max_leaf = 0;
+  for (const BVHNode& n : bvh.nodes) {
+    if (n.count == 0) continue;
+    max_leaf = std::max<std::size_t>(max_leaf, n.count);
+    for (uint32_t i = 0; i < n.count; ++i) {
+      uint32_t prim = bvh.order[n.offset + i];
+      ++seen[prim];
+      // The leaf box encloses its primitives.
+      CHECK(n.bounds.lo.x <= boxes[prim].lo.x);
+      CHECK(n.bounds.hi.y >= boxes[prim].hi.y);
+    }
+  }
+  for (int count : seen) CHECK(count == 1);
+  CHECK(max_leaf <= static_cast<std::size_t>(kBvhMaxLeafSize));
+}
+
+TEST_CASE("BVH build with identical primitives terminates and keeps them all", "[bvh]") {
+  std::vector<AABB> boxes(100, AABB{Vec3(0), Vec3(1)});
+  BVH bvh = build_bvh(boxes);
+  std::size_t total = 0;
+  for (const BVHNode& n : bvh.nodes) total += n.count;
+  CHECK(total == boxes.size());
+}

@@ -1,0 +1,289 @@
+// Whole renders of small scenes: determinism whatever the thread count, seeds, NaN guards,
+// statistics, AOVs, and render errors.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <catch2/catch.hpp>
+
+#include "render/image.hpp"
+#include "render/renderer.hpp"
+#include "scene_fixture.hpp"
+
+using namespace rts::render;
+using namespace rts::render::test;
+
+namespace {
+
+// Exercises every sampled dimension: stratified AA, an area light, glossy reflection, depth of
+// field, refraction.
+SceneDesc sampled_scene() {
+  SceneDesc s;
+  s.settings.width = 40;
+  s.settings.height = 30;
+  s.settings.samples = 4;
+  s.settings.seed = 7;
+  s.has_camera = true;
+  s.camera.position = Vec3(0, 1, -6);
+  s.camera.look_at = Vec3(0, 0.5, 0);
+  s.camera.aperture = 0.2;
+  MaterialDesc floor;
+  floor.color = Color(0.7, 0.6, 0.5);
+  floor.reflect = Color(0.3);
+  floor.roughness = 0.2;
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, floor)));
+  MaterialDesc glass;
+  glass.transmit = Color(0.9);
+  glass.ior = 1.5;
+  glass.fresnel = true;
+  glass.diffuse = 0.1;
+  place(s, add_shape(s, Sphere{Vec3(0, 1, 0), 1.0}, add_material(s, glass)));
+  MaterialDesc red;
+  red.color = Color(0.9, 0.1, 0.1);
+  red.specular = 0.5;
+  place(s, add_shape(s, Box{Vec3(-0.5), Vec3(0.5)}, add_material(s, red)),
+        translate(Vec3(2, 0.5, 1)) * rotate_deg(30, Vec3(0, 1, 0)));
+  place(s, add_shape(s, Cylinder{Vec3(0), Vec3(0, 1.5, 0), 0.3, true}), translate(Vec3(-2, 0, 1)));
+  LightDesc area;
+  area.kind = LightKind::Area;
+  area.position = Vec3(0, 6, -2);
+  area.u = Vec3(2, 0, 0);
+  area.v = Vec3(0, 0, 2);
+  area.samples = 4;
+  place(s, add_light(s, area));
+  return s;
+}
+
+RenderResult render_with(const SceneDesc& s, int threads, std::optional<uint64_t> seed = {}) {
+  RenderOptions o;
+  o.threads = threads;
+  o.seed = seed;
+  return render(s, o);
+}
+
+bool all_finite(const Image& img) {
+  for (float v : img.rgb)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("the image is identical whatever the thread count", "[render]") {
+  SceneDesc s = sampled_scene();
+  RenderResult one = render_with(s, 1), two = render_with(s, 2), four = render_with(s, 4);
+  CHECK(one.color.rgb == two.color.rgb);
+  CHECK(one.color.rgb == four.color.rgb);
+  CHECK(one.stats.pixels.variance == four.stats.pixels.variance);
+  CHECK(one.stats.rays.total() == four.stats.rays.total());
+}
+
+TEST_CASE("a different seed gives a different image; the same seed the same", "[render]") {
+  SceneDesc s = sampled_scene();
+  RenderResult a = render_with(s, 2), b = render_with(s, 2, 8), c = render_with(s, 2, 7);
+  CHECK(a.color.rgb != b.color.rgb);
+  CHECK(a.color.rgb == c.color.rgb);  // settings.seed is 7
+}
+
+TEST_CASE("ray counters and per-pixel statistics are filled in", "[render]") {
+  SceneDesc s = sampled_scene();
+  RenderResult r = render_with(s, 2);
+  const RenderStats& st = r.stats;
+  CHECK(st.rays.camera == 40u * 30u * 4u);
+  CHECK(st.rays.shadow > 0);
+  CHECK(st.rays.reflection > 0);
+  CHECK(st.rays.refraction > 0);
+  CHECK(st.rays.nan_samples == 0);
+  CHECK(st.pixels.mean.size() == 40u * 30u);
+  CHECK(st.pixels.mean_standard_error() > 0.0);
+  CHECK(st.summary().find("40x30, 4 spp") != std::string::npos);
+}
+
+TEST_CASE("Welford statistics: a flat emitter has zero variance and its luminance as mean", "[render]") {
+  SceneDesc s;
+  s.settings.width = 8;
+  s.settings.height = 8;
+  s.settings.samples = 9;
+  s.settings.background = Color(0.5, 0.5, 0.5);
+  RenderResult r = render_with(s, 1);
+  for (std::size_t i = 0; i < r.stats.pixels.mean.size(); ++i) {
+    CHECK(r.stats.pixels.mean[i] == Approx(0.5));
+    CHECK(r.stats.pixels.variance[i] == Approx(0.0).margin(1e-12));
+  }
+  CHECK(r.stats.pixels.mean_standard_error() == Approx(0.0).margin(1e-9));
+}
+
+TEST_CASE("degenerate geometry never produces NaN pixels", "[render]") {
+  SceneDesc s;
+  s.settings.width = 24;
+  s.settings.height = 24;
+  s.settings.samples = 4;
+  s.has_camera = true;
+  s.camera.position = Vec3(0, 0, -4);
+  MaterialDesc shiny;
+  shiny.reflect = Color(0.5);
+  shiny.transmit = Color(0.5);
+  shiny.ior = 1.3;
+  shiny.specular = 1.0;
+  shiny.roughness = 0.1;
+  MaterialId m = add_material(s, shiny);
+  place(s, add_shape(s, triangle(Vec3(0), Vec3(1, 1, 0), Vec3(2, 2, 0)), m));        // zero area
+  place(s, add_shape(s, triangle(Vec3(0.5), Vec3(0.5), Vec3(0.5)), m));               // a point
+  place(s, add_shape(s, Sphere{Vec3(0), 0.0}, m));                                    // zero radius
+  place(s, add_shape(s, Cylinder{Vec3(0), Vec3(0), 1.0, true}, m));                   // zero length
+  place(s, add_shape(s, Cone{Vec3(0), Vec3(0, 1, 0), 0.0, 0.0, true}, m));            // zero radii
+  place(s, add_shape(s, Disc{Vec3(0), Vec3(0), 1.0, 0.0}, m));                        // no normal
+  place(s, add_shape(s, Plane{Vec3(0), 0.0}, m));                                     // no normal
+  place(s, add_shape(s, Sphere{Vec3(0), 1.0}, m), scale(Vec3(1, 0, 1)));              // flattened
+  place(s, add_shape(s, Box{Vec3(-0.5), Vec3(0.5)}, m), translate(Vec3(1, 0, 0)));
+  auto mesh = std::make_shared<MeshData>();
+  mesh->positions = {{0, 0, 0}, {0, 0, 0}, {1, 0, 0}};
+  mesh->normals = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};  // zero normals
+  mesh->indices = {0, 1, 2, 0, 1, 7};                // degenerate, and out of range
+  s.meshes.push_back(mesh);
+  place(s, add_shape(s, MeshRef{0, true}, m));
+  LightDesc l;
+  l.position = Vec3(0);  // a light inside the geometry, at a degenerate spot
+  l.attenuation = Vec3(0, 0, 0);
+  place(s, add_light(s, l));
+  LightDesc spot;
+  spot.kind = LightKind::Spot;
+  spot.position = Vec3(0, 3, 0);
+  spot.point_at = Vec3(0, 3, 0);  // no direction
+  place(s, add_light(s, spot));
+  RenderResult r = render_with(s, 2);
+  CHECK(all_finite(r.color));
+  CHECK(r.stats.rays.nan_samples == 0);
+}
+
+TEST_CASE("AOVs: normal, depth and albedo images", "[render]") {
+  SceneDesc s;
+  s.settings.width = 16;
+  s.settings.height = 16;
+  s.has_camera = true;
+  s.camera.position = Vec3(0, 0, -5);
+  s.camera.fov = 30;
+  MaterialDesc m;
+  m.color = Color(0.25, 0.5, 0.75);
+  place(s, add_shape(s, Sphere{Vec3(0), 1.0}, add_material(s, m)));
+  RenderOptions o;
+  o.aovs = {"normal", "depth", "albedo"};
+  RenderResult r = render(s, o);
+  REQUIRE(r.aovs.count("normal"));
+  REQUIRE(r.aovs.count("depth"));
+  REQUIRE(r.aovs.count("albedo"));
+  const float* centre_n = r.aovs["normal"].at(8, 8);
+  CHECK(centre_n[2] < 0.1f);   // facing the camera: n ~ (0,0,-1) → blue ~ 0
+  CHECK(centre_n[0] == Approx(0.5).margin(0.1));
+  const float* corner_d = r.aovs["depth"].at(0, 0);
+  CHECK(corner_d[0] == 0.0f);  // background
+  float centre_d = r.aovs["depth"].at(8, 8)[0];
+  CHECK(centre_d > 0.0f);
+  CHECK(centre_d <= 1.0f);
+  float max_d = 0;
+  for (float v : r.aovs["depth"].rgb) max_d = std::max(max_d, v);
+  CHECK(max_d == 1.0f);  // normalised by the farthest finite depth
+  CHECK(r.aovs["albedo"].at(8, 8)[1] == Approx(0.5));
+}
+
+TEST_CASE("render errors: oversize image, bad settings, unknown AOV", "[render]") {
+  static const char* kFile = "scene.rts";
+  SceneDesc s;
+  s.settings.loc = SourceRef{kFile, 3, 1};
+  RenderOptions o;
+  o.width = 2000;
+  o.height = 2000;
+  o.max_pixels = 1'000'000;
+  try {
+    render(s, o);
+    FAIL("expected a RenderError");
+  } catch (const RenderError& e) {
+    CHECK(std::string(e.what()).find("exceeds the limit") != std::string::npos);
+    CHECK(e.where.line == 3);
+  }
+  RenderOptions zero;
+  zero.width = 0;
+  CHECK_THROWS_AS(render(s, zero), RenderError);
+  RenderOptions aov;
+  aov.width = aov.height = 4;
+  aov.aovs = {"bogus"};
+  CHECK_THROWS_AS(render(s, aov), RenderError);
+}
+
+TEST_CASE("an unreadable texture image is a located render error", "[render]") {
+  static const char* kFile = "tex.rts";
+  SceneDesc s;
+  s.settings.width = s.settings.height = 4;
+  TextureDesc t;
+  t.kind = TextureKind::Image;
+  t.image_path = "/nonexistent/texture.png";
+  t.loc = SourceRef{kFile, 7, 5};
+  s.textures.push_back(t);
+  MaterialDesc m;
+  m.texture = 0;
+  place(s, add_shape(s, Sphere{}, add_material(s, m)));
+  try {
+    render(s, RenderOptions{});
+    FAIL("expected a RenderError");
+  } catch (const RenderError& e) {
+    CHECK(e.where.line == 7);
+    CHECK(std::string(e.where.file) == kFile);
+  }
+}
+
+TEST_CASE("textures color the surface: checker on a plane", "[render]") {
+  SceneDesc s;
+  s.settings.width = 32;
+  s.settings.height = 32;
+  s.has_camera = true;
+  s.camera.projection = Projection::Orthographic;
+  s.camera.position = Vec3(0, 5, 0);
+  s.camera.look_at = Vec3(0, 0, 0);
+  s.camera.up = Vec3(0, 0, 1);
+  s.camera.view_width = 4;
+  TextureDesc t;
+  t.kind = TextureKind::Checker;
+  t.color1 = Color(1, 0, 0);
+  t.color2 = Color(0, 0, 1);
+  t.scale = 1.0;
+  s.textures.push_back(t);
+  MaterialDesc m = emissive(Color(0));
+  m.ambient = 1;
+  m.texture = 0;
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, m)));
+  RenderResult r = render(s, RenderOptions{});
+  // Neighbouring cells (one unit = 8 pixels apart) have opposite colors.
+  const float* a = r.color.at(4, 4);
+  const float* b = r.color.at(12, 4);
+  CHECK((a[0] > 0.5f) != (b[0] > 0.5f));
+  CHECK((a[2] > 0.5f) != (b[2] > 0.5f));
+}
+
+TEST_CASE("write_png replaces a file only when the write succeeds", "[render]") {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / "rts_render_atomic_test";
+  fs::create_directories(dir);
+  fs::path out = dir / "out.png";
+  {
+    std::ofstream(out) << "old contents";
+  }
+  Image img(4, 4);
+  // An unsupported bit depth fails: the old file must be untouched, no temp file left.
+  CHECK_THROWS_AS(write_png(out.string(), img, 12), RenderError);
+  std::ifstream in(out);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text == "old contents");
+  int files = 0;
+  for ([[maybe_unused]] auto& e : fs::directory_iterator(dir)) ++files;
+  CHECK(files == 1);
+  // Into a missing directory: an error, nothing created.
+  CHECK_THROWS_AS(write_png((dir / "missing" / "x.png").string(), img), RenderError);
+  CHECK_FALSE(fs::exists(dir / "missing"));
+  // A successful write replaces it with a PNG of the right size.
+  write_png(out.string(), img, 8);
+  Image back = read_png(out.string());
+  CHECK(back.width == 4);
+  fs::remove_all(dir);
+}

@@ -1,0 +1,138 @@
+// Shading building blocks: Snell refraction, Schlick, light attenuation and falloff, and the
+// camera's conventions.
+#include <cmath>
+#include <numbers>
+
+#include <catch2/catch.hpp>
+
+#include "render/camera.hpp"
+#include "render/integrator.hpp"
+#include "render/lights.hpp"
+
+using namespace rts::render;
+
+TEST_CASE("refract obeys Snell's law", "[shading]") {
+  double theta = 30.0 * std::numbers::pi / 180.0;
+  Vec3 incident(std::sin(theta), -std::cos(theta), 0);
+  Vec3 out;
+  REQUIRE(refract(incident, Vec3(0, 1, 0), 1.0 / 1.5, out));
+  double sin_t = out.x;  // |out| = 1
+  CHECK(glm::length(out) == Approx(1.0));
+  CHECK(sin_t == Approx(std::sin(theta) / 1.5));
+  CHECK(out.y < 0);
+}
+
+TEST_CASE("refract reports total internal reflection past the critical angle", "[shading]") {
+  double critical = std::asin(1.0 / 1.5);
+  Vec3 n(0, 1, 0), out;
+  double above = critical + 0.01, below = critical - 0.01;
+  CHECK_FALSE(refract(Vec3(std::sin(above), -std::cos(above), 0), n, 1.5, out));
+  CHECK(refract(Vec3(std::sin(below), -std::cos(below), 0), n, 1.5, out));
+}
+
+TEST_CASE("Schlick: f0 at normal incidence, 1 at grazing", "[shading]") {
+  CHECK(schlick(1.0, 0.04) == Approx(0.04));
+  CHECK(schlick(0.0, 0.04) == Approx(1.0));
+  CHECK(schlick(0.5, 0.04) > 0.04);
+}
+
+TEST_CASE("attenuation 1/(c + l d + q d^2)", "[shading]") {
+  CHECK(attenuation_factor(Vec3(1, 0, 0), 7.0) == Approx(1.0));
+  CHECK(attenuation_factor(Vec3(0, 0, 1), 2.0) == Approx(0.25));
+  CHECK(attenuation_factor(Vec3(1, 1, 1), 2.0) == Approx(1.0 / 7.0));
+  CHECK(attenuation_factor(Vec3(0, 0, 0), 2.0) == 0.0);  // guarded, not inf
+}
+
+TEST_CASE("spot light: full inside radius, zero past falloff, smooth between", "[shading]") {
+  LightDesc d;
+  d.kind = LightKind::Spot;
+  d.position = Vec3(0, 10, 0);
+  d.point_at = Vec3(0, 0, 0);
+  d.radius = 10;
+  d.falloff = 20;
+  CompiledLight l = compile_lights({d})[0];
+  auto at_angle = [&](double deg) {
+    double a = deg * std::numbers::pi / 180.0;
+    Vec3 p = d.position + Vec3(std::sin(a), -std::cos(a), 0) * 10.0;
+    return sample_light(l, p, 0, glm::dvec2(0.5), 0).radiance.x;
+  };
+  CHECK(at_angle(0) == Approx(1.0));
+  CHECK(at_angle(9) == Approx(1.0));
+  CHECK(at_angle(21) == 0.0);
+  double mid = at_angle(15);
+  CHECK(mid > 0.0);
+  CHECK(mid < 1.0);
+  CHECK(at_angle(12) > at_angle(18));
+}
+
+TEST_CASE("directional light: no attenuation, direction reversed", "[shading]") {
+  LightDesc d;
+  d.kind = LightKind::Directional;
+  d.direction = Vec3(0, -2, 0);
+  d.intensity = 3;
+  d.attenuation = Vec3(0, 0, 1);
+  CompiledLight l = compile_lights({d})[0];
+  LightSample s = sample_light(l, Vec3(100, -50, 3), 0, glm::dvec2(0.5), 0);
+  CHECK(s.radiance.x == Approx(3.0));
+  CHECK(s.direction.y == Approx(1.0));
+  CHECK(std::isinf(s.distance));
+}
+
+TEST_CASE("area light samples lie on the rectangle and split the power", "[shading]") {
+  LightDesc d;
+  d.kind = LightKind::Area;
+  d.position = Vec3(0, 5, 0);
+  d.u = Vec3(2, 0, 0);
+  d.v = Vec3(0, 0, 4);
+  d.samples = 9;
+  CompiledLight l = compile_lights({d})[0];
+  double total = 0;
+  for (int i = 0; i < 9; ++i) {
+    LightSample s = sample_light(l, Vec3(0), i, glm::dvec2(0.3, 0.7), 99);
+    Vec3 p = s.direction * s.distance;
+    CHECK(p.y == Approx(5.0));
+    CHECK(std::abs(p.x) <= 1.0);
+    CHECK(std::abs(p.z) <= 2.0);
+    total += s.radiance.x;
+  }
+  CHECK(total == Approx(1.0));
+}
+
+TEST_CASE("camera: left-handed view, +x to the right, +y up", "[shading]") {
+  CameraDesc c;
+  c.position = Vec3(0, 0, -5);
+  c.look_at = Vec3(0);
+  c.fov = 90;
+  Camera cam(c, 200, 100);
+  Ray right = cam.generate(200, 50, glm::dvec2(0.5));  // right edge, middle row
+  CHECK(right.direction.x > 0);
+  CHECK(right.direction.x == Approx(right.direction.z));  // 45 degrees: fov 90
+  Ray top = cam.generate(100, 0, glm::dvec2(0.5));
+  CHECK(top.direction.y > 0);
+  CHECK(top.direction.y / top.direction.z == Approx(0.5));  // aspect 2:1
+}
+
+TEST_CASE("orthographic camera: parallel rays over view_width", "[shading]") {
+  CameraDesc c;
+  c.projection = Projection::Orthographic;
+  c.position = Vec3(0, 0, -5);
+  c.view_width = 4;
+  Camera cam(c, 100, 100);
+  Ray left = cam.generate(0, 50, glm::dvec2(0.5));
+  CHECK(left.origin.x == Approx(-2.0));
+  CHECK(left.direction.z == Approx(1.0));
+}
+
+TEST_CASE("depth of field: every lens sample converges on the focal plane", "[shading]") {
+  CameraDesc c;
+  c.position = Vec3(0, 0, -5);
+  c.aperture = 0.5;
+  c.focus_distance = 5;
+  Camera cam(c, 64, 64);
+  Ray a = cam.generate(10, 20, glm::dvec2(0.1, 0.9)), b = cam.generate(10, 20, glm::dvec2(0.8, 0.2));
+  CHECK(a.origin != b.origin);
+  double ta = 5.0 / a.direction.z, tb = 5.0 / b.direction.z;  // both reach z = 0
+  Vec3 pa = a.at(ta), pb = b.at(tb);
+  CHECK(pa.x == Approx(pb.x).margin(1e-9));
+  CHECK(pa.y == Approx(pb.y).margin(1e-9));
+}

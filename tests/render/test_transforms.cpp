@@ -1,0 +1,140 @@
+// The World: scene-graph flattening, transformed instances (object-space intersection with the
+// inverse matrix, normals by the inverse transpose), shared meshes.
+#include <memory>
+
+#include <catch2/catch.hpp>
+
+#include "render/flatten.hpp"
+#include "render/world.hpp"
+#include "scene_fixture.hpp"
+
+using namespace rts::render;
+using namespace rts::render::test;
+
+namespace {
+World make_world(const SceneDesc& s) { return World(s, flatten_scene(s)); }
+void check_vec(const Vec3& a, const Vec3& b, double eps = 1e-9) {
+  CHECK(a.x == Approx(b.x).margin(eps));
+  CHECK(a.y == Approx(b.y).margin(eps));
+  CHECK(a.z == Approx(b.z).margin(eps));
+}
+}  // namespace
+
+TEST_CASE("translated and scaled sphere is hit where the transform puts it", "[transforms]") {
+  SceneDesc s;
+  place(s, add_shape(s, Sphere{Vec3(0), 1.0}), translate(Vec3(0, 0, 10)) * scale(Vec3(2)));
+  World w = make_world(s);
+  WorldHit h;
+  REQUIRE(w.intersect(Ray{Vec3(0), Vec3(0, 0, 1)}, Interval::positive(), h));
+  CHECK(h.t == Approx(8.0));
+  check_vec(h.point, Vec3(0, 0, 8));
+  check_vec(h.normal, Vec3(0, 0, -1));
+  check_vec(h.object_point, Vec3(0, 0, -1));
+  CHECK(h.has_uv);  // spherical UVs of the object-space point
+  CHECK(h.uv.y == Approx(0.5));
+}
+
+TEST_CASE("non-uniform scale: normals use the inverse transpose", "[transforms]") {
+  // A sphere squashed to an ellipsoid x^2/4 + y^2 = 1; at (sqrt2, sqrt(1/2)) the true normal
+  // is along the gradient (x/4, y) = (sqrt2/4, sqrt(1/2)).
+  SceneDesc s;
+  place(s, add_shape(s, Sphere{Vec3(0), 1.0}), scale(Vec3(2, 1, 1)));
+  World w = make_world(s);
+  WorldHit h;
+  Vec3 target(std::sqrt(2.0), std::sqrt(0.5), 0);
+  REQUIRE(w.intersect(Ray{target * 3.0, -target}, Interval::positive(), h));
+  check_vec(h.point, target, 1e-9);
+  check_vec(h.normal, glm::normalize(Vec3(std::sqrt(2.0) / 4, std::sqrt(0.5), 0)), 1e-9);
+}
+
+TEST_CASE("rotated box follows POV-Ray's rotate convention", "[transforms]") {
+  // A thin box along +x, rotated 90 degrees about y, lies along -z.
+  SceneDesc s;
+  place(s, add_shape(s, Box{Vec3(0, -0.1, -0.1), Vec3(5, 0.1, 0.1)}), rotate_deg(90, Vec3(0, 1, 0)));
+  World w = make_world(s);
+  WorldHit h;
+  CHECK(w.intersect(Ray{Vec3(0, 5, -3), Vec3(0, -1, 0)}, Interval::positive(), h));
+  CHECK(h.t == Approx(4.9));
+  CHECK_FALSE(w.intersect(Ray{Vec3(3, 5, 0), Vec3(0, -1, 0)}, Interval::positive(), h));
+}
+
+TEST_CASE("groups of groups compose transforms in order", "[transforms]") {
+  SceneDesc s;
+  NodeId ball = add_shape(s, Sphere{Vec3(0), 0.5});
+  NodeId inner = add_group(s, {Child{ball, translate(Vec3(1, 0, 0)), {}}});
+  NodeId outer = add_group(s, {Child{inner, translate(Vec3(0, 2, 0)), {}},
+                               Child{inner, translate(Vec3(0, -2, 0)), {}}});
+  place(s, outer, translate(Vec3(0, 0, 5)));
+  FlatScene flat = flatten_scene(s);
+  REQUIRE(flat.shapes.size() == 2);
+  World w(s, flat);
+  WorldHit h;
+  CHECK(w.intersect(Ray{Vec3(1, 2, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
+  CHECK(h.t == Approx(4.5));
+  CHECK(w.intersect(Ray{Vec3(1, -2, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
+  CHECK_FALSE(w.intersect(Ray{Vec3(0, 2, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
+}
+
+TEST_CASE("a group containing itself is reported, not a stack overflow", "[transforms]") {
+  SceneDesc s;
+  NodeId g = add_group(s, {});
+  s.groups[0].children.push_back(Child{g, Mat4(1.0), {}});
+  place(s, g);
+  CHECK_THROWS_AS(flatten_scene(s), RenderError);
+}
+
+TEST_CASE("lights are moved by their placement", "[transforms]") {
+  SceneDesc s;
+  LightDesc l;
+  l.position = Vec3(1, 0, 0);
+  l.direction = Vec3(1, 0, 0);
+  place(s, add_light(s, l), translate(Vec3(0, 5, 0)) * rotate_deg(90, Vec3(0, 1, 0)));
+  FlatScene flat = flatten_scene(s);
+  REQUIRE(flat.lights.size() == 1);
+  check_vec(flat.lights[0].position, Vec3(0, 5, -1));
+  check_vec(flat.lights[0].direction, Vec3(0, 0, -1));
+}
+
+TEST_CASE("one mesh BVH shared by several instances", "[transforms]") {
+  auto mesh = std::make_shared<MeshData>();
+  mesh->positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  mesh->indices = {0, 1, 2, 0, 2, 3};
+  mesh->uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  SceneDesc s;
+  s.meshes.push_back(mesh);
+  NodeId quad = add_shape(s, MeshRef{0, true});
+  place(s, quad, translate(Vec3(0, 0, 3)));
+  place(s, quad, translate(Vec3(10, 0, 6)));
+  World w = make_world(s);
+  WorldHit h;
+  REQUIRE(w.intersect(Ray{Vec3(0.5, 0.5, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
+  CHECK(h.t == Approx(3.0));
+  CHECK(h.has_uv);
+  CHECK(h.uv.x == Approx(0.75));
+  CHECK(h.uv.y == Approx(0.75));
+  REQUIRE(w.intersect(Ray{Vec3(10.5, -0.5, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
+  CHECK(h.t == Approx(6.0));
+  CHECK_FALSE(w.intersect(Ray{Vec3(5, 0, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
+}
+
+TEST_CASE("scale 0 flattens an instance to nothing instead of NaNs", "[transforms]") {
+  SceneDesc s;
+  place(s, add_shape(s, Sphere{Vec3(0), 1.0}), scale(Vec3(0)));
+  World w = make_world(s);
+  WorldHit h;
+  CHECK_FALSE(w.intersect(Ray{Vec3(0, 0, -5), Vec3(0, 0, 1)}, Interval::positive(), h));
+}
+
+TEST_CASE("planes stay outside the BVH but are hit and occlude", "[transforms]") {
+  SceneDesc s;
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}), translate(Vec3(0, -1, 0)));
+  place(s, add_shape(s, Sphere{Vec3(0), 0.5}));
+  World w = make_world(s);
+  CHECK(w.plane_count() == 1);
+  CHECK(w.instance_count() == 2);
+  WorldHit h;
+  REQUIRE(w.intersect(Ray{Vec3(3, 5, 0), Vec3(0, -1, 0)}, Interval::positive(), h));
+  CHECK(h.t == Approx(6.0));
+  CHECK(w.occluded(Ray{Vec3(3, 5, 0), Vec3(0, -1, 0)}, Interval(0, 10)));
+  CHECK_FALSE(w.occluded(Ray{Vec3(3, 5, 0), Vec3(0, -1, 0)}, Interval(0, 5)));
+}
