@@ -2,7 +2,8 @@
 # Parser benchmark: generates a ~50 MB scene (bench/gen_scene.py, default 640k objects) and
 # the equivalent POV-Ray scene, then times `rts parse --quiet` (the whole process: load,
 # UTF-8 check, parse, AST) and POV-Ray parsing the .pov (+W1 +H1, so the run is its parse
-# plus bounding) in the same run. Prints medians of RUNS runs (default 3).
+# plus bounding; POV-Ray also reports its parse phase alone) in the same run. Prints medians
+# of RUNS runs (default 3): wall time, CPU time, max RSS.
 #
 #   bench/parse.sh [--objects N] [--runs N] [--rts PATH_TO_RTS]
 #
@@ -40,27 +41,29 @@ bytes=$(stat -c %s "$scene")
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
-rts_wall=(); rts_rss=(); pov_wall=(); pov_parse=()
+rts_wall=(); rts_rss=(); rts_cpu=(); pov_wall=(); pov_parse=()
 for ((i = 1; i <= runs; i++)); do
-  /usr/bin/time -f "%e %M" -o "$work/rts.time" "$rts" parse --quiet "$scene"
-  read -r wall rss < "$work/rts.time"
-  rts_wall+=("$wall"); rts_rss+=("$rss")
+  /usr/bin/time -f "%e %M %U %S" -o "$work/rts.time" "$rts" parse --quiet "$scene"
+  read -r wall rss user sys < "$work/rts.time"
+  rts_wall+=("$wall"); rts_rss+=("$rss"); rts_cpu+=("$(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }')")
   /usr/bin/time -f "%e" -o "$work/pov.time" \
-    povray +W1 +H1 -D -GA +GS +V "+I$pov" "+O$work/pov.png" 2> "$work/pov.log" >/dev/null
+    povray +W1 +H1 -D +GS +V "+I$pov" "+O$work/pov.png" 2> "$work/pov.log" >/dev/null
   pov_wall+=("$(cat "$work/pov.time")")
   # POV-Ray's own "Parse Time: ... (12.345 seconds)" line.
   pov_parse+=("$(sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' "$work/pov.log" | head -1)")
-  echo "run $i: rts ${wall}s ${rss}KB | povray ${pov_wall[-1]}s (parse ${pov_parse[-1]}s)" >&2
+  echo "run $i: rts ${wall}s (user ${user}s sys ${sys}s) ${rss}KB | povray ${pov_wall[-1]}s (parse ${pov_parse[-1]}s)" >&2
 done
 
 rw=$(printf '%s\n' "${rts_wall[@]}" | median)
 rr=$(printf '%s\n' "${rts_rss[@]}" | median)
+rc=$(printf '%s\n' "${rts_cpu[@]}" | median)
 pw=$(printf '%s\n' "${pov_wall[@]}" | median)
 pp=$(printf '%s\n' "${pov_parse[@]}" | median)
-awk -v b="$bytes" -v rw="$rw" -v rr="$rr" -v pw="$pw" -v pp="$pp" -v n="$objects" -v runs="$runs" 'BEGIN {
+awk -v b="$bytes" -v rw="$rw" -v rc="$rc" -v rr="$rr" -v pw="$pw" -v pp="$pp" -v n="$objects" -v runs="$runs" 'BEGIN {
   mb = b / 1e6
   printf "scene: %d objects, %.1f MB; medians of %d runs\n", n, mb, runs
   printf "rts parse --quiet : %6.2f s  %6.1f MB/s  max RSS %.0f MB (%.1fx the file)\n", rw, mb / rw, rr / 1024, rr * 1024 / b
+  printf "  its CPU time      : %6.2f s  %6.1f MB/s  (user + sys; the wall time includes waiting on a busy machine)\n", rc, mb / rc
   printf "povray (whole run): %6.2f s  %6.1f MB/s\n", pw, mb / pw
   if (pp > 0) printf "povray parse time : %6.2f s  (its own report)\n", pp
   printf "rts is %.1fx faster than the POV-Ray run", pw / rw

@@ -24,8 +24,7 @@ void add_eval_options(CLI::App& cmd, EvalOptions& opts) {
          [&opts](const std::vector<std::string>& texts) {
            for (const std::string& t : texts) {
              Define d;
-             if (!parse_define(t, d))
-               throw CLI::ValidationError("--define", "expected NAME=VALUE, got '" + t + "'");
+             if (!parse_define(t, d)) throw CLI::ValidationError("--define", "expected NAME=VALUE, got '" + t + "'");
              opts.defines.push_back(d);
            }
          },

@@ -53,9 +53,16 @@ std::string aov_path(const std::string& out, const std::string& name) {
 
 // Fails early (before spending time rendering) when the output folder cannot take the file.
 void check_output_writable(const std::string& out) {
+  std::error_code ec;
+  fs::file_status st = fs::status(out, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st)) {
+    // A device or pipe (-o /dev/stdout): written in place, so it must itself be writable.
+    if (access(out.c_str(), W_OK) != 0)
+      throw render::RenderError({}, fmt::format("cannot write '{}': not writable", out));
+    return;
+  }
   fs::path dir = fs::path(out).parent_path();
   if (dir.empty()) dir = ".";
-  std::error_code ec;
   if (!fs::is_directory(dir, ec))
     throw render::RenderError({}, fmt::format("cannot write '{}': directory '{}' does not exist", out, dir.string()));
   if (access(dir.c_str(), W_OK) != 0)

@@ -386,8 +386,9 @@ void build_let(ParseState& st, SourceLoc loc) {
 void build_assign(ParseState& st) {
   Sized<ExprPtr> value = pop_expr(st);
   NamePiece name = pop_name(st);
-  push_stmt(st, std::make_unique<AssignStmt>(name.loc, name.name, st.assign_op, std::move(value.node)),
-            value.height + 1);
+  AssignOp op = st.assign_ops.back();
+  st.assign_ops.pop_back();
+  push_stmt(st, std::make_unique<AssignStmt>(name.loc, name.name, op, std::move(value.node)), value.height + 1);
 }
 
 void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {

@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "grammar/lexical.hpp"
 #include "parser/ast.hpp"
 #include "parser/diagnostics.hpp"
 #include "parser/parser.hpp"
@@ -68,7 +69,10 @@ struct ParseState {
   bool has_else = false;
   bool has_default = false;
   bool has_return_value = false;
-  ast::AssignOp assign_op = ast::AssignOp::Set;
+  ast::AssignOp assign_op = ast::AssignOp::Set;  // the operator just matched
+  // Operators of the assignments whose value is being parsed (the value may itself hold an
+  // assignment, inside a block's if body).
+  std::vector<ast::AssignOp> assign_ops;
   std::string_view string_body;  // raw text between the quotes of the last string
   SourceLoc string_body_loc;
   std::string include_path;
@@ -91,9 +95,7 @@ struct ParseState {
 // The identifier at the start of a matched rule (rules include the whitespace after them).
 inline std::string_view word_at(const char* begin, const char* end) {
   const char* p = begin;
-  while (p != end && ((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
-                      (*p >= '0' && *p <= '9') || *p == '_'))
-    ++p;
+  while (p != end && grammar::is_ident_char(*p)) ++p;
   return {begin, static_cast<std::size_t>(p - begin)};
 }
 

@@ -49,7 +49,7 @@ struct RayInverse {
 // Slab test: does the ray overlap the box within ray_t? A zero direction component gives an
 // infinite reciprocal; the comparisons below are written so that a NaN (0 * inf, origin on a
 // slab plane) leaves the range unchanged instead of rejecting or accepting by accident.
-inline bool slab_hit(const AABB& b, const RayInverse& r, const Interval& ray_t) {
+inline bool slab_hit(const AABB& b, const RayInverse& r, const Interval& ray_t, double& t_entry) {
   double t0 = ray_t.min, t1 = ray_t.max;
   for (int a = 0; a < 3; ++a) {
     double ta = (b.lo[a] - r.origin[a]) * r.inv_dir[a];
@@ -57,9 +57,14 @@ inline bool slab_hit(const AABB& b, const RayInverse& r, const Interval& ray_t) 
     if (ta > tb) std::swap(ta, tb);
     t0 = ta > t0 ? ta : t0;
     t1 = tb < t1 ? tb : t1;
-    if (t0 > t1) return false;
   }
-  return true;
+  t_entry = t0;
+  return t0 <= t1;
+}
+
+inline bool slab_hit(const AABB& b, const RayInverse& r, const Interval& ray_t) {
+  double t_entry;
+  return slab_hit(b, r, ray_t, t_entry);
 }
 
 }  // namespace rts::render

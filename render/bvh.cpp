@@ -1,18 +1,39 @@
 #include "render/bvh.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace rts::render {
+
+void BVHNode::set_bounds(const AABB& b) {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    float l = static_cast<float>(b.lo[a]), h = static_cast<float>(b.hi[a]);
+    if (static_cast<double>(l) > b.lo[a]) l = std::nextafter(l, -kInf);  // round outwards
+    if (static_cast<double>(h) < b.hi[a]) h = std::nextafter(h, kInf);
+    lo[a] = l;
+    hi[a] = h;
+  }
+}
+
 namespace {
 
 // Relative costs for the surface area heuristic: one box test vs one primitive test.
 constexpr double kTraversalCost = 1.0;
 constexpr double kIntersectCost = 1.0;
 
+// A primitive as the builder sees it; partitioned in place so that every pass over a node's
+// range reads memory sequentially.
+struct PrimRef {
+  AABB box;
+  Vec3 centroid;
+  uint32_t index;
+};
+
 struct Builder {
-  const std::vector<AABB>& boxes;
-  std::vector<Vec3> centroids;
+  std::vector<PrimRef>& refs;
   BVH& out;
 
   uint32_t build(uint32_t begin, uint32_t end, int depth) {
@@ -20,37 +41,45 @@ struct Builder {
     out.nodes.emplace_back();
     AABB bounds, centroid_bounds;
     for (uint32_t i = begin; i < end; ++i) {
-      bounds.extend(boxes[out.order[i]]);
-      centroid_bounds.extend(centroids[out.order[i]]);
+      bounds.extend(refs[i].box);
+      centroid_bounds.extend(refs[i].centroid);
     }
-    out.nodes[index].bounds = bounds;
+    out.nodes[index].set_bounds(bounds);
     uint32_t count = end - begin;
     auto make_leaf = [&] {
       out.nodes[index].offset = begin;
-      out.nodes[index].count = count;
+      out.nodes[index].count = static_cast<uint16_t>(count);
       return index;
     };
-    if (count <= 1 || depth >= kBvhMaxDepth) return make_leaf();
+    if (count <= 1 || (depth >= kBvhMaxDepth && count <= kBvhMaxLeafCount)) return make_leaf();
 
     Vec3 extent = centroid_bounds.extent();
     int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    auto first = refs.begin() + begin, last = refs.begin() + end;
     uint32_t mid;
-    if (!(extent[axis] > 0.0)) {
-      // All centroids coincide: SAH cannot separate them; split in the middle if too many.
-      if (count <= kBvhMaxLeafSize) return make_leaf();
+    auto split_in_middle = [&] {
       mid = begin + count / 2;
+      std::nth_element(first, refs.begin() + mid, last, [axis](const PrimRef& a, const PrimRef& b) {
+        return a.centroid[axis] < b.centroid[axis];
+      });
+    };
+    if (!(extent[axis] > 0.0) || depth >= kBvhMaxDepth) {
+      // All centroids coincide (SAH cannot separate them), or the tree is too deep: split in
+      // the middle if there are too many for one leaf.
+      if (count <= kBvhMaxLeafSize) return make_leaf();
+      split_in_middle();
     } else {
       // Binned SAH along the widest centroid axis.
       struct Bin { AABB box; uint32_t n = 0; } bins[kBvhBins];
       double lo = centroid_bounds.lo[axis];
       double scale = kBvhBins / extent[axis];
-      auto bin_of = [&](uint32_t prim) {
-        int b = static_cast<int>((centroids[prim][axis] - lo) * scale);
+      auto bin_of = [&](const PrimRef& p) {
+        int b = static_cast<int>((p.centroid[axis] - lo) * scale);
         return std::clamp(b, 0, kBvhBins - 1);
       };
       for (uint32_t i = begin; i < end; ++i) {
-        Bin& b = bins[bin_of(out.order[i])];
-        b.box.extend(boxes[out.order[i]]);
+        Bin& b = bins[bin_of(refs[i])];
+        b.box.extend(refs[i].box);
         ++b.n;
       }
       double right_area[kBvhBins];
@@ -84,13 +113,10 @@ struct Builder {
       double leaf_cost = kIntersectCost * count;
       if (best_split < 0 || (count <= kBvhMaxLeafSize && split_cost >= leaf_cost)) {
         if (count <= kBvhMaxLeafSize) return make_leaf();
-        mid = begin + count / 2;
-        std::nth_element(out.order.begin() + begin, out.order.begin() + mid, out.order.begin() + end,
-                         [&](uint32_t a, uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
+        split_in_middle();
       } else {
-        auto it = std::partition(out.order.begin() + begin, out.order.begin() + end,
-                                 [&](uint32_t p) { return bin_of(p) <= best_split; });
-        mid = static_cast<uint32_t>(it - out.order.begin());
+        auto it = std::partition(first, last, [&](const PrimRef& p) { return bin_of(p) <= best_split; });
+        mid = static_cast<uint32_t>(it - refs.begin());
       }
     }
     if (mid == begin || mid == end) mid = begin + count / 2;
@@ -108,13 +134,15 @@ struct Builder {
 BVH build_bvh(const std::vector<AABB>& primitive_bounds) {
   BVH bvh;
   if (primitive_bounds.empty()) return bvh;
-  bvh.order.resize(primitive_bounds.size());
-  std::iota(bvh.order.begin(), bvh.order.end(), 0u);
+  std::vector<PrimRef> refs(primitive_bounds.size());
+  for (std::size_t i = 0; i < refs.size(); ++i)
+    refs[i] = PrimRef{primitive_bounds[i], primitive_bounds[i].centroid(), static_cast<uint32_t>(i)};
   bvh.nodes.reserve(primitive_bounds.size() * 2);
-  Builder builder{primitive_bounds, {}, bvh};
-  builder.centroids.reserve(primitive_bounds.size());
-  for (const AABB& b : primitive_bounds) builder.centroids.push_back(b.centroid());
-  builder.build(0, static_cast<uint32_t>(primitive_bounds.size()), 0);
+  Builder builder{refs, bvh};
+  builder.build(0, static_cast<uint32_t>(refs.size()), 0);
+  bvh.nodes.shrink_to_fit();
+  bvh.order.resize(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i) bvh.order[i] = refs[i].index;
   return bvh;
 }
 

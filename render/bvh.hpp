@@ -12,11 +12,18 @@
 
 namespace rts::render {
 
+// 32 bytes: two nodes per cache line. Bounds are stored as float, rounded outwards so they
+// still enclose their primitives; the slab test itself runs in double.
 struct BVHNode {
-  AABB bounds;
-  uint32_t offset = 0;  // leaf: first index into `order`; interior: index of the right child
-  uint32_t count = 0;   // leaf: number of primitives; 0 marks an interior node
+  float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  uint32_t offset = 0;  // leaf: first slot in `order`; interior: index of the right child
+  uint16_t count = 0;   // leaf: number of primitives; 0 marks an interior node
   uint8_t axis = 0;     // interior: the split axis
+
+  void set_bounds(const AABB& b);
+  AABB bounds() const {
+    return AABB{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])};
+  }
 };
 
 struct BVH {
@@ -27,46 +34,62 @@ struct BVH {
 
 inline constexpr int kBvhBins = 16;
 inline constexpr int kBvhMaxLeafSize = 4;
-inline constexpr int kBvhMaxDepth = 60;        // below the traversal stack size
-inline constexpr int kBvhTraversalStack = 64;
+inline constexpr int kBvhMaxLeafCount = 65535;  // BVHNode::count's range
+inline constexpr int kBvhMaxDepth = 64;         // deeper: forced median splits (< 32 more)
+inline constexpr int kBvhTraversalStack = 128;  // > the deepest possible tree
 
 BVH build_bvh(const std::vector<AABB>& primitive_bounds);
 
-// Visits the leaves a ray may hit, nearest side first. `leaf(prim, ray_t)` tests one
-// primitive, shrinking ray_t.max on a hit and returning true; with `any_hit` the traversal
-// stops at the first hit (shadow rays).
+// Visits the leaves a ray may hit, nearest child first (both children's boxes are tested at
+// their parent; the farther one waits on the stack with its entry distance and is skipped if
+// a closer hit has been found meanwhile). `leaf(slot, ray_t)` tests the primitive at position
+// `slot` of bvh.order (callers may keep per-slot data in leaf order), shrinking ray_t.max on a
+// hit and returning true; with `any_hit` the traversal stops at the first hit (shadow rays).
 template <bool any_hit, class LeafFn>
 bool traverse_bvh(const BVH& bvh, const Ray& ray, Interval& ray_t, LeafFn&& leaf) {
   if (bvh.nodes.empty()) return false;
   RayInverse inv(ray.origin, ray.direction);
-  bool dir_negative[3] = {ray.direction.x < 0, ray.direction.y < 0, ray.direction.z < 0};
-  uint32_t stack[kBvhTraversalStack];
+  if (!slab_hit(bvh.nodes[0].bounds(), inv, ray_t)) return false;
+  struct Pending {
+    uint32_t node;
+    double t_entry;
+  };
+  Pending stack[kBvhTraversalStack];
   int top = 0;
   uint32_t node_index = 0;
   bool hit = false;
   while (true) {
     const BVHNode& node = bvh.nodes[node_index];
-    if (slab_hit(node.bounds, inv, ray_t)) {
-      if (node.count > 0) {
-        for (uint32_t i = 0; i < node.count; ++i) {
-          if (leaf(bvh.order[node.offset + i], ray_t)) {
-            hit = true;
-            if constexpr (any_hit) return true;
-          }
+    if (node.count > 0) {
+      for (uint32_t i = 0; i < node.count; ++i) {
+        if (leaf(node.offset + i, ray_t)) {
+          hit = true;
+          if constexpr (any_hit) return true;
         }
-        if (top == 0) break;
-        node_index = stack[--top];
-      } else if (dir_negative[node.axis]) {
-        stack[top++] = node_index + 1;
-        node_index = node.offset;
-      } else {
-        stack[top++] = node.offset;
-        node_index = node_index + 1;
       }
     } else {
-      if (top == 0) break;
-      node_index = stack[--top];
+      uint32_t left = node_index + 1, right = node.offset;
+      double t_left, t_right;
+      bool hit_left = slab_hit(bvh.nodes[left].bounds(), inv, ray_t, t_left);
+      bool hit_right = slab_hit(bvh.nodes[right].bounds(), inv, ray_t, t_right);
+      if (hit_left && hit_right) {
+        if (t_right < t_left) {
+          std::swap(left, right);
+          std::swap(t_left, t_right);
+        }
+        stack[top++] = Pending{right, t_right};
+        node_index = left;
+        continue;
+      }
+      if (hit_left || hit_right) {
+        node_index = hit_left ? left : right;
+        continue;
+      }
     }
+    // Next pending subtree that can still hold a closer hit.
+    while (top > 0 && stack[top - 1].t_entry > ray_t.max) --top;
+    if (top == 0) break;
+    node_index = stack[--top].node;
   }
   return hit;
 }

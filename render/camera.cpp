@@ -32,9 +32,9 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
   forward_ = glm::length(fwd) > tol::kTinyLength ? glm::normalize(fwd) : Vec3(0, 0, 1);
   Vec3 up = glm::length(desc.up) > tol::kTinyLength ? desc.up : Vec3(0, 1, 0);
   Vec3 right = glm::cross(up, forward_);
-  if (glm::length(right) <= 1e-12 * glm::length(up)) {
+  if (glm::length(right) <= tol::kParallelVectors * glm::length(up)) {
     // up parallel to forward: pick any up that is not.
-    right = glm::cross(std::abs(forward_.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(0, 0, 1), forward_);
+    right = glm::cross(std::abs(forward_.y) < tol::kReferenceAxisCosine ? Vec3(0, 1, 0) : Vec3(0, 0, 1), forward_);
   }
   right_ = glm::normalize(right);
   up_ = glm::cross(forward_, right_);

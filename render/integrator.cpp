@@ -111,9 +111,21 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
   Rgb sum(0.0);
   for (const CompiledLight& light : lights_) {
     uint32_t perm = sampler.next_bits();
+    bool area = light.kind == LightKind::Area;
+    uint32_t col = 0, row = 0;  // the grid stratum of sample j, stepped without dividing
     for (int j = 0; j < light.samples; ++j) {
-      glm::dvec2 jitter = light.kind == LightKind::Area ? sampler.next2() : glm::dvec2(0.5);
-      LightSample ls = sample_light(light, hit.point, j, jitter, perm);
+      glm::dvec2 on_light(0.5);
+      if (area) {
+        glm::dvec2 jitter = sampler.next2();
+        if (light.strata_side > 0) {
+          on_light = (glm::dvec2(col, row) + jitter) * light.inv_strata;
+          if (++col == light.strata_side) col = 0, ++row;
+        } else {
+          on_light = stratified_2d(static_cast<uint32_t>(j), static_cast<uint32_t>(light.samples), 0,
+                                   jitter, perm);
+        }
+      }
+      LightSample ls = sample_light(light, hit.point, on_light);
       double n_dot_l = glm::dot(n, ls.direction);
       if (n_dot_l <= 0.0 || is_black(ls.radiance)) continue;
       Rgb shade = m.diffuse * n_dot_l * albedo;

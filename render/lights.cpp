@@ -36,6 +36,11 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     l.v = d.v;
     l.disc = d.disc;
     l.samples = d.kind == LightKind::Area ? std::clamp(d.samples, 1, kMaxAreaSamples) : 1;
+    l.strata_side = square_side(static_cast<uint32_t>(l.samples));
+    l.inv_strata = 1.0 / (l.strata_side > 0 ? l.strata_side : l.samples);
+    l.constant_attenuation = d.attenuation.y == 0.0 && d.attenuation.z == 0.0;
+    l.sample_power = l.power / static_cast<double>(l.samples);
+    if (l.constant_attenuation) l.sample_power *= attenuation_factor(l.attenuation, 0.0);
     l.shadows = d.shadows;
     out.push_back(l);
   }
@@ -53,18 +58,23 @@ double spot_factor(const CompiledLight& l, const Vec3& light_to_point) {
   return t * t * (3.0 - 2.0 * t);
 }
 
+// Radiance arriving from one light sample at `distance`.
+Rgb sample_radiance(const CompiledLight& l, double distance) {
+  return l.constant_attenuation ? l.sample_power
+                                : l.sample_power * attenuation_factor(l.attenuation, distance);
+}
+
 LightSample toward(const Vec3& light_pos, const Vec3& point) {
   LightSample s;
   Vec3 d = light_pos - point;
   s.distance = glm::length(d);
-  s.direction = s.distance > tol::kTinyLength ? d / s.distance : Vec3(0, 1, 0);
+  s.direction = s.distance > tol::kTinyLength ? d * (1.0 / s.distance) : Vec3(0, 1, 0);
   return s;
 }
 
 }  // namespace
 
-LightSample sample_light(const CompiledLight& l, const Vec3& point, int index, glm::dvec2 jitter,
-                         uint32_t perm_seed) {
+LightSample sample_light(const CompiledLight& l, const Vec3& point, glm::dvec2 on_light) {
   switch (l.kind) {
     case LightKind::Directional: {
       LightSample s;
@@ -75,24 +85,29 @@ LightSample sample_light(const CompiledLight& l, const Vec3& point, int index, g
     }
     case LightKind::Point: {
       LightSample s = toward(l.position, point);
-      s.radiance = l.power * attenuation_factor(l.attenuation, s.distance);
+      s.radiance = sample_radiance(l, s.distance);
       return s;
     }
     case LightKind::Spot: {
       LightSample s = toward(l.position, point);
-      s.radiance = l.power * attenuation_factor(l.attenuation, s.distance) * spot_factor(l, -s.direction);
+      s.radiance = sample_radiance(l, s.distance) * spot_factor(l, -s.direction);
       return s;
     }
     case LightKind::Area: {
-      glm::dvec2 u = stratified_2d(static_cast<uint32_t>(index), static_cast<uint32_t>(l.samples),
-                                   jitter, perm_seed);
-      glm::dvec2 p = l.disc ? 0.5 * concentric_disc(u) : u - 0.5;  // both in [-0.5, 0.5]^2
+      glm::dvec2 p = l.disc ? 0.5 * concentric_disc(on_light) : on_light - 0.5;  // in [-0.5, 0.5]^2
       LightSample s = toward(l.position + p.x * l.u + p.y * l.v, point);
-      s.radiance = l.power * (attenuation_factor(l.attenuation, s.distance) / l.samples);
+      s.radiance = sample_radiance(l, s.distance);
       return s;
     }
   }
   return {};
+}
+
+LightSample sample_light(const CompiledLight& l, const Vec3& point, int index, glm::dvec2 jitter,
+                         uint32_t perm_seed) {
+  glm::dvec2 u = stratified_2d(static_cast<uint32_t>(index), static_cast<uint32_t>(l.samples),
+                               l.strata_side, jitter, perm_seed);
+  return sample_light(l, point, u);
 }
 
 }  // namespace rts::render

@@ -25,6 +25,10 @@ struct CompiledLight {
   Vec3 u{1, 0, 0}, v{0, 0, 1};
   bool disc = false;
   int samples = 1;             // shading samples (area lights; 1 otherwise)
+  uint32_t strata_side = 1;    // square_side(samples): grid strata, or 0 for N-rooks
+  double inv_strata = 1.0;     // 1 / strata_side, or 1 / samples for N-rooks
+  bool constant_attenuation = true;  // attenuation = <c, 0, 0>: no distance falloff
+  Rgb sample_power{1.0};       // power / samples, times the attenuation when constant
   bool shadows = true;
 };
 
@@ -39,8 +43,12 @@ inline constexpr int kMaxAreaSamples = 4096;
 
 std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_lights);
 
-// Sample `index` of light.samples towards `point`. `jitter` in [0,1)^2 places an area light's
-// sample within its stratum; `perm_seed` pairs strata when samples is not a square.
+// The light seen from `point` through the light position `on_light` in [0,1)^2 (area lights:
+// across u and v; ignored by the others).
+LightSample sample_light(const CompiledLight& light, const Vec3& point, glm::dvec2 on_light);
+
+// Sample `index` of light.samples: `jitter` in [0,1)^2 places it within its stratum;
+// `perm_seed` pairs strata when samples is not a square.
 LightSample sample_light(const CompiledLight& light, const Vec3& point, int index,
                          glm::dvec2 jitter, uint32_t perm_seed);
 

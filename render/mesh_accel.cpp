@@ -27,7 +27,12 @@ MeshAccel::MeshAccel(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mes
   }
   triangle_count_ = valid.size();
   bvh_ = build_bvh(valid_boxes);
-  for (uint32_t& o : bvh_.order) o = valid[o];  // leaves index triangles directly
+  leaf_vertices_.reserve(bvh_.order.size() * 3);
+  for (uint32_t& o : bvh_.order) {
+    o = valid[o];  // leaves index triangles directly
+    const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(o) * 3];
+    for (int k = 0; k < 3; ++k) leaf_vertices_.push_back(mesh_->positions[idx[k]]);
+  }
 }
 
 void MeshAccel::triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const {
@@ -38,20 +43,20 @@ void MeshAccel::triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const {
 }
 
 bool MeshAccel::intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const {
-  uint32_t best_tri = 0;
+  uint32_t best_slot = 0;
   double best_b1 = 0, best_b2 = 0;
-  bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t tri, Interval& t_range) {
-    Vec3 v0, v1, v2;
-    triangle(tri, v0, v1, v2);
+  bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
+    const glm::vec3* v = &leaf_vertices_[static_cast<std::size_t>(slot) * 3];
     double t, b1, b2;
-    if (!intersect_triangle(v0, v1, v2, ray, t_range, t, b1, b2)) return false;
+    if (!intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), ray, t_range, t, b1, b2)) return false;
     t_range.max = t;
-    best_tri = tri;
+    best_slot = slot;
     best_b1 = b1;
     best_b2 = b2;
     return true;
   });
   if (!found) return false;
+  uint32_t best_tri = bvh_.order[best_slot];
   Vec3 v0, v1, v2;
   triangle(best_tri, v0, v1, v2);
   const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(best_tri) * 3];
@@ -87,11 +92,10 @@ bool MeshAccel::intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool 
 }
 
 bool MeshAccel::occluded(const Ray& ray, Interval ray_t) const {
-  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t tri, Interval& t_range) {
-    Vec3 v0, v1, v2;
-    triangle(tri, v0, v1, v2);
+  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
+    const glm::vec3* v = &leaf_vertices_[static_cast<std::size_t>(slot) * 3];
     double t, b1, b2;
-    return intersect_triangle(v0, v1, v2, ray, t_range, t, b1, b2);
+    return intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), ray, t_range, t, b1, b2);
   });
 }
 

@@ -22,11 +22,14 @@ class MeshAccel {
   bool occluded(const Ray& ray, Interval ray_t) const;
 
  private:
-  void triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const;
+  void triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const;  // by triangle index
 
   std::shared_ptr<const MeshData> mesh_;
   std::size_t triangle_count_ = 0;
-  BVH bvh_;
+  BVH bvh_;                          // its `order` holds triangle indices into mesh_->indices
+  // The vertices of each BVH primitive, 3 per triangle in BVH leaf order: a leaf's triangles
+  // are contiguous in memory instead of three index lookups each.
+  std::vector<glm::vec3> leaf_vertices_;
   AABB bounds_;
 };
 

@@ -132,8 +132,8 @@ std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& s
   std::map<std::tuple<int, int, int>, uint32_t> unified;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     for (const tinyobj::index_t& idx : shape.mesh.indices) {
-      auto key = std::make_tuple(idx.vertex_index, has_normals ? idx.normal_index : -1,
-                                 has_uvs ? idx.texcoord_index : -1);
+      auto key =
+          std::make_tuple(idx.vertex_index, has_normals ? idx.normal_index : -1, has_uvs ? idx.texcoord_index : -1);
       auto [it, inserted] = unified.try_emplace(key, static_cast<uint32_t>(mesh->positions.size()));
       if (inserted) {
         std::size_t v = static_cast<std::size_t>(idx.vertex_index) * 3;
@@ -158,8 +158,7 @@ std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& s
       mesh->indices.push_back(it->second);
     }
   }
-  if (mesh->indices.empty())
-    throw SceneError(where, fmt::format("mesh file '{}' has no faces", shown));
+  if (mesh->indices.empty()) throw SceneError(where, fmt::format("mesh file '{}' has no faces", shown));
   if (!has_normals && smooth) compute_smooth_normals(*mesh);
   return mesh;
 }

@@ -36,9 +36,11 @@ std::string with_article(const char* noun) {
   return fmt::format("{} {}", vowel ? "an" : "a", noun);
 }
 
-// Names differ in length more often than not: compare sizes before bytes.
+// Builders look names up a dozen times per block: reject by length and first letter before
+// comparing bytes.
 inline bool same_name(const std::string& a, std::string_view b) {
-  return a.size() == b.size() && std::char_traits<char>::compare(a.data(), b.data(), b.size()) == 0;
+  return a.size() == b.size() && (b.empty() || a[0] == b[0]) &&
+         std::char_traits<char>::compare(a.data(), b.data(), b.size()) == 0;
 }
 
 }  // namespace
@@ -59,15 +61,24 @@ std::string closest_name(std::string_view word, const std::vector<std::string_vi
 
 const char* param_type_name(const ParamValue& v) {
   switch (v.index()) {
-    case 0: return "number";
-    case 1: return "bool";
-    case 2: return "string";
-    case 3: return "vector";
-    case 4: return "color";
-    case 5: return "texture";
-    case 6: return "material";
-    case 7: return "list of vectors";
-    case 8: return "list of numbers";
+    case 0:
+      return "number";
+    case 1:
+      return "bool";
+    case 2:
+      return "string";
+    case 3:
+      return "vector";
+    case 4:
+      return "color";
+    case 5:
+      return "texture";
+    case 6:
+      return "material";
+    case 7:
+      return "list of vectors";
+    case 8:
+      return "list of numbers";
   }
   return "value";
 }
@@ -103,16 +114,14 @@ const ParamValue* ParamSet::value(std::string_view name) {
   return p ? &p->value : nullptr;
 }
 
-void ParamSet::fail(const Param& p, const std::string& message) const {
-  throw SceneError(p.loc, message);
-}
+void ParamSet::fail(const Param& p, const std::string& message) const { throw SceneError(p.loc, message); }
 
 void ParamSet::fail_block(const std::string& message) const { throw SceneError(loc_, message); }
 
 namespace {
 [[noreturn]] void wrong_type(const ParamSet& ps, const Param& p, const char* expected) {
-  ps.fail(p, fmt::format("property '{}' of {} expects {}, got {}", p.name, ps.kind(),
-                         with_article(expected), with_article(param_type_name(p.value))));
+  ps.fail(p, fmt::format("property '{}' of {} expects {}, got {}", p.name, ps.kind(), with_article(expected),
+                         with_article(param_type_name(p.value))));
 }
 }  // namespace
 

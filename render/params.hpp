@@ -39,6 +39,7 @@ class ParamSet {
       : kind_(std::move(block_kind)), loc_(block_loc) {}
 
   void add(std::string name, ParamValue value, SourceRef loc);  // a later add overrides
+  void reserve(std::size_t n) { params_.reserve(n); }            // capacity for n adds
   const std::string& kind() const { return kind_; }
   SourceRef loc() const { return loc_; }
   const std::vector<Param>& params() const { return params_; }

@@ -38,14 +38,27 @@ inline uint32_t permute(uint32_t i, uint32_t n, uint32_t seed) {
   return (i + seed) % n;
 }
 
-// The i-th of n stratified points in the unit square, jittered by `jitter`: a sqrt(n) x
-// sqrt(n) grid when n is a perfect square, N-rooks (Latin hypercube) otherwise.
-inline glm::dvec2 stratified_2d(uint32_t i, uint32_t n, glm::dvec2 jitter, uint32_t perm_seed) {
+// sqrt(n) when n is a perfect square, else 0 (then strata are N-rooks).
+inline uint32_t square_side(uint32_t n) {
   uint32_t side = static_cast<uint32_t>(std::lround(std::sqrt(static_cast<double>(n))));
-  if (side * side == n) {
-    return {((i % side) + jitter.x) / side, ((i / side) + jitter.y) / side};
+  return side * side == n ? side : 0;
+}
+
+// The i-th of n stratified points in the unit square, jittered by `jitter`: a side x side
+// grid when n is a perfect square (side = square_side(n), precomputed by callers in hot
+// loops), N-rooks (Latin hypercube) otherwise.
+inline glm::dvec2 stratified_2d(uint32_t i, uint32_t n, uint32_t side, glm::dvec2 jitter,
+                                uint32_t perm_seed) {
+  if (side > 0) {
+    double inv = 1.0 / side;
+    return {((i % side) + jitter.x) * inv, ((i / side) + jitter.y) * inv};
   }
-  return {(i + jitter.x) / n, (permute(i, n, perm_seed) + jitter.y) / n};
+  double inv = 1.0 / n;
+  return {(i + jitter.x) * inv, (permute(i, n, perm_seed) + jitter.y) * inv};
+}
+
+inline glm::dvec2 stratified_2d(uint32_t i, uint32_t n, glm::dvec2 jitter, uint32_t perm_seed) {
+  return stratified_2d(i, n, square_side(n), jitter, perm_seed);
 }
 
 class Sampler {

@@ -21,16 +21,26 @@ struct KindInfo {
   BlockCategory category;
 };
 constexpr KindInfo kKinds[] = {
-    {"settings", BlockCategory::Settings},     {"camera", BlockCategory::Camera},
-    {"material", BlockCategory::Material},     {"checker", BlockCategory::Texture},
-    {"stripes", BlockCategory::Texture},       {"gradient", BlockCategory::Texture},
-    {"image_texture", BlockCategory::Texture}, {"sphere", BlockCategory::Shape},
-    {"plane", BlockCategory::Shape},           {"triangle", BlockCategory::Shape},
-    {"box", BlockCategory::Shape},             {"cylinder", BlockCategory::Shape},
-    {"cone", BlockCategory::Shape},            {"disc", BlockCategory::Shape},
-    {"mesh", BlockCategory::Shape},            {"point_light", BlockCategory::Light},
-    {"spot_light", BlockCategory::Light},      {"directional_light", BlockCategory::Light},
-    {"area_light", BlockCategory::Light},      {"group", BlockCategory::Group},
+    {"settings", BlockCategory::Settings},
+    {"camera", BlockCategory::Camera},
+    {"material", BlockCategory::Material},
+    {"checker", BlockCategory::Texture},
+    {"stripes", BlockCategory::Texture},
+    {"gradient", BlockCategory::Texture},
+    {"image_texture", BlockCategory::Texture},
+    {"sphere", BlockCategory::Shape},
+    {"plane", BlockCategory::Shape},
+    {"triangle", BlockCategory::Shape},
+    {"box", BlockCategory::Shape},
+    {"cylinder", BlockCategory::Shape},
+    {"cone", BlockCategory::Shape},
+    {"disc", BlockCategory::Shape},
+    {"mesh", BlockCategory::Shape},
+    {"point_light", BlockCategory::Light},
+    {"spot_light", BlockCategory::Light},
+    {"directional_light", BlockCategory::Light},
+    {"area_light", BlockCategory::Light},
+    {"group", BlockCategory::Group},
 };
 
 // The property names each block kind accepts (for unknown-name checks and suggestions).
@@ -67,8 +77,7 @@ SourceRef loc_of(ParamSet& ps, std::string_view name) {
 // Range checks: "property 'radius' of sphere must be > 0, got -1".
 void require(ParamSet& ps, std::string_view name, bool ok, std::string_view what, double got) {
   if (ok) return;
-  throw SceneError(loc_of(ps, name),
-                   fmt::format("property '{}' of {} must be {}, got {}", name, ps.kind(), what, got));
+  throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be {}, got {}", name, ps.kind(), what, got));
 }
 double positive(ParamSet& ps, std::string_view name, double v) {
   require(ps, name, v > 0, "> 0", v);
@@ -80,14 +89,12 @@ double non_negative(ParamSet& ps, std::string_view name, double v) {
 }
 Vec3 direction(ParamSet& ps, std::string_view name, Vec3 v) {
   if (glm::length(v) < kMinDirectionLength)
-    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be a non-zero vector",
-                                                   name, ps.kind()));
+    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be a non-zero vector", name, ps.kind()));
   return v;
 }
 void non_negative_color(ParamSet& ps, std::string_view name, const Color& c) {
   if (c.r < 0 || c.g < 0 || c.b < 0)
-    throw SceneError(loc_of(ps, name),
-                     fmt::format("property '{}' of {} must not be negative", name, ps.kind()));
+    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must not be negative", name, ps.kind()));
 }
 
 // Texture axis: 0/1/2 or "x"/"y"/"z".
@@ -153,11 +160,14 @@ void SceneBuilder::settings(ParamSet& ps) {
 void SceneBuilder::camera(ParamSet& ps) {
   CameraDesc& c = scene_.camera;
   std::string proj = ps.string("projection", c.projection == Projection::Perspective ? "perspective" : "orthographic");
-  if (proj == "perspective") c.projection = Projection::Perspective;
-  else if (proj == "orthographic") c.projection = Projection::Orthographic;
+  if (proj == "perspective")
+    c.projection = Projection::Perspective;
+  else if (proj == "orthographic")
+    c.projection = Projection::Orthographic;
   else
-    throw SceneError(loc_of(ps, "projection"),
-                     fmt::format("property 'projection' of camera must be \"perspective\" or \"orthographic\", got \"{}\"", proj));
+    throw SceneError(
+        loc_of(ps, "projection"),
+        fmt::format("property 'projection' of camera must be \"perspective\" or \"orthographic\", got \"{}\"", proj));
   c.position = ps.vec3("position", c.position);
   c.look_at = ps.vec3("look_at", c.look_at);
   c.up = direction(ps, "up", ps.vec3("up", c.up));
@@ -185,14 +195,20 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
     t.image_path = resolve_path(file, loc_of(ps, "file"));
     t.mapping = ps.string("mapping", "uv");
     if (t.mapping != "uv" && t.mapping != "planar" && t.mapping != "spherical")
-      throw SceneError(loc_of(ps, "mapping"),
-                       fmt::format("property 'mapping' of image_texture must be \"uv\", \"planar\" or \"spherical\", got \"{}\"", t.mapping));
+      throw SceneError(
+          loc_of(ps, "mapping"),
+          fmt::format("property 'mapping' of image_texture must be \"uv\", \"planar\" or \"spherical\", got \"{}\"",
+                      t.mapping));
     ps.check_unused(kImageTextureNames);
   } else {
-    if (kind == "checker") t.kind = TextureKind::Checker;
-    else if (kind == "stripes") t.kind = TextureKind::Stripes;
-    else if (kind == "gradient") t.kind = TextureKind::Gradient;
-    else ps.fail_block(fmt::format("'{}' is not a texture", kind));
+    if (kind == "checker")
+      t.kind = TextureKind::Checker;
+    else if (kind == "stripes")
+      t.kind = TextureKind::Stripes;
+    else if (kind == "gradient")
+      t.kind = TextureKind::Gradient;
+    else
+      ps.fail_block(fmt::format("'{}' is not a texture", kind));
     t.color1 = ps.color("color1", t.color1);
     t.color2 = ps.color("color2", t.color2);
     t.scale = positive(ps, "scale", ps.number("scale", t.scale));
@@ -211,14 +227,16 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
   MaterialDesc m;
   m.loc = ps.loc();
   if (const ParamValue* c = ps.value("color")) {
-    if (auto* t = std::get_if<TextureRef>(c)) m.texture = t->id;
-    else m.color = ps.color("color", m.color);
+    if (auto* t = std::get_if<TextureRef>(c))
+      m.texture = t->id;
+    else
+      m.color = ps.color("color", m.color);
   }
   if (const ParamValue* t = ps.value("texture")) {
     auto* ref = std::get_if<TextureRef>(t);
     if (!ref)
-      ps.fail(*ps.find("texture"), fmt::format("property 'texture' of material expects a texture, got a {}",
-                                               param_type_name(*t)));
+      ps.fail(*ps.find("texture"),
+              fmt::format("property 'texture' of material expects a texture, got a {}", param_type_name(*t)));
     m.texture = ref->id;
   }
   m.emission = ps.color("emission", m.emission);
@@ -254,8 +272,8 @@ std::vector<Vec3> vector_list(ParamSet& ps, std::string_view name) {
   if (!v) return {};
   if (auto* l = std::get_if<std::vector<Vec3>>(v)) return *l;
   if (auto* l = std::get_if<std::vector<double>>(v); l && l->empty()) return {};
-  throw SceneError(loc_of(ps, name), fmt::format("property '{}' of mesh expects a list of vectors, got a {}",
-                                                 name, param_type_name(*v)));
+  throw SceneError(loc_of(ps, name),
+                   fmt::format("property '{}' of mesh expects a list of vectors, got a {}", name, param_type_name(*v)));
 }
 
 }  // namespace
@@ -266,8 +284,8 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   if (const ParamValue* m = ps.value("material")) {
     auto* ref = std::get_if<MaterialRef>(m);
     if (!ref)
-      ps.fail(*ps.find("material"), fmt::format("property 'material' of {} expects a material, got a {}",
-                                                kind, param_type_name(*m)));
+      ps.fail(*ps.find("material"),
+              fmt::format("property 'material' of {} expects a material, got a {}", kind, param_type_name(*m)));
     s.material = ref->id;
   }
   if (kind == "sphere") {

@@ -43,18 +43,26 @@ std::string mat(const Mat4& m) {
 
 const char* texture_kind(TextureKind k) {
   switch (k) {
-    case TextureKind::Checker: return "checker";
-    case TextureKind::Stripes: return "stripes";
-    case TextureKind::Gradient: return "gradient";
-    case TextureKind::Image: return "image_texture";
+    case TextureKind::Checker:
+      return "checker";
+    case TextureKind::Stripes:
+      return "stripes";
+    case TextureKind::Gradient:
+      return "gradient";
+    case TextureKind::Image:
+      return "image_texture";
   }
   return "?";
 }
 
 std::string shape_text(const ShapeDesc& s) {
   struct Visitor {
-    std::string operator()(const Sphere& g) { return fmt::format("sphere center {} radius {}", vec(g.center), num(g.radius)); }
-    std::string operator()(const Plane& g) { return fmt::format("plane normal {} offset {}", vec(g.normal), num(g.offset)); }
+    std::string operator()(const Sphere& g) {
+      return fmt::format("sphere center {} radius {}", vec(g.center), num(g.radius));
+    }
+    std::string operator()(const Plane& g) {
+      return fmt::format("plane normal {} offset {}", vec(g.normal), num(g.offset));
+    }
     std::string operator()(const Triangle& g) {
       std::string s = fmt::format("triangle v0 {} v1 {} v2 {}", vec(g.v0), vec(g.v1), vec(g.v2));
       if (g.has_normals) s += fmt::format(" n0 {} n1 {} n2 {}", vec(g.n0), vec(g.n1), vec(g.n2));
@@ -62,7 +70,8 @@ std::string shape_text(const ShapeDesc& s) {
     }
     std::string operator()(const Box& g) { return fmt::format("box min {} max {}", vec(g.min), vec(g.max)); }
     std::string operator()(const Cylinder& g) {
-      return fmt::format("cylinder from {} to {} radius {} capped {}", vec(g.from), vec(g.to), num(g.radius), yes(g.capped));
+      return fmt::format("cylinder from {} to {} radius {} capped {}", vec(g.from), vec(g.to), num(g.radius),
+                         yes(g.capped));
     }
     std::string operator()(const Cone& g) {
       return fmt::format("cone from {} to {} radius_from {} radius_to {} capped {}", vec(g.from), vec(g.to),
@@ -102,9 +111,9 @@ void SceneDesc::dump(std::ostream& out) const {
                      s.width, s.height, s.samples, s.max_depth, col(s.background), col(s.ambient_light), s.seed);
   const CameraDesc& c = camera;
   out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}\n",
-                     has_camera ? "" : " (default)", c.projection == Projection::Perspective ? "perspective" : "orthographic",
-                     vec(c.position), vec(c.look_at), vec(c.up), num(c.fov), num(c.view_width), num(c.aperture),
-                     num(c.focus_distance));
+                     has_camera ? "" : " (default)",
+                     c.projection == Projection::Perspective ? "perspective" : "orthographic", vec(c.position),
+                     vec(c.look_at), vec(c.up), num(c.fov), num(c.view_width), num(c.aperture), num(c.focus_distance));
   out << fmt::format("textures {}\n", textures.size());
   for (std::size_t i = 0; i < textures.size(); ++i) {
     const TextureDesc& t = textures[i];
@@ -128,16 +137,23 @@ void SceneDesc::dump(std::ostream& out) const {
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshData& m = *meshes[i];
     out << fmt::format("  mesh {}: vertices {} triangles {} normals {} uvs {} source {}\n", i, m.positions.size(),
-                       m.indices.size() / 3, m.normals.size(), m.uvs.size(), m.source.empty() ? "inline" : base(m.source));
+                       m.indices.size() / 3, m.normals.size(), m.uvs.size(),
+                       m.source.empty() ? "inline" : base(m.source));
   }
   out << fmt::format("nodes {}\n", nodes.size());
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const Node& n = nodes[i];
     out << fmt::format("  node {}: ", i);
     switch (n.kind) {
-      case NodeKind::Shape: out << shape_text(shapes[n.index]); break;
-      case NodeKind::Light: out << light_text(lights[n.index]); break;
-      case NodeKind::Group: out << fmt::format("group children {}", groups[n.index].children.size()); break;
+      case NodeKind::Shape:
+        out << shape_text(shapes[n.index]);
+        break;
+      case NodeKind::Light:
+        out << light_text(lights[n.index]);
+        break;
+      case NodeKind::Group:
+        out << fmt::format("group children {}", groups[n.index].children.size());
+        break;
     }
     out << where(n.loc) << '\n';
     if (n.kind == NodeKind::Group)

@@ -18,6 +18,18 @@ inline constexpr double kParallelCosine = 1e-14;
 // degenerate (zero area): they are never hit, so they can never produce NaN normals.
 inline constexpr double kTriangleDeterminant = 1e-14;
 
+// Camera `up` counts as parallel to the view direction when |up x forward| is below this
+// fraction of |up|: the image would have no defined "up".
+inline constexpr double kParallelVectors = 1e-12;
+
+// Building a perpendicular vector by crossing with a reference axis: the axis is used only
+// when the vector's component along it is below this, so the cross product is well scaled.
+inline constexpr double kReferenceAxisCosine = 0.9;
+
+// An instance transform whose 3x3 determinant is below this (e.g. `scale 0`) cannot be
+// inverted: the instance is flattened to nothing and skipped.
+inline constexpr double kSingularDeterminant = 1e-300;
+
 // Lengths below this are treated as zero (degenerate axes, zero radii, null vectors).
 inline constexpr double kTinyLength = 1e-300;
 

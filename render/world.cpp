@@ -1,5 +1,6 @@
 #include "render/world.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -10,13 +11,10 @@
 #include "render/shapes/plane.hpp"
 #include "render/shapes/sphere.hpp"
 #include "render/shapes/triangle.hpp"
+#include "render/tolerances.hpp"
 
 namespace rts::render {
 namespace {
-
-// A transform whose linear part has a determinant this small (relative to its scale) cannot
-// be inverted meaningfully (e.g. `scale 0`): the instance is flattened to nothing and skipped.
-constexpr double kSingularDeterminant = 1e-300;
 
 bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
 
@@ -43,7 +41,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
     inst.identity = is_identity(fs.to_world);
     if (!inst.identity) {
       double det = glm::determinant(glm::dmat3(fs.to_world));
-      if (!(std::abs(det) > kSingularDeterminant) || !std::isfinite(det)) continue;
+      if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) continue;
       inst.to_object = glm::inverse(fs.to_world);
       inst.normal_to_world = glm::transpose(glm::dmat3(inst.to_object));
     }
@@ -76,7 +74,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
           } else if constexpr (std::is_same_v<T, MeshRef>) {
             if (g.mesh >= scene.meshes.size() || !scene.meshes[g.mesh])
               throw RenderError(shape.loc, "internal: shape refers to unknown mesh " + std::to_string(g.mesh));
-            if (!meshes_[g.mesh]) meshes_[g.mesh] = std::make_unique<MeshAccel>(scene.meshes[g.mesh]);
+            meshes_[g.mesh] = mesh_accel(scene, g.mesh);
             inst.kind = PrimKind::Mesh; inst.index = g.mesh; inst.smooth = g.smooth;
             object_bounds = meshes_[g.mesh]->bounds();
           }
@@ -98,6 +96,32 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
     planes_.push_back(static_cast<uint32_t>(instances_.size()));
     instances_.push_back(p);
   }
+}
+
+namespace {
+bool same_mesh_data(const MeshData& a, const MeshData& b) {
+  return a.source == b.source && a.indices == b.indices && a.positions == b.positions &&
+         a.normals == b.normals && a.uvs == b.uvs;
+}
+}  // namespace
+
+std::shared_ptr<const MeshAccel> World::mesh_accel(const SceneDesc& scene, MeshId id) {
+  if (meshes_[id]) return meshes_[id];
+  const MeshData& data = *scene.meshes[id];
+  for (MeshId other = 0; other < meshes_.size(); ++other) {
+    // Comparing the arrays is far cheaper than building a second BVH over them.
+    if (meshes_[other] && (scene.meshes[other] == scene.meshes[id] ||
+                           same_mesh_data(*scene.meshes[other], data)))
+      return meshes_[other];
+  }
+  return std::make_shared<const MeshAccel>(scene.meshes[id]);
+}
+
+std::size_t World::mesh_bvh_count() const {
+  std::vector<const MeshAccel*> distinct;
+  for (const auto& m : meshes_)
+    if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) distinct.push_back(m.get());
+  return distinct.size();
 }
 
 bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
@@ -128,7 +152,8 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
 bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only) const {
   SurfaceHit best;
   uint32_t best_instance = 0;
-  bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t i, Interval& t_range) {
+  bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
+    uint32_t i = bvh_.order[slot];
     if (transmissive_only && !instances_[i].transmissive) return false;
     SurfaceHit h;
     if (!intersect_instance(instances_[i], ray, t_range, h)) return false;
@@ -175,7 +200,8 @@ bool World::occluded(const Ray& ray, Interval ray_t, bool opaque_only) const {
   for (uint32_t i : planes_)
     if (!(opaque_only && instances_[i].transmissive) && occluded_instance(instances_[i], ray, ray_t))
       return true;
-  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t i, Interval& t_range) {
+  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
+    uint32_t i = bvh_.order[slot];
     if (opaque_only && instances_[i].transmissive) return false;
     return occluded_instance(instances_[i], ray, t_range);
   });

@@ -54,12 +54,14 @@ class World {
   const Instance& instance(uint32_t i) const { return instances_[i]; }
   std::size_t instance_count() const { return instances_.size(); }
   std::size_t plane_count() const { return planes_.size(); }
+  std::size_t mesh_bvh_count() const;  // distinct mesh BVHs built
   const BVH& top_level() const { return bvh_; }
 
  private:
   bool intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                           SurfaceHit& hit) const;
   bool occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const;
+  std::shared_ptr<const MeshAccel> mesh_accel(const SceneDesc& scene, MeshId id);
 
   std::vector<Sphere> spheres_;
   std::vector<Plane> plane_shapes_;
@@ -68,7 +70,9 @@ class World {
   std::vector<Cylinder> cylinders_;
   std::vector<Cone> cones_;
   std::vector<Disc> discs_;
-  std::vector<std::unique_ptr<MeshAccel>> meshes_;  // by MeshId; null when unreferenced
+  // By MeshId; null when unreferenced. MeshIds whose data are identical (the same OBJ file
+  // loaded by several statements) share one MeshAccel, so one BVH.
+  std::vector<std::shared_ptr<const MeshAccel>> meshes_;
 
   std::vector<Instance> instances_;  // bounded instances first (BVH), then planes
   std::vector<uint32_t> planes_;     // instance indices of unbounded planes

@@ -35,8 +35,8 @@ void Interpreter::collect_properties(const ast::BlockBody& body, std::vector<Pro
   Restore<unsigned> loops(loop_depth_);
   Restore<bool> in_macro(in_macro_);
   Restore<bool> placement(placement_allowed_);
-  loop_depth_ = 0;     // `break` cannot leave a block
-  in_macro_ = false;   // nor can `return`
+  loop_depth_ = 0;    // `break` cannot leave a block
+  in_macro_ = false;  // nor can `return`
   placement_allowed_ = allow_placement;
   push_scope();
   for (const ast::BlockItem& item : body.items) {
@@ -67,7 +67,9 @@ Value Interpreter::eval_block(const ast::BlockExpr& e) {
         target_ = &children;
         collect_properties(e.body, props, true);
       }
-      if (!props.empty()) fail(props.front().loc, fmt::format("unknown property '{}' for group (a group takes no properties)", *props.front().name));
+      if (!props.empty())
+        fail(props.front().loc,
+             fmt::format("unknown property '{}' for group (a group takes no properties)", *props.front().name));
       Value v;
       v.type = Type::Object;
       v.id = builder_.group(std::move(children), ref(e.loc));
@@ -84,7 +86,8 @@ Value Interpreter::eval_block(const ast::BlockExpr& e) {
       v.ref = std::move(rec);
       return v;
     }
-    default: break;
+    default:
+      break;
   }
   std::vector<Property> props;
   props.reserve(e.body.items.size());
@@ -92,8 +95,12 @@ Value Interpreter::eval_block(const ast::BlockExpr& e) {
   render::ParamSet ps = to_params(kind, e.loc, props);
   Value v;
   switch (cat) {
-    case render::BlockCategory::Settings: builder_.settings(ps); return v;
-    case render::BlockCategory::Camera: builder_.camera(ps); return v;
+    case render::BlockCategory::Settings:
+      builder_.settings(ps);
+      return v;
+    case render::BlockCategory::Camera:
+      builder_.camera(ps);
+      return v;
     case render::BlockCategory::Shape:
       v.type = Type::Object;
       v.id = builder_.shape(kind, ps);
@@ -102,7 +109,8 @@ Value Interpreter::eval_block(const ast::BlockExpr& e) {
       v.type = Type::Object;
       v.id = builder_.light(kind, ps);
       return v;
-    default: break;
+    default:
+      break;
   }
   fail(e.loc, "internal error: unhandled block category");
 }
@@ -204,13 +212,20 @@ Value Interpreter::eval_transform(const ast::TransformExpr& e) {
 render::ParamValue Interpreter::to_param(const Property& p, const std::string& kind) {
   const Value& v = p.value;
   switch (v.type) {
-    case Type::Number: return v.v.x;
-    case Type::Bool: return v.truth();
-    case Type::String: return as_string(v);
-    case Type::Vector: return render::Vec3(v.v);
-    case Type::Color: return render::Color(v.v.x, v.v.y, v.v.z);
-    case Type::Texture: return render::TextureRef{realize_texture(v, p.loc)};
-    case Type::Material: return render::MaterialRef{realize_material(v, p.loc)};
+    case Type::Number:
+      return v.v.x;
+    case Type::Bool:
+      return v.truth();
+    case Type::String:
+      return as_string(v);
+    case Type::Vector:
+      return render::Vec3(v.v);
+    case Type::Color:
+      return render::Color(v.v.x, v.v.y, v.v.z);
+    case Type::Texture:
+      return render::TextureRef{realize_texture(v)};
+    case Type::Material:
+      return render::MaterialRef{realize_material(v)};
     case Type::List: {
       const auto& items = as_list(v);
       if (items.empty()) return std::vector<double>{};
@@ -231,8 +246,9 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
         }
         if (out.size() == items.size()) return out;
       }
-      fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: properties take lists of numbers or of vectors",
-                              *p.name, kind));
+      fail(p.loc,
+           fmt::format("property '{}' of {} cannot hold this list: properties take lists of numbers or of vectors",
+                       *p.name, kind));
     }
     default:
       fail(p.loc, fmt::format("property '{}' of {} cannot hold {}", *p.name, kind, with_article(v.type)));
@@ -241,6 +257,7 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
 
 render::ParamSet Interpreter::to_params(const std::string& kind, SourceLoc loc, const std::vector<Property>& props) {
   render::ParamSet ps(kind, ref(loc));
+  ps.reserve(props.size());
   for (const Property& p : props) {
     if (p.value.type == Type::None) continue;  // `name = none` leaves the property unset
     ps.add(*p.name, to_param(p, kind), ref(p.loc));
@@ -248,7 +265,7 @@ render::ParamSet Interpreter::to_params(const std::string& kind, SourceLoc loc, 
   return ps;
 }
 
-uint32_t Interpreter::realize_material(const Value& material, SourceLoc) {
+uint32_t Interpreter::realize_material(const Value& material) {
   RecordValue& rec = as_record(material);
   if (rec.built_id == render::kNoId) {
     render::ParamSet ps = to_params(*rec.kind, rec.loc, rec.props);
@@ -257,7 +274,7 @@ uint32_t Interpreter::realize_material(const Value& material, SourceLoc) {
   return rec.built_id;
 }
 
-uint32_t Interpreter::realize_texture(const Value& texture, SourceLoc) {
+uint32_t Interpreter::realize_texture(const Value& texture) {
   RecordValue& rec = as_record(texture);
   if (rec.built_id == render::kNoId) {
     render::ParamSet ps = to_params(*rec.kind, rec.loc, rec.props);
@@ -270,10 +287,13 @@ void Interpreter::place(const Value& object, SourceLoc loc) {
   if (!placement_allowed_)
     fail(loc, "objects can only be placed at top level, in a group or in a macro (not inside another block)");
   if (++placements_ > options_.limits.max_objects)
-    fail(loc, fmt::format("more than {} objects placed (raise the limit with --max-objects)", options_.limits.max_objects));
+    fail(loc,
+         fmt::format("more than {} objects placed (raise the limit with --max-objects)", options_.limits.max_objects));
   render::Child c{object.id, object_transform(object), ref(loc)};
-  if (target_) target_->push_back(c);
-  else builder_.place(c);
+  if (target_)
+    target_->push_back(c);
+  else
+    builder_.place(c);
 }
 
 }  // namespace rts::runtime

@@ -85,7 +85,8 @@ Value extreme(BuiltinCall& c) {
   double best = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (items[i].type != Type::Number)
-      c.in.fail(arg_loc(c, c.argc == n ? i : 0), fmt::format("'{}' needs numbers, got {}", c.def.name, with_article(items[i].type)));
+      c.in.fail(arg_loc(c, c.argc == n ? i : 0),
+                fmt::format("'{}' needs numbers, got {}", c.def.name, with_article(items[i].type)));
     double x = items[i].v.x;
     if (i == 0 || (Max ? x > best : x < best)) best = x;
   }
@@ -163,7 +164,8 @@ Value format(BuiltinCall& c) {
     }
   }
   if (next != c.argc)
-    c.in.fail(arg_loc(c, next), fmt::format("format string has {} '{{}}' but {} values were given", next - 1, c.argc - 1));
+    c.in.fail(arg_loc(c, next),
+              fmt::format("format string has {} '{{}}' but {} values were given", next - 1, c.argc - 1));
   return Value::string(std::move(out));
 }
 
@@ -236,26 +238,46 @@ Value identity(BuiltinCall&) {
 
 const std::vector<Builtin>& builtin_table() {
   static const std::vector<Builtin> table = {
-      {"sin", 1, 1, math1<sin_>},        {"cos", 1, 1, math1<cos_>},
-      {"tan", 1, 1, math1<tan_>},        {"asin", 1, 1, math1<asin_>},
-      {"acos", 1, 1, math1<acos_>},      {"atan", 1, 1, math1<atan_>},
-      {"atan2", 2, 2, math2<atan2_>},    {"sqrt", 1, 1, math1<sqrt_>},
-      {"pow", 2, 2, math2<pow_>},        {"exp", 1, 1, math1<exp_>},
-      {"log", 1, 1, math1<log_>},        {"abs", 1, 1, math1<abs_>},
-      {"floor", 1, 1, math1<floor_>},    {"ceil", 1, 1, math1<ceil_>},
-      {"round", 1, 1, math1<round_>},    {"radians", 1, 1, math1<radians>},
-      {"degrees", 1, 1, math1<degrees>}, {"min", 1, -1, extreme<false>},
-      {"max", 1, -1, extreme<true>},     {"clamp", 3, 3, clamp},
-      {"mix", 3, 3, mix},                {"dot", 2, 2, dot},
-      {"cross", 2, 2, cross},            {"length", 1, 1, length},
-      {"normalize", 1, 1, normalize},    {"rgb", 1, 3, rgb},
-      {"vec", 3, 3, vec_},               {"len", 1, 1, len},
-      {"str", 1, 1, str_},               {"format", 1, -1, format},
-      {"print", 0, -1, print},           {"assert", 1, 2, assert_},
-      {"error", 1, 1, error},            {"checker", 2, 3, checker},
-      {"stripes", 2, 4, stripes},        {"gradient", 2, 4, gradient},
-      {"image_texture", 1, 2, image_texture}, {"random", 1, 1, random},
-      {"rand", 1, 3, rand},              {"identity", 0, 0, identity},
+      {"sin", 1, 1, math1<sin_>},
+      {"cos", 1, 1, math1<cos_>},
+      {"tan", 1, 1, math1<tan_>},
+      {"asin", 1, 1, math1<asin_>},
+      {"acos", 1, 1, math1<acos_>},
+      {"atan", 1, 1, math1<atan_>},
+      {"atan2", 2, 2, math2<atan2_>},
+      {"sqrt", 1, 1, math1<sqrt_>},
+      {"pow", 2, 2, math2<pow_>},
+      {"exp", 1, 1, math1<exp_>},
+      {"log", 1, 1, math1<log_>},
+      {"abs", 1, 1, math1<abs_>},
+      {"floor", 1, 1, math1<floor_>},
+      {"ceil", 1, 1, math1<ceil_>},
+      {"round", 1, 1, math1<round_>},
+      {"radians", 1, 1, math1<radians>},
+      {"degrees", 1, 1, math1<degrees>},
+      {"min", 1, -1, extreme<false>},
+      {"max", 1, -1, extreme<true>},
+      {"clamp", 3, 3, clamp},
+      {"mix", 3, 3, mix},
+      {"dot", 2, 2, dot},
+      {"cross", 2, 2, cross},
+      {"length", 1, 1, length},
+      {"normalize", 1, 1, normalize},
+      {"rgb", 1, 3, rgb},
+      {"vec", 3, 3, vec_},
+      {"len", 1, 1, len},
+      {"str", 1, 1, str_},
+      {"format", 1, -1, format},
+      {"print", 0, -1, print},
+      {"assert", 1, 2, assert_},
+      {"error", 1, 1, error},
+      {"checker", 2, 3, checker},
+      {"stripes", 2, 4, stripes},
+      {"gradient", 2, 4, gradient},
+      {"image_texture", 1, 2, image_texture},
+      {"random", 1, 1, random},
+      {"rand", 1, 3, rand},
+      {"identity", 0, 0, identity},
   };
   return table;
 }

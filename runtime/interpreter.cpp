@@ -42,7 +42,8 @@ void Interpreter::add_notes(Diagnostic& d) const {
     const Context& c = contexts_[n - 1 - k];  // innermost first
     if (n > 2 * kNotesKeptAtEachEnd + 1 && k >= kNotesKeptAtEachEnd && k < n - kNotesKeptAtEachEnd) {
       if (k == kNotesKeptAtEachEnd)
-        d.notes.push_back(Note{c.site, fmt::format("({} more calls and includes not shown)", n - 2 * kNotesKeptAtEachEnd)});
+        d.notes.push_back(
+            Note{c.site, fmt::format("({} more calls and includes not shown)", n - 2 * kNotesKeptAtEachEnd)});
       continue;
     }
     if (c.kind == Context::Macro)
@@ -74,17 +75,17 @@ void Interpreter::run(const SourceFile& main) {
     include_chain_.push_back(fs::weakly_canonical(main.path(), ec).string());
     parsed_[include_chain_.back()] = main_program_;
 
-    // Each define is parsed as `let __define = <value>` from a small file of its own, so its
-    // errors point into "<define name>" with the define's own text.
+    // Each define is parsed as `let name = value` from a small file of its own, so its
+    // errors point into "<define name>" and show the define as a let.
     for (const Define& d : options_.defines) {
-      const SourceFile* f = sources_.add(fmt::format("<define {}>", d.name), "let __define = " + d.value);
+      const SourceFile* f =
+          sources_.add(fmt::format("<define {}>", d.name), fmt::format("let {} = {}", d.name, d.value));
       files_by_name_[f->path().c_str()] = f;
       programs_.push_back(parse(*f));
       const ast::Program& p = programs_.back();
       if (p.stmts.size() != 1 || p.stmts[0]->kind != ast::StmtKind::Let)
         fail(SourceLoc{f, 1, 1}, fmt::format("define '{}={}' is not a single value", d.name, d.value));
-      defines_.push_back(DefineExpr{ast::intern(d.name),
-                                    static_cast<const ast::LetStmt&>(*p.stmts[0]).value.get(),
+      defines_.push_back(DefineExpr{ast::intern(d.name), static_cast<const ast::LetStmt&>(*p.stmts[0]).value.get(),
                                     d.name + "=" + d.value});
     }
 
@@ -151,7 +152,7 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
     fail(s.loc, fmt::format("cannot find include file '{}' {}", s.path, where));
   }
   std::string canonical = fs::weakly_canonical(*found, ec).string();
-  contexts_.push_back(Context{Context::Include, s.loc, nullptr, 0, 0, false});
+  contexts_.push_back(Context{Context::Include, s.loc, nullptr});
   for (const std::string& open : include_chain_)
     if (open == canonical) {
       contexts_.pop_back();  // the note for this include is the error itself
@@ -248,8 +249,12 @@ Flow Interpreter::exec_body(const ast::Body& body) {
 
 Flow Interpreter::exec(const ast::Stmt& s) {
   switch (s.kind) {
-    case ast::StmtKind::Let: exec_let(static_cast<const ast::LetStmt&>(s)); return Flow::Normal;
-    case ast::StmtKind::Assign: exec_assign(static_cast<const ast::AssignStmt&>(s)); return Flow::Normal;
+    case ast::StmtKind::Let:
+      exec_let(static_cast<const ast::LetStmt&>(s));
+      return Flow::Normal;
+    case ast::StmtKind::Assign:
+      exec_assign(static_cast<const ast::AssignStmt&>(s));
+      return Flow::Normal;
     case ast::StmtKind::If: {
       const auto& st = static_cast<const ast::IfStmt&>(s);
       Value c = eval(*st.cond);
@@ -259,8 +264,10 @@ Flow Interpreter::exec(const ast::Stmt& s) {
       if (st.else_body) return exec_body(*st.else_body);
       return Flow::Normal;
     }
-    case ast::StmtKind::For: return exec_for(static_cast<const ast::ForStmt&>(s));
-    case ast::StmtKind::While: return exec_while(static_cast<const ast::WhileStmt&>(s));
+    case ast::StmtKind::For:
+      return exec_for(static_cast<const ast::ForStmt&>(s));
+    case ast::StmtKind::While:
+      return exec_while(static_cast<const ast::WhileStmt&>(s));
     case ast::StmtKind::Macro: {
       const auto& m = static_cast<const ast::MacroStmt&>(s);
       Value v;
@@ -281,7 +288,9 @@ Flow Interpreter::exec(const ast::Stmt& s) {
     case ast::StmtKind::Continue:
       if (loop_depth_ == 0) fail(s.loc, "'continue' outside a loop");
       return Flow::Continue;
-    case ast::StmtKind::Include: exec_include(static_cast<const ast::IncludeStmt&>(s)); return Flow::Normal;
+    case ast::StmtKind::Include:
+      exec_include(static_cast<const ast::IncludeStmt&>(s));
+      return Flow::Normal;
     case ast::StmtKind::ExprStmt: {
       const auto& e = static_cast<const ast::ExprStmt&>(s);
       Value v = eval(*e.expr);
@@ -304,16 +313,28 @@ void Interpreter::exec_assign(const ast::AssignStmt& s) {
       for (std::size_t i = 0; i < globals_end(); ++i) candidates.push_back(*bindings_[i].name);
     std::string msg = fmt::format("cannot assign to undefined name '{}'", *s.name);
     std::string hint = render::closest_name(*s.name, candidates);
-    if (!hint.empty()) msg += fmt::format("; did you mean '{}'?", hint);
-    else msg += fmt::format(" (declare it with 'let {} = ...')", *s.name);
+    if (!hint.empty())
+      msg += fmt::format("; did you mean '{}'?", hint);
+    else
+      msg += fmt::format(" (declare it with 'let {} = ...')", *s.name);
     fail(s.loc, msg);
   }
   switch (s.op) {
-    case ast::AssignOp::Set: b->value = std::move(v); break;
-    case ast::AssignOp::Add: b->value = binary_op(ast::BinaryOp::Add, b->value, v, s.loc); break;
-    case ast::AssignOp::Sub: b->value = binary_op(ast::BinaryOp::Sub, b->value, v, s.loc); break;
-    case ast::AssignOp::Mul: b->value = binary_op(ast::BinaryOp::Mul, b->value, v, s.loc); break;
-    case ast::AssignOp::Div: b->value = binary_op(ast::BinaryOp::Div, b->value, v, s.loc); break;
+    case ast::AssignOp::Set:
+      b->value = std::move(v);
+      break;
+    case ast::AssignOp::Add:
+      b->value = binary_op(ast::BinaryOp::Add, b->value, v, s.loc);
+      break;
+    case ast::AssignOp::Sub:
+      b->value = binary_op(ast::BinaryOp::Sub, b->value, v, s.loc);
+      break;
+    case ast::AssignOp::Mul:
+      b->value = binary_op(ast::BinaryOp::Mul, b->value, v, s.loc);
+      break;
+    case ast::AssignOp::Div:
+      b->value = binary_op(ast::BinaryOp::Div, b->value, v, s.loc);
+      break;
   }
 }
 
@@ -380,11 +401,16 @@ double Interpreter::expect_number(const ast::Expr& e, const char* what) {
 
 Value Interpreter::eval(const ast::Expr& e) {
   switch (e.kind) {
-    case ast::ExprKind::Number: return Value::number(static_cast<const ast::NumberExpr&>(e).value);
-    case ast::ExprKind::String: return Value::string(static_cast<const ast::StringExpr&>(e).value);
-    case ast::ExprKind::Bool: return Value::boolean(static_cast<const ast::BoolExpr&>(e).value);
-    case ast::ExprKind::None: return Value::none();
-    case ast::ExprKind::Name: return eval_name(static_cast<const ast::NameExpr&>(e));
+    case ast::ExprKind::Number:
+      return Value::number(static_cast<const ast::NumberExpr&>(e).value);
+    case ast::ExprKind::String:
+      return Value::string(static_cast<const ast::StringExpr&>(e).value);
+    case ast::ExprKind::Bool:
+      return Value::boolean(static_cast<const ast::BoolExpr&>(e).value);
+    case ast::ExprKind::None:
+      return Value::none();
+    case ast::ExprKind::Name:
+      return eval_name(static_cast<const ast::NameExpr&>(e));
     case ast::ExprKind::Vector: {
       const auto& ve = static_cast<const ast::VectorExpr&>(e);
       if (ve.components.size() != 3)
@@ -400,15 +426,24 @@ Value Interpreter::eval(const ast::Expr& e) {
       for (const ast::ExprPtr& x : le.elements) items.push_back(eval(*x));
       return Value::list(std::move(items));
     }
-    case ast::ExprKind::Unary: return eval_unary(static_cast<const ast::UnaryExpr&>(e));
-    case ast::ExprKind::Binary: return eval_binary(static_cast<const ast::BinaryExpr&>(e));
-    case ast::ExprKind::Range: return eval_range(static_cast<const ast::RangeExpr&>(e));
-    case ast::ExprKind::Call: return eval_call(static_cast<const ast::CallExpr&>(e));
-    case ast::ExprKind::Index: return eval_index(static_cast<const ast::IndexExpr&>(e));
-    case ast::ExprKind::Member: return eval_member(static_cast<const ast::MemberExpr&>(e));
-    case ast::ExprKind::Block: return eval_block(static_cast<const ast::BlockExpr&>(e));
-    case ast::ExprKind::With: return eval_with(static_cast<const ast::WithExpr&>(e));
-    case ast::ExprKind::Transform: return eval_transform(static_cast<const ast::TransformExpr&>(e));
+    case ast::ExprKind::Unary:
+      return eval_unary(static_cast<const ast::UnaryExpr&>(e));
+    case ast::ExprKind::Binary:
+      return eval_binary(static_cast<const ast::BinaryExpr&>(e));
+    case ast::ExprKind::Range:
+      return eval_range(static_cast<const ast::RangeExpr&>(e));
+    case ast::ExprKind::Call:
+      return eval_call(static_cast<const ast::CallExpr&>(e));
+    case ast::ExprKind::Index:
+      return eval_index(static_cast<const ast::IndexExpr&>(e));
+    case ast::ExprKind::Member:
+      return eval_member(static_cast<const ast::MemberExpr&>(e));
+    case ast::ExprKind::Block:
+      return eval_block(static_cast<const ast::BlockExpr&>(e));
+    case ast::ExprKind::With:
+      return eval_with(static_cast<const ast::WithExpr&>(e));
+    case ast::ExprKind::Transform:
+      return eval_transform(static_cast<const ast::TransformExpr&>(e));
   }
   fail(e.loc, "internal error: unknown expression kind");
 }
@@ -457,10 +492,15 @@ Value Interpreter::eval_index(const ast::IndexExpr& e) {
   Value obj = eval(*e.object);
   double i = expect_number(*e.index, "an index");
   std::size_t n;
-  if (obj.type == Type::List) n = as_list(obj).size();
-  else if (obj.type == Type::Vector || obj.type == Type::Color) n = 3;
-  else if (obj.type == Type::Range) n = range_count(obj);
-  else fail(e.object->loc, fmt::format("cannot index {} (only lists, vectors, colors and ranges)", with_article(obj.type)));
+  if (obj.type == Type::List)
+    n = as_list(obj).size();
+  else if (obj.type == Type::Vector || obj.type == Type::Color)
+    n = 3;
+  else if (obj.type == Type::Range)
+    n = range_count(obj);
+  else
+    fail(e.object->loc,
+         fmt::format("cannot index {} (only lists, vectors, colors and ranges)", with_article(obj.type)));
   if (i != std::floor(i) || i < 0 || i >= static_cast<double>(n))
     fail(e.index->loc, fmt::format("index {} out of range for {} of {} element{}", to_text(Value::number(i)),
                                    with_article(obj.type), n, n == 1 ? "" : "s"));
@@ -511,14 +551,14 @@ Value Interpreter::eval_call(const ast::CallExpr& e) {
   }
   if (callee.type == Type::Macro) return call_macro(*as_macro(callee), e);
   if (callee.type != Type::Builtin)
-    fail(e.callee->loc, fmt::format("cannot call {}; only macros and builtin functions can be called",
-                                    with_article(callee.type)));
+    fail(e.callee->loc,
+         fmt::format("cannot call {}; only macros and builtin functions can be called", with_article(callee.type)));
   const Builtin& b = builtin_table()[callee.id];
   for (const ast::Argument& a : e.args)
     if (a.name) fail(a.loc, fmt::format("builtin '{}' takes no named arguments", b.name));
   std::size_t argc = e.args.size();
   if (static_cast<int>(argc) < b.min_args || (b.max_args >= 0 && static_cast<int>(argc) > b.max_args)) {
-    std::string expected = b.max_args < 0      ? fmt::format("at least {}", b.min_args)
+    std::string expected = b.max_args < 0             ? fmt::format("at least {}", b.min_args)
                            : b.min_args == b.max_args ? fmt::format("{}", b.min_args)
                                                       : fmt::format("{} to {}", b.min_args, b.max_args);
     fail(e.loc, fmt::format("'{}' takes {} argument{}, got {}", b.name, expected,
@@ -586,7 +626,7 @@ Value Interpreter::call_macro(const ast::MacroStmt& m, const ast::CallExpr& call
     fail(call.loc, fmt::format("macro calls nested deeper than {} (raise the limit with --max-recursion)",
                                options_.limits.max_recursion));
 
-  contexts_.push_back(Context{Context::Macro, call.loc, m.name, frame_base_, loop_depth_, in_macro_});
+  contexts_.push_back(Context{Context::Macro, call.loc, m.name});
   const std::size_t saved_base = frame_base_;
   const unsigned saved_loops = loop_depth_;
   const bool saved_in_macro = in_macro_;

@@ -39,11 +39,8 @@ struct Binding {
 // One active macro call or include, for error notes.
 struct Context {
   enum Kind : uint8_t { Macro, Include } kind;
-  SourceLoc site;       // the call or the include statement
-  ast::Symbol name;     // the macro's name (Macro)
-  std::size_t frame_base;   // bindings visible from a macro body start here (Macro)
-  unsigned saved_loop_depth;
-  bool saved_in_macro;
+  SourceLoc site;    // the call or the include statement
+  ast::Symbol name;  // the macro's name (Macro)
 };
 
 class Interpreter;
@@ -75,8 +72,13 @@ class Interpreter {
   [[noreturn]] void fail(SourceLoc loc, std::string message) const;
   render::SourceRef ref(SourceLoc loc);
   Value make_texture(ast::Symbol kind, std::vector<Property> props, SourceLoc loc);
-  uint32_t realize_material(const Value& material, SourceLoc use);
-  uint32_t realize_texture(const Value& texture, SourceLoc use);
+  // The builder id of a material / texture value, built on first use and cached in it.
+  uint32_t realize_material(const Value& material);
+  uint32_t realize_texture(const Value& texture);
+  // Attaches the context notes (innermost first) to an error thrown while running.
+  void add_notes(Diagnostic& d) const;
+  // Converts a builder SceneError into a located LanguageError.
+  LanguageError from_scene_error(const render::SceneError& e) const;
 
  private:
   // statements (interpreter.cpp)
@@ -133,8 +135,8 @@ class Interpreter {
   std::size_t frame_base_ = 0;  // first binding of the current macro frame (0 at top level)
   std::vector<Context> contexts_;
   unsigned macro_depth_ = 0;
-  unsigned loop_depth_ = 0;     // loops enclosing the current code in this frame
-  bool in_macro_ = false;       // `return` allowed
+  unsigned loop_depth_ = 0;  // loops enclosing the current code in this frame
+  bool in_macro_ = false;    // `return` allowed
   Value return_value_;
 
   uint64_t iterations_ = 0;
@@ -172,12 +174,6 @@ class Interpreter {
   };
   std::vector<DefineExpr> defines_;
   const ast::Program* main_program_ = nullptr;
-
- public:
-  // Attaches the context notes (innermost first) to an error thrown while running.
-  void add_notes(Diagnostic& d) const;
-  // Converts a builder SceneError into a located LanguageError.
-  LanguageError from_scene_error(const render::SceneError& e) const;
 };
 
 }  // namespace rts::runtime

@@ -17,41 +17,54 @@ constexpr double kRangeEndTolerance = 1e-9;
 
 const char* verb(ast::BinaryOp op) {
   switch (op) {
-    case ast::BinaryOp::Add: return "add";
-    case ast::BinaryOp::Sub: return "subtract";
-    case ast::BinaryOp::Mul: return "multiply";
-    case ast::BinaryOp::Div: return "divide";
-    case ast::BinaryOp::Mod: return "take the remainder of";
-    case ast::BinaryOp::Pow: return "raise";
-    default: return "compare";
+    case ast::BinaryOp::Add:
+      return "add";
+    case ast::BinaryOp::Sub:
+      return "subtract";
+    case ast::BinaryOp::Mul:
+      return "multiply";
+    case ast::BinaryOp::Div:
+      return "divide";
+    case ast::BinaryOp::Mod:
+      return "take the remainder of";
+    case ast::BinaryOp::Pow:
+      return "raise";
+    default:
+      return "compare";
   }
 }
 
 [[noreturn]] void type_error(ast::BinaryOp op, const Value& a, const Value& b, SourceLoc loc) {
   if (op == ast::BinaryOp::Pow)
-    throw LanguageError(loc, fmt::format("cannot raise {} to the power of {}", with_article(a.type), with_article(b.type)));
+    throw LanguageError(loc,
+                        fmt::format("cannot raise {} to the power of {}", with_article(a.type), with_article(b.type)));
   throw LanguageError(loc, fmt::format("cannot {} {} and {}", verb(op), with_article(a.type), with_article(b.type)));
 }
 
 double arith(ast::BinaryOp op, double x, double y, SourceLoc loc) {
   switch (op) {
-    case ast::BinaryOp::Add: return x + y;
-    case ast::BinaryOp::Sub: return x - y;
-    case ast::BinaryOp::Mul: return x * y;
+    case ast::BinaryOp::Add:
+      return x + y;
+    case ast::BinaryOp::Sub:
+      return x - y;
+    case ast::BinaryOp::Mul:
+      return x * y;
     case ast::BinaryOp::Div:
       if (y == 0.0) throw LanguageError(loc, "division by zero");
       return x / y;
     case ast::BinaryOp::Mod:
       if (y == 0.0) throw LanguageError(loc, "remainder of division by zero");
       return std::fmod(x, y);
-    case ast::BinaryOp::Pow: return std::pow(x, y);
-    default: return 0.0;
+    case ast::BinaryOp::Pow:
+      return std::pow(x, y);
+    default:
+      return 0.0;
   }
 }
 
 bool is_arith(ast::BinaryOp op) {
-  return op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub || op == ast::BinaryOp::Mul ||
-         op == ast::BinaryOp::Div || op == ast::BinaryOp::Mod || op == ast::BinaryOp::Pow;
+  return op == ast::BinaryOp::Add || op == ast::BinaryOp::Sub || op == ast::BinaryOp::Mul || op == ast::BinaryOp::Div ||
+         op == ast::BinaryOp::Mod || op == ast::BinaryOp::Pow;
 }
 
 bool is_triple(Type t) { return t == Type::Vector || t == Type::Color; }
@@ -60,7 +73,8 @@ bool is_triple(Type t) { return t == Type::Vector || t == Type::Color; }
 
 void check_finite(double x, SourceLoc loc, const char* what) {
   if (std::isfinite(x)) return;
-  throw LanguageError(loc, fmt::format("{} produced {}", what, std::isnan(x) ? "NaN (not a number)" : "an infinite value"));
+  throw LanguageError(loc,
+                      fmt::format("{} produced {}", what, std::isnan(x) ? "NaN (not a number)" : "an infinite value"));
 }
 
 Value binary_op(ast::BinaryOp op, const Value& a, const Value& b, SourceLoc loc) {
@@ -69,14 +83,21 @@ Value binary_op(ast::BinaryOp op, const Value& a, const Value& b, SourceLoc loc)
   if (a.type == Type::Number && b.type == Type::Number) {
     double x = a.v.x, y = b.v.x;
     switch (op) {
-      case BinaryOp::Lt: return Value::boolean(x < y);
-      case BinaryOp::Le: return Value::boolean(x <= y);
-      case BinaryOp::Gt: return Value::boolean(x > y);
-      case BinaryOp::Ge: return Value::boolean(x >= y);
-      case BinaryOp::Eq: return Value::boolean(x == y);
-      case BinaryOp::Ne: return Value::boolean(x != y);
+      case BinaryOp::Lt:
+        return Value::boolean(x < y);
+      case BinaryOp::Le:
+        return Value::boolean(x <= y);
+      case BinaryOp::Gt:
+        return Value::boolean(x > y);
+      case BinaryOp::Ge:
+        return Value::boolean(x >= y);
+      case BinaryOp::Eq:
+        return Value::boolean(x == y);
+      case BinaryOp::Ne:
+        return Value::boolean(x != y);
       case BinaryOp::And:
-      case BinaryOp::Or: break;
+      case BinaryOp::Or:
+        break;
       default: {
         double r = arith(op, x, y, loc);
         check_finite(r, loc, "arithmetic");
@@ -107,8 +128,7 @@ Value binary_op(ast::BinaryOp op, const Value& a, const Value& b, SourceLoc loc)
     if (is_triple(a.type) && a.type == b.type) {
       t = a.type;
       for (int i = 0; i < 3; ++i) r[i] = arith(op, a.v[i], b.v[i], loc);
-    } else if (is_triple(a.type) && b.type == Type::Number &&
-               (op == BinaryOp::Mul || op == BinaryOp::Div)) {
+    } else if (is_triple(a.type) && b.type == Type::Number && (op == BinaryOp::Mul || op == BinaryOp::Div)) {
       t = a.type;
       for (int i = 0; i < 3; ++i) r[i] = arith(op, a.v[i], b.v.x, loc);
     } else if (a.type == Type::Number && is_triple(b.type) && op == BinaryOp::Mul) {

@@ -19,14 +19,22 @@ bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Ve
     const render::SceneDesc& scene;
     Vec3& lo;
     Vec3& hi;
-    bool operator()(const render::Sphere& g) { lo = g.center - g.radius; hi = g.center + g.radius; return true; }
+    bool operator()(const render::Sphere& g) {
+      lo = g.center - g.radius;
+      hi = g.center + g.radius;
+      return true;
+    }
     bool operator()(const render::Plane&) { return false; }
     bool operator()(const render::Triangle& g) {
       lo = glm::min(g.v0, glm::min(g.v1, g.v2));
       hi = glm::max(g.v0, glm::max(g.v1, g.v2));
       return true;
     }
-    bool operator()(const render::Box& g) { lo = g.min; hi = g.max; return true; }
+    bool operator()(const render::Box& g) {
+      lo = g.min;
+      hi = g.max;
+      return true;
+    }
     bool operator()(const render::Cylinder& g) {
       lo = glm::min(g.from, g.to) - g.radius;  // a loose box: the caps' full spheres
       hi = glm::max(g.from, g.to) + g.radius;
@@ -38,7 +46,11 @@ bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Ve
       hi = glm::max(g.from, g.to) + r;
       return true;
     }
-    bool operator()(const render::Disc& g) { lo = g.center - g.radius; hi = g.center + g.radius; return true; }
+    bool operator()(const render::Disc& g) {
+      lo = g.center - g.radius;
+      hi = g.center + g.radius;
+      return true;
+    }
     bool operator()(const render::MeshRef& g) {
       const render::MeshData& m = *scene.meshes[g.mesh];
       if (m.positions.empty()) return false;
@@ -61,10 +73,14 @@ const char* shape_kind(const render::ShapeGeometry& g) {
 
 const char* light_kind(render::LightKind k) {
   switch (k) {
-    case render::LightKind::Point: return "point_light";
-    case render::LightKind::Spot: return "spot_light";
-    case render::LightKind::Directional: return "directional_light";
-    case render::LightKind::Area: return "area_light";
+    case render::LightKind::Point:
+      return "point_light";
+    case render::LightKind::Spot:
+      return "spot_light";
+    case render::LightKind::Directional:
+      return "directional_light";
+    case render::LightKind::Area:
+      return "area_light";
   }
   return "light";
 }
@@ -111,7 +127,9 @@ struct Walker {
         }
         return;
       }
-      case render::NodeKind::Light: ++out.lights[light_kind(scene.lights[n.index].kind)]; return;
+      case render::NodeKind::Light:
+        ++out.lights[light_kind(scene.lights[n.index].kind)];
+        return;
       case render::NodeKind::Group:
         for (const render::Child& c : scene.groups[n.index].children) todo.emplace_back(c.node, m * c.transform);
         return;
@@ -168,7 +186,7 @@ void print_summary(std::ostream& out, const render::SceneDesc& scene, const Scen
                      c.projection == render::Projection::Perspective ? "perspective" : "orthographic",
                      scene.has_camera ? "" : " (default)", vec(c.position), vec(c.look_at),
                      c.projection == render::Projection::Perspective ? fmt::format("fov {}", num(c.fov))
-                                                                       : fmt::format("view width {}", num(c.view_width)));
+                                                                     : fmt::format("view width {}", num(c.view_width)));
   const render::Settings& st = scene.settings;
   out << fmt::format("image:      {}x{}, {} sample{} per pixel, max depth {}\n", st.width, st.height, st.samples,
                      st.samples == 1 ? "" : "s", st.max_depth);

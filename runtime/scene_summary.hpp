@@ -12,15 +12,15 @@
 namespace rts::runtime {
 
 struct SceneSummary {
-  std::map<std::string, std::size_t> shapes;   // kind → placed instances (world-space count)
-  std::map<std::string, std::size_t> lights;   // kind → placed instances
-  std::size_t shape_definitions = 0;           // ShapeDescs (one per block evaluated)
-  std::size_t instances = 0;                   // placements of shapes, lights and groups
-  std::size_t triangles = 0;                   // mesh triangles over all placed instances
+  std::map<std::string, std::size_t> shapes;  // kind → placed instances (world-space count)
+  std::map<std::string, std::size_t> lights;  // kind → placed instances
+  std::size_t shape_definitions = 0;          // ShapeDescs (one per block evaluated)
+  std::size_t instances = 0;                  // placements of shapes, lights and groups
+  std::size_t triangles = 0;                  // mesh triangles over all placed instances
   std::size_t materials = 0, textures = 0, meshes = 0, groups = 0;
-  bool has_bounds = false;                     // false when nothing bounded is placed
+  bool has_bounds = false;  // false when nothing bounded is placed
   render::Vec3 bounds_min{0.0}, bounds_max{0.0};
-  bool unbounded = false;                      // a plane is placed (not in the bounds)
+  bool unbounded = false;  // a plane is placed (not in the bounds)
 };
 
 SceneSummary summarize(const render::SceneDesc& scene);

@@ -8,21 +8,36 @@ namespace rts::runtime {
 
 const char* type_name(Type t) {
   switch (t) {
-    case Type::None: return "none";
-    case Type::Number: return "number";
-    case Type::Bool: return "bool";
-    case Type::String: return "string";
-    case Type::Vector: return "vector";
-    case Type::Color: return "color";
-    case Type::List: return "list";
-    case Type::Range: return "range";
-    case Type::Material: return "material";
-    case Type::Texture: return "texture";
-    case Type::Object: return "object";
-    case Type::Transform: return "transform";
-    case Type::Macro: return "macro";
-    case Type::Builtin: return "builtin function";
-    case Type::Random: return "random stream";
+    case Type::None:
+      return "none";
+    case Type::Number:
+      return "number";
+    case Type::Bool:
+      return "bool";
+    case Type::String:
+      return "string";
+    case Type::Vector:
+      return "vector";
+    case Type::Color:
+      return "color";
+    case Type::List:
+      return "list";
+    case Type::Range:
+      return "range";
+    case Type::Material:
+      return "material";
+    case Type::Texture:
+      return "texture";
+    case Type::Object:
+      return "object";
+    case Type::Transform:
+      return "transform";
+    case Type::Macro:
+      return "macro";
+    case Type::Builtin:
+      return "builtin function";
+    case Type::Random:
+      return "random stream";
   }
   return "value";
 }
@@ -74,12 +89,18 @@ std::string num_text(double x) {
 
 std::string to_text(const Value& v, bool quote_strings) {
   switch (v.type) {
-    case Type::None: return "none";
-    case Type::Number: return num_text(v.num());
-    case Type::Bool: return v.truth() ? "true" : "false";
-    case Type::String: return quote_strings ? fmt::format("\"{}\"", as_string(v)) : as_string(v);
-    case Type::Vector: return fmt::format("<{}, {}, {}>", num_text(v.v.x), num_text(v.v.y), num_text(v.v.z));
-    case Type::Color: return fmt::format("rgb({}, {}, {})", num_text(v.v.x), num_text(v.v.y), num_text(v.v.z));
+    case Type::None:
+      return "none";
+    case Type::Number:
+      return num_text(v.num());
+    case Type::Bool:
+      return v.truth() ? "true" : "false";
+    case Type::String:
+      return quote_strings ? fmt::format("\"{}\"", as_string(v)) : as_string(v);
+    case Type::Vector:
+      return fmt::format("<{}, {}, {}>", num_text(v.v.x), num_text(v.v.y), num_text(v.v.z));
+    case Type::Color:
+      return fmt::format("rgb({}, {}, {})", num_text(v.v.x), num_text(v.v.y), num_text(v.v.z));
     case Type::List: {
       std::string s = "[";
       const auto& items = as_list(v);
@@ -92,13 +113,20 @@ std::string to_text(const Value& v, bool quote_strings) {
     case Type::Range:
       return fmt::format("{} {} {} step {}", num_text(v.v.x), v.inclusive ? "..=" : "..", num_text(v.v.y),
                          num_text(v.v.z));
-    case Type::Material: return "<material>";
-    case Type::Texture: return fmt::format("<texture {}>", *as_record(v).kind);
-    case Type::Object: return fmt::format("<object {}>", v.id);
-    case Type::Transform: return "<transform>";
-    case Type::Macro: return fmt::format("<macro {}>", *as_macro(v)->name);
-    case Type::Builtin: return "<builtin>";
-    case Type::Random: return "<random stream>";
+    case Type::Material:
+      return "<material>";
+    case Type::Texture:
+      return fmt::format("<texture {}>", *as_record(v).kind);
+    case Type::Object:
+      return fmt::format("<object {}>", v.id);
+    case Type::Transform:
+      return "<transform>";
+    case Type::Macro:
+      return fmt::format("<macro {}>", *as_macro(v)->name);
+    case Type::Builtin:
+      return "<builtin>";
+    case Type::Random:
+      return "<random stream>";
   }
   return "?";
 }
@@ -106,13 +134,18 @@ std::string to_text(const Value& v, bool quote_strings) {
 bool equal(const Value& a, const Value& b) {
   if (a.type != b.type) return false;
   switch (a.type) {
-    case Type::None: return true;
+    case Type::None:
+      return true;
     case Type::Number:
-    case Type::Bool: return a.v.x == b.v.x;
+    case Type::Bool:
+      return a.v.x == b.v.x;
     case Type::Vector:
-    case Type::Color: return a.v == b.v;
-    case Type::Range: return a.v == b.v && a.inclusive == b.inclusive;
-    case Type::String: return as_string(a) == as_string(b);
+    case Type::Color:
+      return a.v == b.v;
+    case Type::Range:
+      return a.v == b.v && a.inclusive == b.inclusive;
+    case Type::String:
+      return as_string(a) == as_string(b);
     case Type::List: {
       const auto& x = as_list(a);
       const auto& y = as_list(b);
@@ -121,9 +154,12 @@ bool equal(const Value& a, const Value& b) {
         if (!equal(x[i], y[i])) return false;
       return true;
     }
-    case Type::Object: return a.id == b.id && object_transform(a) == object_transform(b);
-    case Type::Builtin: return a.id == b.id;
-    default: return a.ref == b.ref;
+    case Type::Object:
+      return a.id == b.id && object_transform(a) == object_transform(b);
+    case Type::Builtin:
+      return a.id == b.id;
+    default:
+      return a.ref == b.ref;
   }
 }
 

@@ -17,8 +17,21 @@
 namespace rts::runtime {
 
 enum class Type : uint8_t {
-  None, Number, Bool, String, Vector, Color, List, Range, Material, Texture, Object, Transform,
-  Macro, Builtin, Random,
+  None,
+  Number,
+  Bool,
+  String,
+  Vector,
+  Color,
+  List,
+  Range,
+  Material,
+  Texture,
+  Object,
+  Transform,
+  Macro,
+  Builtin,
+  Random,
 };
 
 // "number", "vector", ... for messages; with_article gives "a number", "an object".
@@ -31,9 +44,9 @@ struct HeapValue {
 
 struct Value {
   Type type = Type::None;
-  bool inclusive = false;  // Range: end included (..=)
-  uint32_t id = 0;         // Object: NodeId; Builtin: index into the builtin table
-  glm::dvec3 v{0.0};       // Number/Bool: v.x; Vector/Color: x,y,z; Range: from, to, step
+  bool inclusive = false;          // Range: end included (..=)
+  uint32_t id = 0;                 // Object: NodeId; Builtin: index into the builtin table
+  glm::dvec3 v{0.0};               // Number/Bool: v.x; Vector/Color: x,y,z; Range: from, to, step
   std::shared_ptr<HeapValue> ref;  // String, List, Material, Texture, Macro, Random; Object: transform or null
 
   static Value none() { return {}; }

@@ -11,7 +11,7 @@ namespace rts::render {
 
 // Some unit vector perpendicular to unit `n`.
 inline Vec3 any_perpendicular(const Vec3& n) {
-  Vec3 ref = std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  Vec3 ref = std::abs(n.x) < tol::kReferenceAxisCosine ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
   return glm::normalize(glm::cross(n, ref));
 }
 

@@ -13,7 +13,7 @@ namespace rts::render {
 // Two unit tangents of a unit normal; for n = +y they are +x and +z.
 inline void plane_tangents(const Vec3& n, Vec3& t1, Vec3& t2) {
   // Project +x onto the plane unless the normal is (nearly) along x; then use +z instead.
-  Vec3 ref = std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1);
+  Vec3 ref = std::abs(n.x) < tol::kReferenceAxisCosine ? Vec3(1, 0, 0) : Vec3(0, 0, 1);
   t1 = glm::normalize(ref - n * glm::dot(n, ref));
   t2 = glm::cross(t1, n);
 }

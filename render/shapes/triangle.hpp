@@ -24,9 +24,7 @@ inline bool intersect_triangle(const Vec3& v0, const Vec3& v1, const Vec3& v2, c
   Vec3 e1 = v1 - v0, e2 = v2 - v0;
   Vec3 pvec = glm::cross(ray.direction, e2);
   double det = glm::dot(e1, pvec);
-  // Scale-free degeneracy test: |det| = |d . (e1 x e2)|, compared with |d| |e1 x e2|'s scale.
-  double scale = glm::length(ray.direction) * glm::length(e1) * glm::length(e2);
-  if (!(std::abs(det) > tol::kTriangleDeterminant * scale)) return false;
+  if (det == 0.0) return false;
   double inv_det = 1.0 / det;
   Vec3 tvec = ray.origin - v0;
   double u = glm::dot(tvec, pvec) * inv_det;
@@ -36,6 +34,11 @@ inline bool intersect_triangle(const Vec3& v0, const Vec3& v1, const Vec3& v2, c
   if (v < 0.0 || u + v > 1.0) return false;
   double tt = glm::dot(e2, qvec) * inv_det;
   if (!ray_t.surrounds(tt)) return false;
+  // Scale-free degeneracy test, done last since most candidates fail the bounds above:
+  // det = d . (e1 x e2) against |d| |e1| |e2| (squared, no sqrt). Zero-area triangles and
+  // rays in the triangle's plane fail it.
+  double scale2 = glm::dot(ray.direction, ray.direction) * glm::dot(e1, e1) * glm::dot(e2, e2);
+  if (!(det * det > tol::kTriangleDeterminant * tol::kTriangleDeterminant * scale2)) return false;
   t = tt;
   b1 = u;
   b2 = v;

@@ -67,10 +67,10 @@ std::string line_diff(const std::string& expected, const std::string& actual) {
     if (i < a.size() && j < b.size() && a[i] == b[j]) {
       script.push_back({' ', a[i]});
       ++i, ++j;
-    } else if (j < b.size() && (i == a.size() || lcs[i][j + 1] >= lcs[i + 1][j])) {
-      script.push_back({'+', b[j++]});
+    } else if (i < a.size() && (j == b.size() || lcs[i + 1][j] >= lcs[i][j + 1])) {
+      script.push_back({'-', a[i++]});  // removals first, as diff -u shows them
     } else {
-      script.push_back({'-', a[i++]});
+      script.push_back({'+', b[j++]});
     }
   }
   std::string out = "--- expected\n+++ actual\n";

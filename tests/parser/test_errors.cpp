@@ -45,7 +45,7 @@ TEST_CASE("errors in the middle point at the offending token", "[errors]") {
   CHECK(first_line_of_error("let x = 1 @") == "1:11: error: expected a statement, found '@'");
   CHECK(first_line_of_error("let x = 1 \xc3\xa9") == "1:11: error: expected a statement, found '\xc3\xa9'");
   CHECK(first_line_of_error("let x = 1 /* open") == "1:11: error: unterminated block comment (missing '*/')");
-  CHECK(first_line_of_error("if x { } else ") == "1:15: error: expected '{' or 'if' after 'else'");
+  CHECK(first_line_of_error("if x { } else ") == "1:14: error: expected '{' or 'if' after 'else'");
 }
 
 TEST_CASE("semantic checks done while parsing", "[errors]") {

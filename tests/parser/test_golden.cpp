@@ -105,3 +105,12 @@ TEST_CASE("every parse-error golden fails with exactly the diagnostic it names",
     }
   }
 }
+
+TEST_CASE("the golden diff shows removed, added and context lines", "[golden]") {
+  CHECK(line_diff("a\nb\nc\n", "a\nb\nc\n") == "");
+  CHECK(line_diff("a\nb\nc\n", "a\nB\nc\n") == "--- expected\n+++ actual\n a\n-b\n+B\n c\n");
+  CHECK(line_diff("1\n2\n3\n4\n5\n6\n7\n8\n9\n", "1\n2\n3\n4\n5\n6\n7\n8\n9\nX\n") ==
+        "--- expected\n+++ actual\n 8\n 9\n+X\n");
+  CHECK(line_diff("x\n1\n2\n3\n4\n5\n6\n7\ny\n", "X\n1\n2\n3\n4\n5\n6\n7\nY\n") ==
+        "--- expected\n+++ actual\n-x\n+X\n 1\n 2\n@@\n 6\n 7\n-y\n+Y\n");
+}

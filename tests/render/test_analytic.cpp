@@ -189,3 +189,38 @@ TEST_CASE("the integrator sees through the slab along the shifted ray", "[analyt
   Rgb straight = Tracer(s).trace(Ray{-5.0 * dir, dir});
   CHECK(straight.x == 0.0);
 }
+
+TEST_CASE("no shadow acne at tiny or huge scene scales", "[analytic]") {
+  // A sphere lit from the eye: every visible point faces the light and nothing occludes it,
+  // so no pixel on the sphere may fall back to ambient-only (self-shadowing from a spawned
+  // ray that starts below the surface).
+  for (double scale : {1e-4, 1.0, 1e5}) {
+    SceneDesc s;
+    s.settings.width = s.settings.height = 32;
+    s.has_camera = true;
+    s.camera.position = Vec3(0.3, 0.2, -5) * scale + Vec3(scale * 100, 0, 0);
+    s.camera.look_at = Vec3(scale * 100, 0, 0);
+    s.camera.fov = 30;
+    MaterialDesc m;
+    m.ambient = 0;
+    m.diffuse = 1;
+    m.reflect = Color(0.2);  // spawned reflection rays must not re-hit the sphere either
+    place(s, add_shape(s, Sphere{Vec3(scale * 100, 0, 0), scale}, add_material(s, m)));
+    LightDesc l;
+    l.position = s.camera.position;
+    place(s, add_light(s, l));
+    RenderOptions o;
+    o.aovs = {"depth"};
+    RenderResult r = render(s, o);
+    int sphere_pixels = 0, dark = 0;
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 32; ++x) {
+        if (r.aovs["depth"].at(x, y)[0] == 0.0f) continue;  // background
+        ++sphere_pixels;
+        if (r.color.at(x, y)[0] <= 0.0f) ++dark;
+      }
+    INFO("scale " << scale);
+    CHECK(sphere_pixels > 100);
+    CHECK(dark == 0);
+  }
+}

@@ -116,8 +116,8 @@ TEST_CASE("BVH build: every primitive appears once; leaves are small", "[bvh]") 
       uint32_t prim = bvh.order[n.offset + i];
       ++seen[prim];
       // The leaf box encloses its primitives.
-      CHECK(n.bounds.lo.x <= boxes[prim].lo.x);
-      CHECK(n.bounds.hi.y >= boxes[prim].hi.y);
+      CHECK(n.bounds().lo.x <= boxes[prim].lo.x);
+      CHECK(n.bounds().hi.y >= boxes[prim].hi.y);
     }
   }
   for (int count : seen) CHECK(count == 1);

@@ -1,6 +1,7 @@
 // Whole renders of small scenes: determinism whatever the thread count, seeds, NaN guards,
 // statistics, AOVs, and render errors.
 #include <cmath>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -286,4 +287,79 @@ TEST_CASE("write_png replaces a file only when the write succeeds", "[render]") 
   Image back = read_png(out.string());
   CHECK(back.width == 4);
   fs::remove_all(dir);
+}
+
+TEST_CASE("procedural textures move with their object's transform", "[render]") {
+  // A checkered plane seen from above; translating the plane by half a cell in x moves the
+  // cell boundaries by half a cell in the image (the texture lives in object space).
+  auto render_plane = [](double shift) {
+    SceneDesc s;
+    s.settings.width = 64;
+    s.settings.height = 8;
+    s.has_camera = true;
+    s.camera.projection = Projection::Orthographic;
+    s.camera.position = Vec3(0, 5, 0);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.camera.up = Vec3(0, 0, 1);
+    s.camera.view_width = 8;  // 8 pixels per unit
+    TextureDesc t;
+    t.kind = TextureKind::Checker;
+    t.color1 = Color(1, 1, 1);
+    t.color2 = Color(0, 0, 0);
+    s.textures.push_back(t);
+    MaterialDesc m = emissive(Color(0));
+    m.ambient = 1;
+    m.texture = 0;
+    place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, m)), translate(Vec3(shift, 0, 0)));
+    RenderResult r = render(s, RenderOptions{});
+    std::vector<bool> row;
+    for (int x = 0; x < 64; ++x) row.push_back(r.color.at(x, 4)[0] > 0.5f);
+    return row;
+  };
+  std::vector<bool> base = render_plane(0.0), shifted = render_plane(0.5);
+  int changes = 0;
+  for (int x = 0; x < 64; ++x) changes += base[x] != shifted[x];
+  CHECK(changes == 32);  // half of every cell flips
+  for (int x = 4; x < 64; ++x) CHECK(shifted[x] == base[x - 4]);  // moved by 4 pixels
+}
+
+TEST_CASE("image textures use the mesh's UVs", "[render]") {
+  namespace fs = std::filesystem;
+  fs::path png = fs::temp_directory_path() / "rts_render_uv_test.png";
+  Image tex(2, 2);  // top row red, green; bottom row blue, white (v = 0 is the bottom row)
+  const float colors[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < 3; ++c) tex.at(i % 2, i / 2)[c] = colors[i][c];
+  write_png(png.string(), tex, 8, Encoding::Linear);
+
+  auto mesh = std::make_shared<MeshData>();
+  mesh->positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  mesh->uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  mesh->indices = {0, 1, 2, 0, 2, 3};
+  SceneDesc s;
+  s.meshes.push_back(mesh);
+  s.settings.width = s.settings.height = 16;
+  s.has_camera = true;
+  s.camera.projection = Projection::Orthographic;
+  s.camera.position = Vec3(0, 0, -5);
+  s.camera.view_width = 2;
+  TextureDesc t;
+  t.kind = TextureKind::Image;
+  t.image_path = png.string();
+  s.textures.push_back(t);
+  MaterialDesc m = emissive(Color(0));
+  m.ambient = 1;
+  m.texture = 0;
+  place(s, add_shape(s, MeshRef{0, true}, add_material(s, m)));
+  RenderResult r = render(s, RenderOptions{});
+  fs::remove(png);
+  // Sample well inside each quadrant (bilinear filtering blends near the centre lines).
+  auto dominant = [&](int x, int y) {
+    const float* p = r.color.at(x, y);
+    return std::array<bool, 3>{p[0] > 0.5f, p[1] > 0.5f, p[2] > 0.5f};
+  };
+  CHECK(dominant(1, 1) == std::array<bool, 3>{true, false, false});    // top left: red
+  CHECK(dominant(14, 1) == std::array<bool, 3>{false, true, false});   // top right: green
+  CHECK(dominant(1, 14) == std::array<bool, 3>{false, false, true});   // bottom left: blue
+  CHECK(dominant(14, 14) == std::array<bool, 3>{true, true, true});    // bottom right: white
 }

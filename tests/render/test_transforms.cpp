@@ -138,3 +138,68 @@ TEST_CASE("planes stay outside the BVH but are hit and occlude", "[transforms]")
   CHECK(w.occluded(Ray{Vec3(3, 5, 0), Vec3(0, -1, 0)}, Interval(0, 10)));
   CHECK_FALSE(w.occluded(Ray{Vec3(3, 5, 0), Vec3(0, -1, 0)}, Interval(0, 5)));
 }
+
+TEST_CASE("every primitive kind honours its instance transform", "[transforms]") {
+  // Each shape is built along +y at the origin, then rotated 90 degrees about z (so +y goes
+  // to -x), scaled 2x and moved to z = 10; rays must meet it where that geometry lies.
+  Mat4 m = translate(Vec3(0, 0, 10)) * scale(Vec3(2)) * rotate_deg(90, Vec3(0, 0, 1));
+  auto first_hit = [&](ShapeGeometry g, Ray ray) {
+    SceneDesc s;
+    place(s, add_shape(s, std::move(g)), m);
+    World w(s, flatten_scene(s));
+    WorldHit h;
+    bool found = w.intersect(ray, Interval::positive(), h);
+    return std::make_pair(found, h);
+  };
+  SECTION("cylinder along -x, radius 2 after scaling") {
+    auto [found, h] = first_hit(Cylinder{Vec3(0), Vec3(0, 1, 0), 1.0, true}, Ray{Vec3(-1, 0, 0), Vec3(0, 0, 1)});
+    REQUIRE(found);
+    CHECK(h.t == Approx(8.0));  // surface at z = 10 - 2
+    check_vec(h.normal, Vec3(0, 0, -1));
+  }
+  SECTION("cone along -x: radius 2 at the base (x=0) shrinking to 0 at x=-2") {
+    auto [found, h] = first_hit(Cone{Vec3(0), Vec3(0, 1, 0), 1.0, 0.0, false}, Ray{Vec3(-1, 0, 0), Vec3(0, 0, 1)});
+    REQUIRE(found);
+    CHECK(h.t == Approx(9.0));  // radius 1 halfway
+    check_vec(h.normal, glm::normalize(Vec3(-1, 0, -1)), 1e-9);  // 45 degree slope
+  }
+  SECTION("disc facing -x") {
+    auto [found, h] = first_hit(Disc{Vec3(0), Vec3(0, 1, 0), 1.0, 0.0}, Ray{Vec3(-5, 0, 10.5), Vec3(1, 0, 0)});
+    REQUIRE(found);
+    CHECK(h.t == Approx(5.0));
+    check_vec(h.normal, Vec3(-1, 0, 0));
+  }
+  SECTION("triangle") {
+    auto [found, h] = first_hit(triangle(Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)), Ray{Vec3(-0.5, 0.5, 0), Vec3(0, 0, 1)});
+    REQUIRE(found);
+    CHECK(h.t == Approx(10.0));
+    check_vec(h.normal, Vec3(0, 0, 1));
+  }
+  SECTION("plane y = 0 becomes x = 0") {
+    auto [found, h] = first_hit(Plane{Vec3(0, 1, 0), 0.0}, Ray{Vec3(3, 0, 10), Vec3(-1, 0, 0)});
+    REQUIRE(found);
+    CHECK(h.t == Approx(3.0));
+    check_vec(h.normal, Vec3(-1, 0, 0));
+  }
+}
+
+TEST_CASE("identical mesh data loaded twice share one BVH", "[transforms]") {
+  auto make = [] {
+    auto m = std::make_shared<MeshData>();
+    m->positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    m->indices = {0, 1, 2};
+    m->source = "tri.obj";
+    return m;
+  };
+  SceneDesc s;
+  s.meshes = {make(), make()};
+  auto other = make();
+  other->positions[2].y = 2;  // different content: its own BVH
+  s.meshes.push_back(other);
+  for (MeshId id = 0; id < 3; ++id) place(s, add_shape(s, MeshRef{id, true}), translate(Vec3(3.0 * id, 0, 0)));
+  World w(s, flatten_scene(s));
+  CHECK(w.mesh_bvh_count() == 2);
+  WorldHit h;
+  CHECK(w.intersect(Ray{Vec3(3, 0, -1), Vec3(0, 0, 1)}, Interval::positive(), h));
+  CHECK(w.intersect(Ray{Vec3(6, 1.5, -1), Vec3(0, 0, 1)}, Interval::positive(), h));
+}

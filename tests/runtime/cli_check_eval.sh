@@ -50,6 +50,11 @@ contains "$tmp/err" "cannot find include file 'lib.rts'"
 expect 0 "$rts" eval "$tmp/main.rts" -I "$tmp/lib"
 contains "$tmp/out" "sphere center <0, 0, 0> radius 3"
 
+# print() writes located lines to stderr; string defines need their quotes.
+printf 'let who = "nobody"\nprint("hello", who, 1 + 1, <1, 2, 3>)\n' >"$tmp/print.rts"
+expect 0 "$rts" check "$tmp/print.rts" -D 'who="world"'
+contains "$tmp/err" "print.rts:2:1: print: hello world 2 <1, 2, 3>"
+
 # Limits and their flags.
 printf 'let n = 0\nwhile n < 5000 { n += 1 }\n' >"$tmp/loop.rts"
 expect 1 "$rts" check "$tmp/loop.rts" --max-iterations 100

@@ -1,16 +1,17 @@
 // Evaluating whole programs: scopes, loops, macros, recursion, builtins, materials, textures,
 // transforms, placement and instancing, includes and defines.
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "eval_helpers.hpp"
+#include "runtime/scene_summary.hpp"
 
 using namespace rts;
 using namespace rts::render;
@@ -94,8 +95,9 @@ TEST_CASE("recursion works to the limit and stops past it", "[eval]") {
 }
 
 TEST_CASE("macros place objects into the caller's current group", "[eval]") {
-  SceneDesc s = eval_text("macro two() { sphere { radius = 1 }  box { min = <0,0,0> max = <1,1,1> } }\n"
-                          "group { two() }\n two()");
+  SceneDesc s = eval_text(
+      "macro two() { sphere { radius = 1 }  box { min = <0,0,0> max = <1,1,1> } }\n"
+      "group { two() }\n two()");
   REQUIRE(s.groups.size() == 1);
   CHECK(s.groups[0].children.size() == 2);
   CHECK(s.roots.size() == 3);  // the group and the second call's two objects
@@ -143,16 +145,17 @@ TEST_CASE("one definition placed many times is one shape and many instances", "[
 }
 
 TEST_CASE("transforms compose in written order; rotate is in degrees x then y then z", "[eval][transform]") {
-  SceneDesc s = eval_text("sphere { radius = 1 } scale 2 translate <1, 0, 0>\n"
-                          "sphere { radius = 1 } rotate <0, 90, 0>\n"
-                          "sphere { radius = 1 } rotate <90, 90, 0>\n"
-                          "sphere { radius = 1 } matrix [1,0,0, 0,1,0, 0,0,1, 4,5,6]");
+  SceneDesc s = eval_text(
+      "sphere { radius = 1 } scale 2 translate <1, 0, 0>\n"
+      "sphere { radius = 1 } rotate <0, 90, 0>\n"
+      "sphere { radius = 1 } rotate <90, 90, 0>\n"
+      "sphere { radius = 1 } matrix [1,0,0, 0,1,0, 0,0,1, 4,5,6]");
   REQUIRE(s.roots.size() == 4);
   auto apply = [&](std::size_t i, glm::dvec3 p) { return glm::dvec3(s.roots[i].transform * glm::dvec4(p, 1)); };
   CHECK(apply(0, {1, 0, 0}) == glm::dvec3(3, 0, 0));  // scaled, then moved
   glm::dvec3 r = apply(1, {1, 0, 0});
   CHECK(r.x == Approx(0).margin(1e-12));
-  CHECK(r.z == Approx(-1));  // POV-Ray / glm convention
+  CHECK(r.z == Approx(-1));            // POV-Ray / glm convention
   glm::dvec3 q = apply(2, {0, 1, 0});  // x first: y → z; then about y: z → x
   CHECK(q.x == Approx(1));
   CHECK(q.y == Approx(0).margin(1e-12));
@@ -211,7 +214,8 @@ TEST_CASE("textures from builtins and blocks, with transforms", "[eval][texture]
 }
 
 TEST_CASE("settings and camera blocks configure the scene", "[eval]") {
-  SceneDesc s = eval_text("settings { width = 100  height = 50  samples = 4 }  camera { position = <0, 1, -3>  fov = 45 }");
+  SceneDesc s =
+      eval_text("settings { width = 100  height = 50  samples = 4 }  camera { position = <0, 1, -3>  fov = 45 }");
   CHECK(s.settings.width == 100);
   CHECK(s.settings.height == 50);
   CHECK(s.settings.samples == 4);
@@ -233,7 +237,8 @@ TEST_CASE("defines replace the first top-level let of the main file", "[eval][de
   CHECK(probes("let q = 1 / 0  let v = 0  probe(q)", opts) == std::vector<double>{2});
   EvalOptions unused;
   unused.defines = {{"nothing", "3"}};
-  CHECK_THAT(test::eval_warnings("let a = 1", unused), Catch::Contains("define 'nothing=3' matches no top-level 'let nothing'"));
+  CHECK_THAT(test::eval_warnings("let a = 1", unused),
+             Catch::Contains("define 'nothing=3' matches no top-level 'let nothing'"));
 }
 
 TEST_CASE("includes resolve relative to the including file, then -I paths", "[eval][include]") {
@@ -254,4 +259,24 @@ TEST_CASE("includes resolve relative to the including file, then -I paths", "[ev
   REQUIRE(s.shapes.size() == 1);
   CHECK(std::get<Sphere>(s.shapes[0].geometry).radius == 111);
   fs::remove_all(dir);
+}
+
+TEST_CASE("check's summary counts placed instances through groups and bounds them in world space", "[eval][summary]") {
+  SceneDesc s = eval_text(
+      "let ball = sphere { radius = 1 }\n"
+      "let pair = group { ball  ball translate <4, 0, 0> }\n"
+      "pair translate <0, 10, 0>\n"
+      "pair scale 2\n"
+      "plane { normal = <0, 1, 0> }\n"
+      "point_light { position = <0, 5, 0> }\n");
+  runtime::SceneSummary sum = runtime::summarize(s);
+  CHECK(sum.shapes["sphere"] == 4);  // 2 definitions' worth of placements: 2 groups x 2
+  CHECK(sum.shapes["plane"] == 1);
+  CHECK(sum.lights["point_light"] == 1);
+  CHECK(sum.shape_definitions == 2);
+  CHECK(sum.instances == 2 + 4 + 1 + 1);  // groups, their children, plane, light
+  CHECK(sum.unbounded);
+  REQUIRE(sum.has_bounds);
+  CHECK(sum.bounds_min == glm::dvec3(-2, -2, -2));  // the scaled pair: spheres of radius 2
+  CHECK(sum.bounds_max == glm::dvec3(10, 11, 2));   // <8,0,0> + 2, and <4,10,0> + 1
 }

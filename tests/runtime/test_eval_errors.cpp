@@ -53,14 +53,16 @@ TEST_CASE("a catalogue of runtime errors", "[errors]") {
   CHECK(eval_diagnostic("b = 2").message.find("cannot assign to undefined name 'b'") == 0);
   CHECK(eval_diagnostic("macro m(a) { }\nm(1, 2)").message == "macro 'm' takes at most 1 argument, got 2");
   CHECK(eval_diagnostic("macro m(a) { }\nm()").message == "missing argument 'a' in call to macro 'm'");
-  CHECK(eval_diagnostic("macro m(size) { }\nm(szie = 1)").message == "macro 'm' has no parameter 'szie'; did you mean 'size'?");
+  CHECK(eval_diagnostic("macro m(size) { }\nm(szie = 1)").message ==
+        "macro 'm' has no parameter 'szie'; did you mean 'size'?");
   CHECK(eval_diagnostic("shpere { radius = 1 }").message == "unknown block kind 'shpere'; did you mean 'sphere'?");
   CHECK(eval_diagnostic("if 1 { }").message == "'if' condition must be a bool, got a number");
   CHECK(eval_diagnostic("break").message == "'break' outside a loop");
   CHECK(eval_diagnostic("return 1").message == "'return' outside a macro");
   CHECK(eval_diagnostic("let v = <1, 2>").message == "vectors have 3 components, this one has 2");
   CHECK(eval_diagnostic("for i in 0 .. 1 step 0 { }").message == "a range step must not be zero");
-  CHECK(eval_diagnostic("sphere { radius = 1  sphere { radius = 2 } }").message.find("objects can only be placed") == 0);
+  CHECK(eval_diagnostic("sphere { radius = 1  sphere { radius = 2 } }").message.find("objects can only be placed") ==
+        0);
 }
 
 TEST_CASE("limits stop runaway scenes", "[errors][limits]") {

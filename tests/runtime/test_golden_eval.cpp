@@ -8,11 +8,10 @@
 #include <sstream>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include "eval_helpers.hpp"
 #include "runtime/evaluator.hpp"
-
-#include <fmt/format.h>
 
 namespace fs = std::filesystem;
 using namespace rts;
@@ -68,11 +67,16 @@ EvalOptions options_for(const std::string& text) {
       REQUIRE(eq != std::string::npos);
       std::string name = w.substr(0, eq);
       unsigned long long value = std::stoull(w.substr(eq + 1));
-      if (name == "max_iterations") opts.limits.max_iterations = value;
-      else if (name == "max_recursion") opts.limits.max_recursion = static_cast<unsigned>(value);
-      else if (name == "max_objects") opts.limits.max_objects = value;
-      else if (name == "max_mesh_triangles") opts.limits.max_mesh_triangles = value;
-      else FAIL("unknown limit '" << name << "' in a golden's // limits: line");
+      if (name == "max_iterations")
+        opts.limits.max_iterations = value;
+      else if (name == "max_recursion")
+        opts.limits.max_recursion = static_cast<unsigned>(value);
+      else if (name == "max_objects")
+        opts.limits.max_objects = value;
+      else if (name == "max_mesh_triangles")
+        opts.limits.max_mesh_triangles = value;
+      else
+        FAIL("unknown limit '" << name << "' in a golden's // limits: line");
     }
   }
   return opts;

@@ -1,11 +1,11 @@
 // SceneBuilder: categories, validation, SceneDesc contents, meshes (inline and OBJ).
-#include <cstdio>
-#include <functional>
-#include <sstream>
-
 #include <unistd.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <sstream>
 
 #include <catch2/catch.hpp>
 
@@ -172,7 +172,8 @@ TEST_CASE("inline meshes check indices and count triangles against the limit", "
 
 TEST_CASE("OBJ meshes load, resolve relative paths and report their own line numbers", "[builder]") {
   TempDir dir;
-  dir.write("quad.obj", "# a quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
+  dir.write("quad.obj",
+            "# a quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
   dir.write("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\n\nf 1 2 7\n");
   dir.write("bad_vertex.obj", "v 0 0 0\nv 1 zero 0\n");
   std::string scene_file = (dir.path / "scene.rts").string();
@@ -189,10 +190,11 @@ TEST_CASE("OBJ meshes load, resolve relative paths and report their own line num
   CHECK(m.positions.size() == 4);
   CHECK(m.uvs.size() == 4);
   CHECK(m.normals.size() == 4);  // computed: smooth = true by default
-  CHECK_THAT(scene_error([&] { load("bad_index.obj"); }), Catch::Contains("malformed mesh file bad_index.obj:5:") &&
-                                                              Catch::Contains("out of range"));
+  CHECK_THAT(scene_error([&] { load("bad_index.obj"); }),
+             Catch::Contains("malformed mesh file bad_index.obj:5:") && Catch::Contains("out of range"));
   CHECK_THAT(scene_error([&] { load("bad_vertex.obj"); }), Catch::Contains("bad_vertex.obj:2:"));
-  CHECK_THAT(scene_error([&] { load("missing.obj"); }), Catch::Contains("missing.obj") && Catch::Contains("no such file"));
+  CHECK_THAT(scene_error([&] { load("missing.obj"); }),
+             Catch::Contains("missing.obj") && Catch::Contains("no such file"));
 }
 
 TEST_CASE("groups and dumps", "[builder]") {

@@ -47,7 +47,8 @@ TEST_CASE("vectors and colors are component-wise and scale by numbers", "[values
 
 TEST_CASE("operator type errors name both operands", "[values]") {
   CHECK(op_error(BinaryOp::Add, Value::vector({1, 2, 3}), Value::string("x")) == "cannot add a vector and a string");
-  CHECK(op_error(BinaryOp::Add, Value::vector({1, 2, 3}), Value::color({1, 2, 3})) == "cannot add a vector and a color");
+  CHECK(op_error(BinaryOp::Add, Value::vector({1, 2, 3}), Value::color({1, 2, 3})) ==
+        "cannot add a vector and a color");
   CHECK(op_error(BinaryOp::Sub, Value::number(1), Value::vector({1, 2, 3})) == "cannot subtract a number and a vector");
   CHECK(op_error(BinaryOp::Lt, Value::vector({1, 2, 3}), Value::number(1)).find("cannot compare") == 0);
 }
@@ -67,7 +68,8 @@ TEST_CASE("strings and lists concatenate", "[values]") {
 }
 
 TEST_CASE("equality is structural for plain values", "[values]") {
-  CHECK(equal(Value::list({Value::number(1), Value::string("a")}), Value::list({Value::number(1), Value::string("a")})));
+  CHECK(
+      equal(Value::list({Value::number(1), Value::string("a")}), Value::list({Value::number(1), Value::string("a")})));
   CHECK_FALSE(equal(Value::number(1), Value::boolean(true)));
   CHECK_FALSE(equal(Value::vector({1, 2, 3}), Value::color({1, 2, 3})));
 }
@@ -93,7 +95,7 @@ TEST_CASE("range counts follow the end rule", "[values]") {
   CHECK(range_count(range(0, 20, 1, false)) == 20);
   CHECK(range_count(range(0, 20, 1, true)) == 21);
   CHECK(range_count(range(0, 20, 2, false)) == 10);
-  CHECK(range_count(range(0, 1, 0.1, true)) == 11);   // 1.0 included despite rounding
+  CHECK(range_count(range(0, 1, 0.1, true)) == 11);  // 1.0 included despite rounding
   CHECK(range_count(range(0, 1, 0.25, false)) == 4);
   CHECK(range_count(range(5, 0, -1, false)) == 5);
   CHECK(range_count(range(5, 0, 1, false)) == 0);

@@ -1,0 +1,42 @@
+// The images a render fills in, pixel by pixel: color, per-pixel sample statistics and the
+// optional AOVs. Allocated up front (an allocation failure is a RenderError, not a crash);
+// workers write disjoint pixels, so no locking is needed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/renderer.hpp"
+
+namespace rts::render {
+
+struct AovFlags {
+  bool normal = false, depth = false, albedo = false;
+  bool any() const { return normal || depth || albedo; }
+};
+
+// "normal", "depth", "albedo"; anything else is a RenderError.
+AovFlags parse_aovs(const std::vector<std::string>& names);
+
+struct Frame {
+  int width = 0, height = 0;
+  AovFlags aovs;
+  Image* color = nullptr;
+  std::vector<float>* mean = nullptr;      // RenderStats::pixels
+  std::vector<float>* variance = nullptr;
+  Image* normal = nullptr;                 // null unless requested
+  Image* albedo = nullptr;
+  std::vector<float> depth;                // raw distances, < 0 where nothing is hit
+
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
+};
+
+// Sizes result's images and statistics for width x height and points `frame` at them.
+// Throws RenderError (at `where`) when memory runs out.
+void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, SourceRef where,
+                    Frame& frame);
+
+// Normalises the raw depths into result.aovs["depth"]: 1 at the farthest hit, 0 for misses.
+void finish_depth(RenderResult& result, const Frame& frame);
+
+}  // namespace rts::render
