@@ -14,7 +14,9 @@ int main(int argc, char** argv) {
   CLI::App app{"rts — a scene-description language and ray tracer"};
   app.name("rts");
   app.set_version_flag("--version", std::string("rts ") + RTS_VERSION);
-  app.require_subcommand(1);
+  // At most one command; "none" is reported after parsing, so that an unknown flag or command
+  // is named in the message rather than hidden behind "a subcommand is required".
+  app.require_subcommand(0, 1);
   app.fallthrough(false);
 
   cli::CommandContext ctx;
@@ -23,6 +25,19 @@ int main(int argc, char** argv) {
   cli::add_check_command(app, ctx);
   cli::add_eval_command(app, ctx);
   cli::add_render_command(app, ctx);
+
+  // A first word that is neither an option nor a command is most likely a misspelt command.
+  auto is_command = [&](const std::string& word) {
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+      if (sub->get_name() == word) return true;
+    return false;
+  };
+  if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
+    std::cerr << "rts: unknown command '" << argv[1]
+              << "' (expected one of: parse, check, eval, render)\n";
+    std::cerr << "Run 'rts --help' for usage.\n";
+    return kExitUsage;
+  }
 
   try {
     app.parse(argc, argv);
@@ -40,6 +55,11 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "rts: internal error: " << e.what() << "\n";
     return kExitInternal;
+  }
+  if (app.get_subcommands().empty()) {
+    std::cerr << "rts: no command given (expected one of: parse, check, eval, render)\n";
+    std::cerr << "Run 'rts --help' for usage.\n";
+    return kExitUsage;
   }
   return ctx.exit_code;
 }
