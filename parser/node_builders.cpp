@@ -15,25 +15,25 @@ namespace {
 
 using namespace rts::ast;
 
-[[noreturn]] void too_high(SourceLoc loc) {
+[[noreturn]] void too_high(const ParseState& st, SourceLoc loc) {
   throw LanguageError(loc, fmt::format("expression nested too deeply (the syntax tree would be "
                                        "deeper than {} levels; split it with 'let')",
-                                       kMaxTreeHeight));
+                                       st.max_height));
 }
 
-uint32_t checked_height(uint32_t h, SourceLoc loc) {
-  if (h > kMaxTreeHeight) too_high(loc);
+uint32_t checked_height(const ParseState& st, uint32_t h, SourceLoc loc) {
+  if (h > st.max_height) too_high(st, loc);
   return h;
 }
 
 void push_expr(ParseState& st, ExprPtr e, uint32_t height) {
   SourceLoc loc = e->loc;
-  st.exprs.push_back({std::move(e), checked_height(height, loc)});
+  st.exprs.push_back({std::move(e), checked_height(st, height, loc)});
 }
 
 void push_stmt(ParseState& st, StmtPtr s, uint32_t height) {
   SourceLoc loc = s->loc;
-  st.stmts.push_back({std::move(s), checked_height(height, loc)});
+  st.stmts.push_back({std::move(s), checked_height(st, height, loc)});
 }
 
 Sized<ExprPtr> pop_expr(ParseState& st) {
@@ -294,7 +294,7 @@ void build_binary(ParseState& st, SourceLoc op_loc, BinaryOp op) {
   Sized<ExprPtr> lhs = pop_expr(st);
   SourceLoc loc = lhs.node->loc;
   uint32_t h = std::max(lhs.height, rhs.height) + 1;
-  if (h > kMaxTreeHeight) too_high(op_loc);
+  checked_height(st, h, op_loc);
   push_expr(st, std::make_unique<BinaryExpr>(loc, op, std::move(lhs.node), std::move(rhs.node), op_loc), h);
 }
 
@@ -315,7 +315,7 @@ void build_transform(ParseState& st, SourceLoc op_loc, TransformOp op) {
   Sized<ExprPtr> object = pop_expr(st);
   SourceLoc loc = object.node->loc;
   uint32_t h = std::max(arg.height, object.height) + 1;
-  if (h > kMaxTreeHeight) too_high(op_loc);
+  checked_height(st, h, op_loc);
   push_expr(st, std::make_unique<TransformExpr>(loc, std::move(object.node), op, std::move(arg.node), op_loc), h);
 }
 
@@ -323,7 +323,7 @@ void build_member(ParseState& st) {
   NamePiece member = pop_name(st);
   Sized<ExprPtr> object = pop_expr(st);
   SourceLoc loc = object.node->loc;
-  if (object.height + 1 > kMaxTreeHeight) too_high(member.loc);
+  checked_height(st, object.height + 1, member.loc);
   push_expr(st, std::make_unique<MemberExpr>(loc, std::move(object.node), member.name, member.loc),
             object.height + 1);
 }
@@ -414,7 +414,7 @@ void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {
   Body body;
   body.open_loc = loc;
   body.stmts.push_back(std::move(stmt));
-  st.bodies.push_back({std::move(body), checked_height(h + 1, loc)});
+  st.bodies.push_back({std::move(body), checked_height(st, h + 1, loc)});
 }
 
 void build_for(ParseState& st, SourceLoc loc) {

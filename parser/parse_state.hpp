@@ -6,6 +6,7 @@
 // the stacks never hold pieces of an abandoned alternative.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -22,8 +23,10 @@ namespace rts::parse_detail {
 
 // Deepest syntax tree the parser builds (operator chains such as 1+1+...+1 included):
 // everything that walks the tree afterwards (printer, evaluator, destructors) recurses, so
-// the tree height is capped to keep their stacks safe.
+// the tree height is capped to keep their stacks safe. Each level of bracket nesting adds
+// up to about three levels of tree, so a larger nesting limit raises the cap with it.
 inline constexpr uint32_t kMaxTreeHeight = 1024;
+inline constexpr uint32_t kTreeLevelsPerNesting = 4;
 
 // A piece on a value stack, with the height of the subtree it roots.
 template <typename T>
@@ -46,10 +49,12 @@ struct Open {
 };
 
 struct ParseState {
-  ParseState(const SourceFile& f, const ParseLimits& l) : file(&f), limits(l) {}
+  ParseState(const SourceFile& f, const ParseLimits& l)
+      : file(&f), limits(l), max_height(std::max(kMaxTreeHeight, kTreeLevelsPerNesting * l.max_nesting)) {}
 
   const SourceFile* file;
   ParseLimits limits;
+  uint32_t max_height;  // of the syntax tree
   uint32_t depth = 0;  // current nesting of brackets, bodies and prefix operators
 
   std::vector<Sized<ast::ExprPtr>> exprs;

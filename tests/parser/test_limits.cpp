@@ -87,3 +87,13 @@ TEST_CASE("many statements in a row are flat, not nested", "[limits]") {
   CHECK(error_of(repeat("sphere { radius = 1 }\n", kHuge)) == "");
   CHECK(error_of(cat({"let xs = [", repeat("1, ", kHuge), "]"})) == "");
 }
+
+TEST_CASE("a larger nesting limit raises the tree-height cap with it", "[limits]") {
+  // 400 nested groups make a tree about 1200 levels deep, past the default cap of 1024.
+  constexpr int kDeep = 400;
+  rts::ParseLimits limits;
+  limits.max_nesting = kDeep;
+  CHECK(error_of(cat({repeat("group { ", kDeep), repeat("}", kDeep)}), limits) == "");
+  CHECK(first_line_of_error(cat({repeat("group { ", kDeep + 1), repeat("}", kDeep + 1)}), limits)
+            .find("nesting too deep (more than 400 levels)") != std::string::npos);
+}
