@@ -150,7 +150,9 @@ void SceneBuilder::settings(ParamSet& ps) {
   non_negative_color(ps, "ambient_light", s.ambient_light);
   if (ps.has("seed")) {
     double seed = ps.number("seed", 0);
-    require(ps, "seed", seed >= 0 && std::floor(seed) == seed, "a whole number >= 0", seed);
+    constexpr double kMaxExactWhole = 9007199254740992.0;  // 2^53: larger doubles skip integers
+    require(ps, "seed", seed >= 0 && seed <= kMaxExactWhole && std::floor(seed) == seed,
+            "a whole number from 0 to 2^53", seed);
     s.seed = static_cast<uint64_t>(seed);
   }
   s.loc = ps.loc();

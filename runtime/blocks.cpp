@@ -81,9 +81,11 @@ Value Interpreter::eval_block(const ast::BlockExpr& e) {
       rec->kind = e.kind_name;
       rec->loc = e.loc;
       collect_properties(e.body, rec->props, false);
+      rec->update_depth();
       Value v;
       v.type = cat == render::BlockCategory::Material ? Type::Material : Type::Texture;
       v.ref = std::move(rec);
+      check_nesting(v, e.loc);
       return v;
     }
     default:
@@ -123,9 +125,11 @@ Value Interpreter::eval_with(const ast::WithExpr& e) {
   rec->built_id = render::kNoId;
   rec->loc = e.loc;
   collect_properties(e.body, rec->props, false);
+  rec->update_depth();
   Value v;
   v.type = base.type;
   v.ref = std::move(rec);
+  check_nesting(v, e.loc);
   return v;
 }
 
@@ -134,9 +138,11 @@ Value Interpreter::make_texture(ast::Symbol kind, std::vector<Property> props, S
   rec->kind = kind;
   rec->props = std::move(props);
   rec->loc = loc;
+  rec->update_depth();
   Value v;
   v.type = Type::Texture;
   v.ref = std::move(rec);
+  check_nesting(v, loc);
   return v;
 }
 

@@ -211,8 +211,10 @@ Value image_texture(BuiltinCall& c) { return texture(c, "image_texture", {"file"
 
 // random(seed) makes a stream; rand(r) draws from it in [0, 1), rand(r, lo, hi) in [lo, hi).
 Value random(BuiltinCall& c) {
+  // Seeds are whole numbers a double holds exactly, so the same text is the same seed.
+  constexpr double kMaxExactWhole = 9007199254740992.0;  // 2^53
   double seed = num(c, 0);
-  if (seed < 0 || std::floor(seed) != seed) bad_arg(c, 0, "a whole number >= 0");
+  if (seed < 0 || seed > kMaxExactWhole || std::floor(seed) != seed) bad_arg(c, 0, "a whole number from 0 to 2^53");
   Value v;
   v.type = Type::Random;
   v.ref = std::make_shared<RandomValue>(static_cast<uint64_t>(seed));

@@ -111,11 +111,13 @@ void Interpreter::run_program(const ast::Program& program, bool is_main) {
   for (const ast::StmtPtr& s : program.stmts) {
     if (is_main && s->kind == ast::StmtKind::Let) {
       const auto& let = static_cast<const ast::LetStmt&>(*s);
+      // The last -D of a name wins (like repeated command-line options); it applies once.
       DefineExpr* def = nullptr;
       for (DefineExpr& d : defines_)
         if (d.name == let.name && !d.used) def = &d;
       if (def) {
-        def->used = true;
+        for (DefineExpr& d : defines_)
+          if (d.name == let.name) d.used = true;
         declare(let.name, eval(*def->expr), let.name_loc);
         continue;
       }
@@ -393,6 +395,11 @@ Flow Interpreter::exec_while(const ast::WhileStmt& s) {
 // Expressions
 // ---------------------------------------------------------------------------------------
 
+void Interpreter::check_nesting(const Value& v, SourceLoc loc) const {
+  if (nesting_depth(v) > kMaxValueNesting)
+    fail(loc, fmt::format("lists and materials nested more than {} deep", kMaxValueNesting));
+}
+
 double Interpreter::expect_number(const ast::Expr& e, const char* what) {
   Value v = eval(e);
   if (v.type != Type::Number) fail(e.loc, fmt::format("{} must be a number, got {}", what, with_article(v.type)));
@@ -424,7 +431,9 @@ Value Interpreter::eval(const ast::Expr& e) {
       std::vector<Value> items;
       items.reserve(le.elements.size());
       for (const ast::ExprPtr& x : le.elements) items.push_back(eval(*x));
-      return Value::list(std::move(items));
+      Value list = Value::list(std::move(items));
+      check_nesting(list, e.loc);
+      return list;
     }
     case ast::ExprKind::Unary:
       return eval_unary(static_cast<const ast::UnaryExpr&>(e));

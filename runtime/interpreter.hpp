@@ -115,6 +115,8 @@ class Interpreter {
   Value eval_range(const ast::RangeExpr& e);
   Value call_macro(const ast::MacroStmt& m, const ast::CallExpr& call);
   double expect_number(const ast::Expr& e, const char* what);
+  // Bounds how deep lists and records nest (their printing and freeing recurse).
+  void check_nesting(const Value& v, SourceLoc loc) const;
 
   // blocks, `with`, transforms, placement (blocks.cpp)
   Value eval_block(const ast::BlockExpr& e);

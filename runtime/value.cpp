@@ -1,5 +1,6 @@
 #include "runtime/value.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -54,6 +55,27 @@ Value Value::string(std::string s) {
   r.type = Type::String;
   r.ref = std::make_shared<StringValue>(std::move(s));
   return r;
+}
+
+ListValue::ListValue(std::vector<Value> i) : items(std::move(i)), depth(1) {
+  for (const Value& v : items) depth = std::max(depth, nesting_depth(v) + 1);
+}
+
+void RecordValue::update_depth() {
+  depth = 1;
+  for (const Property& p : props) depth = std::max(depth, nesting_depth(p.value) + 1);
+}
+
+uint32_t nesting_depth(const Value& v) {
+  switch (v.type) {
+    case Type::List:
+      return static_cast<const ListValue&>(*v.ref).depth;
+    case Type::Material:
+    case Type::Texture:
+      return static_cast<const RecordValue&>(*v.ref).depth;
+    default:
+      return 0;
+  }
 }
 
 Value Value::list(std::vector<Value> items) {

@@ -87,9 +87,14 @@ struct StringValue : HeapValue {
   explicit StringValue(std::string t) : text(std::move(t)) {}
 };
 
+// Lists and records may contain lists and records. Their nesting depth is kept so that it
+// can be bounded (kMaxValueNesting): printing, comparing and freeing a value recurse.
+inline constexpr uint32_t kMaxValueNesting = 10'000;
+
 struct ListValue : HeapValue {
   std::vector<Value> items;
-  explicit ListValue(std::vector<Value> i) : items(std::move(i)) {}
+  uint32_t depth;  // 1 + the deepest item's depth
+  explicit ListValue(std::vector<Value> i);
 };
 
 // A property of a material or texture record: `name = value`, where it was written.
@@ -107,6 +112,8 @@ struct RecordValue : HeapValue {
   render::Mat4 transform{1.0};  // textures: accumulated transform postfixes
   SourceLoc loc;
   uint32_t built_id = render::kNoId;
+  uint32_t depth = 1;  // 1 + the deepest property value's depth; see update_depth()
+  void update_depth();
 };
 
 struct TransformValue : HeapValue {
@@ -133,6 +140,8 @@ inline const std::vector<Value>& as_list(const Value& v) { return static_cast<co
 inline RecordValue& as_record(const Value& v) { return static_cast<RecordValue&>(*v.ref); }
 inline RandomValue& as_random(const Value& v) { return static_cast<RandomValue&>(*v.ref); }
 inline const ast::MacroStmt* as_macro(const Value& v) { return static_cast<const MacroValue&>(*v.ref).def; }
+// How deeply lists and records nest inside `v` (0 for anything else).
+uint32_t nesting_depth(const Value& v);
 // An object's transform (identity when it has none).
 render::Mat4 object_transform(const Value& v);
 // A transform value's matrix.

@@ -235,6 +235,10 @@ TEST_CASE("defines replace the first top-level let of the main file", "[eval][de
   CHECK(probes("let q = 1  let v = <0, 0, 0>  probe(q + v.z)", opts) == std::vector<double>{5});
   // The defined let's own expression is not evaluated.
   CHECK(probes("let q = 1 / 0  let v = 0  probe(q)", opts) == std::vector<double>{2});
+  EvalOptions twice;
+  twice.defines = {{"q", "1"}, {"q", "3"}};
+  CHECK(probes("let q = 0  probe(q)", twice) == std::vector<double>{3});  // the last one wins
+  CHECK(test::eval_warnings("let q = 0", twice).empty());
   EvalOptions unused;
   unused.defines = {{"nothing", "3"}};
   CHECK_THAT(test::eval_warnings("let a = 1", unused),
@@ -270,7 +274,7 @@ TEST_CASE("check's summary counts placed instances through groups and bounds the
       "plane { normal = <0, 1, 0> }\n"
       "point_light { position = <0, 5, 0> }\n");
   runtime::SceneSummary sum = runtime::summarize(s);
-  CHECK(sum.shapes["sphere"] == 4);  // 2 definitions' worth of placements: 2 groups x 2
+  CHECK(sum.shapes["sphere"] == 4);  // one definition: 2 group instances x 2 children
   CHECK(sum.shapes["plane"] == 1);
   CHECK(sum.lights["point_light"] == 1);
   CHECK(sum.shape_definitions == 2);

@@ -65,6 +65,14 @@ TEST_CASE("a catalogue of runtime errors", "[errors]") {
         0);
 }
 
+TEST_CASE("values cannot nest without bound", "[errors][limits]") {
+  CHECK_THAT(eval_error("let l = []\nfor i in 0 .. 20000 { l = [l] }"), Catch::Contains("nested more than 10000 deep"));
+  CHECK_THAT(eval_error("let m = material { }\nfor i in 0 .. 20000 { m = m with { color = [m] } }"),
+             Catch::Contains("nested more than 10000 deep"));
+  CHECK(eval_diagnostic("let r = random(1e300)").message ==
+        "argument 1 of 'random' must be a whole number from 0 to 2^53, got a number");
+}
+
 TEST_CASE("limits stop runaway scenes", "[errors][limits]") {
   EvalOptions opts;
   opts.limits.max_iterations = 1000;
