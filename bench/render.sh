@@ -2,7 +2,7 @@
 # Rendering race: rts against POV-Ray 3.7 on the same scenes, in the same run, at the same
 # size and thread count, one sample per pixel (POV-Ray: antialiasing off). Scenes:
 #   render_scene.rts / .pov  100 Phong spheres (half mirrors), a glass sphere, checkered floor
-#   render_mesh.rts / .pov   5 instances of one smooth mesh (bench/gen_mesh.py, 2*MESH_N^2 tris)
+#   render_mesh.rts / .pov   5 instances of one smooth mesh (bench/render_gen_mesh.py, 2*MESH_N^2 tris)
 # Prints the median wall time of RUNS runs of each, the ratio, and rts's own summary line, as
 # a Markdown table (paste into docs/performance.md).
 #
@@ -22,7 +22,7 @@ command -v povray >/dev/null || { echo "bench/render.sh: povray not found (scrip
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 cp "$root"/bench/render_scene.{rts,pov} "$root"/bench/render_mesh.{rts,pov} "$tmp/"
-python3 "$root/bench/gen_mesh.py" "$MESH_N" "$tmp"
+python3 "$root/bench/render_gen_mesh.py" "$MESH_N" "$tmp"
 
 # Wall-clock seconds of one command (output discarded; a failure aborts the benchmark).
 seconds() {
@@ -53,5 +53,11 @@ for scene in render_scene render_mesh; do
   summaries+=("$scene: rts runs ${rts_times[*]}; POV-Ray runs ${pov_times[*]}"
               "  $(run_rts "$scene" 2>&1 | tail -1)")
 done
+# Fixed per-process cost (startup, parsing, a tiny image): POV-Ray's is large and is part of
+# every POV-Ray time above; reported so that tracing speed alone can be compared as well.
+W=16 H=12
+rts_fixed="$(seconds run_rts render_scene)"
+pov_fixed="$(seconds run_pov render_scene)"
 echo
+echo "Fixed cost (render_scene at 16x12): rts ${rts_fixed} s, POV-Ray ${pov_fixed} s"
 printf '%s\n' "${summaries[@]}"

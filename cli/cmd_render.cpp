@@ -109,10 +109,10 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     render::RenderResult result = render::render(scene, opts);
     result.stats.eval_seconds = eval_seconds;
     auto write_start = std::chrono::steady_clock::now();
+    render::write_png(out, result.color, c.bits, render::Encoding::SRGB);
     // AOVs are data (normals, depth), not colors: stored without the sRGB curve.
     for (const auto& [name, image] : result.aovs)
       render::write_png(aov_path(out, name), image, c.bits, render::Encoding::Linear);
-    render::write_png(out, result.color, c.bits, render::Encoding::SRGB);
     result.stats.write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";

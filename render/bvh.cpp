@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include <tbb/parallel_invoke.h>
+
 namespace rts::render {
 
 void BVHNode::set_bounds(const AABB& b) {
@@ -32,23 +34,37 @@ struct PrimRef {
   uint32_t index;
 };
 
+// Subtrees over at least this many primitives are built in parallel (each into its own node
+// array, spliced afterwards in the same order, so the tree does not depend on scheduling).
+constexpr uint32_t kParallelBuildThreshold = 32 * 1024;
+
+// Appends `sub` (a subtree whose interior offsets count from its own start) to `nodes`.
+void splice(std::vector<BVHNode>& nodes, const std::vector<BVHNode>& sub) {
+  uint32_t base = static_cast<uint32_t>(nodes.size());
+  for (BVHNode n : sub) {
+    if (n.count == 0) n.offset += base;
+    nodes.push_back(n);
+  }
+}
+
 struct Builder {
   std::vector<PrimRef>& refs;
-  BVH& out;
 
-  uint32_t build(uint32_t begin, uint32_t end, int depth) {
-    uint32_t index = static_cast<uint32_t>(out.nodes.size());
-    out.nodes.emplace_back();
+  // Builds the subtree over refs[begin, end) into `nodes` (depth-first, left child right
+  // after its parent); returns the index of its root.
+  uint32_t build(uint32_t begin, uint32_t end, int depth, std::vector<BVHNode>& nodes) {
+    uint32_t index = static_cast<uint32_t>(nodes.size());
+    nodes.emplace_back();
     AABB bounds, centroid_bounds;
     for (uint32_t i = begin; i < end; ++i) {
       bounds.extend(refs[i].box);
       centroid_bounds.extend(refs[i].centroid);
     }
-    out.nodes[index].set_bounds(bounds);
+    nodes[index].set_bounds(bounds);
     uint32_t count = end - begin;
     auto make_leaf = [&] {
-      out.nodes[index].offset = begin;
-      out.nodes[index].count = static_cast<uint16_t>(count);
+      nodes[index].offset = begin;
+      nodes[index].count = static_cast<uint16_t>(count);
       return index;
     };
     if (count <= 1 || (depth >= kBvhMaxDepth && count <= kBvhMaxLeafCount)) return make_leaf();
@@ -120,11 +136,20 @@ struct Builder {
       }
     }
     if (mid == begin || mid == end) mid = begin + count / 2;
-    out.nodes[index].axis = static_cast<uint8_t>(axis);
-    build(begin, mid, depth + 1);
-    uint32_t right = build(mid, end, depth + 1);
-    out.nodes[index].offset = right;
-    out.nodes[index].count = 0;
+    nodes[index].axis = static_cast<uint8_t>(axis);
+    nodes[index].count = 0;
+    if (count >= kParallelBuildThreshold) {
+      std::vector<BVHNode> left_nodes, right_nodes;
+      tbb::parallel_invoke([&] { build(begin, mid, depth + 1, left_nodes); },
+                           [&] { build(mid, end, depth + 1, right_nodes); });
+      splice(nodes, left_nodes);
+      nodes[index].offset = static_cast<uint32_t>(nodes.size());
+      splice(nodes, right_nodes);
+    } else {
+      build(begin, mid, depth + 1, nodes);
+      uint32_t right = build(mid, end, depth + 1, nodes);
+      nodes[index].offset = right;
+    }
     return index;
   }
 };
@@ -138,8 +163,8 @@ BVH build_bvh(const std::vector<AABB>& primitive_bounds) {
   for (std::size_t i = 0; i < refs.size(); ++i)
     refs[i] = PrimRef{primitive_bounds[i], primitive_bounds[i].centroid(), static_cast<uint32_t>(i)};
   bvh.nodes.reserve(primitive_bounds.size() * 2);
-  Builder builder{refs, bvh};
-  builder.build(0, static_cast<uint32_t>(refs.size()), 0);
+  Builder builder{refs};
+  builder.build(0, static_cast<uint32_t>(refs.size()), 0, bvh.nodes);
   bvh.nodes.shrink_to_fit();
   bvh.order.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) bvh.order[i] = refs[i].index;

@@ -57,8 +57,8 @@ Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
   if (m.texture != kNoId && m.texture < textures_.size()) {
     TexturePoint p;
     p.object_point = hit.object_point;
-    p.uv = hit.uv;
     p.has_uv = hit.has_uv;
+    if (p.has_uv) p.uv = world_.surface_uv(hit);
     return to_rgb(textures_[m.texture].eval(p));
   }
   return to_rgb(m.color);
@@ -66,7 +66,8 @@ Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
 
 Rgb Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
   ++counters.camera;
-  return radiance(ray, 0, Rgb(1.0), sampler, counters);
+  Path path{sampler, counters};
+  return radiance(ray, 0, Rgb(1.0), path);
 }
 
 FirstHit Integrator::first_hit(const Ray& ray) const {
@@ -80,9 +81,8 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
   return out;
 }
 
-Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls,
-                                     RayCounters& counters) const {
-  ++counters.shadow;
+Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const {
+  ++path.counters.shadow;
   Ray ray{origin, ls.direction};
   double end = std::isinf(ls.distance) ? Interval::kInfinity
                                         : ls.distance * (1.0 - tol::kShadowEndRelative);
@@ -107,7 +107,8 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls,
 
 Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo,
                              const Vec3& n, const Vec3& shadow_origin, const Vec3& view,
-                             Sampler& sampler, RayCounters& counters) const {
+                             Path& path) const {
+  Sampler& sampler = path.sampler;
   Rgb sum(0.0);
   for (const CompiledLight& light : lights_) {
     uint32_t perm = sampler.next_bits();
@@ -135,15 +136,14 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
         if (r_dot_v > 0.0) shade += Rgb(m.specular * std::pow(r_dot_v, m.shininess));
       }
       if (is_black(shade)) continue;
-      Rgb transmittance = light.shadows ? shadow_transmittance(shadow_origin, ls, counters) : Rgb(1.0);
+      Rgb transmittance = light.shadows ? shadow_transmittance(shadow_origin, ls, path) : Rgb(1.0);
       sum += shade * ls.radiance * transmittance;
     }
   }
   return sum;
 }
 
-Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Sampler& sampler,
-                         RayCounters& counters) const {
+Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& path) const {
   WorldHit hit;
   if (!world_.intersect(ray, Interval::positive(), hit)) return background_;
   const MaterialDesc& m = material(hit.instance);
@@ -162,7 +162,7 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Sampler& 
   Rgb base = albedo(m, hit);
   Rgb color = to_rgb(m.emission) + m.ambient * base * ambient_light_;
   Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, travelled);
-  color += direct_light(hit, m, base, n, front_origin, view, sampler, counters);
+  color += direct_light(hit, m, base, n, front_origin, view, path);
 
   if (depth >= max_depth_) return color;
 
@@ -193,18 +193,18 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Sampler& 
     Vec3 mirror = incident + 2.0 * cos_i * n;
     Vec3 dir = mirror;
     if (m.roughness > 0.0) {
-      Vec3 glossy = mirror + m.roughness * in_unit_ball(sampler);
+      Vec3 glossy = mirror + m.roughness * in_unit_ball(path.sampler);
       // Perturbed below the surface: fall back to the mirror direction.
       if (glm::dot(glossy, ng) > 0.0 && glm::length(glossy) > tol::kTinyLength) dir = glm::normalize(glossy);
     }
-    ++counters.reflection;
+    ++path.counters.reflection;
     Ray r{offset_ray_origin(hit.point, ng, dir, travelled), dir};
-    color += kr * radiance(r, depth + 1, weight * kr, sampler, counters);
+    color += kr * radiance(r, depth + 1, weight * kr, path);
   }
   if (max_channel(kt * weight) > tol::kMinPathWeight) {
-    ++counters.refraction;
+    ++path.counters.refraction;
     Ray r{offset_ray_origin(hit.point, ng, refracted, travelled), refracted};
-    color += kt * radiance(r, depth + 1, weight * kt, sampler, counters);
+    color += kt * radiance(r, depth + 1, weight * kt, path);
   }
   return color;
 }

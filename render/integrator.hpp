@@ -31,12 +31,15 @@ class Integrator {
   FirstHit first_hit(const Ray& ray) const;
 
  private:
-  Rgb radiance(const Ray& ray, int depth, const Rgb& weight, Sampler& sampler,
-               RayCounters& counters) const;
+  // What one camera sample's path carries along.
+  struct Path {
+    Sampler& sampler;
+    RayCounters& counters;
+  };
+  Rgb radiance(const Ray& ray, int depth, const Rgb& weight, Path& path) const;
   Rgb direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo, const Vec3& n,
-                   const Vec3& shadow_origin, const Vec3& view, Sampler& sampler,
-                   RayCounters& counters) const;
-  Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, RayCounters& counters) const;
+                   const Vec3& shadow_origin, const Vec3& view, Path& path) const;
+  Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const;
   const MaterialDesc& material(uint32_t instance) const;
   Rgb albedo(const MaterialDesc& m, const WorldHit& hit) const;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -54,6 +55,28 @@ ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o) {
   return r;
 }
 
+int thread_count(const RenderOptions& options) {
+  if (options.threads > 0) return std::min(options.threads, kMaxThreads);
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Everything built from the scene before tracing: acceleration structures, lights, textures.
+struct Prepared {
+  FlatScene flat;
+  std::unique_ptr<World> world;
+  std::vector<CompiledLight> lights;
+  std::vector<CompiledTexture> textures;
+};
+
+Prepared prepare(const SceneDesc& scene) {
+  Prepared p;
+  p.flat = flatten_scene(scene);
+  p.world = std::make_unique<World>(scene, p.flat);
+  p.lights = compile_lights(p.flat.lights);
+  p.textures = compile_textures(scene);
+  return p;
+}
+
 }  // namespace
 
 RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
@@ -63,12 +86,16 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   Frame frame;
   allocate_frame(result, rs.width, rs.height, parse_aovs(options.aovs), scene.settings.loc, frame);
 
-  FlatScene flat = flatten_scene(scene);
-  World world(scene, flat);
-  std::vector<CompiledLight> lights = compile_lights(flat.lights);
-  std::vector<CompiledTexture> textures = compile_textures(scene);
+  // All parallel work (BVH builds, tiles) runs in one arena of --threads workers;
+  // global_control lets that number exceed TBB's default limit (the core count).
+  const int threads = thread_count(options);
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<std::size_t>(threads));
+  tbb::task_arena arena(threads);
+  Prepared prep = arena.execute([&] { return prepare(scene); });
+  const World& world = *prep.world;
   Camera camera(scene.has_camera ? scene.camera : CameraDesc{}, rs.width, rs.height);
-  Integrator integrator(world, lights, scene.materials, textures, scene.settings, rs.max_depth);
+  Integrator integrator(world, prep.lights, scene.materials, prep.textures, scene.settings, rs.max_depth);
   PixelRenderer pixels(camera, integrator, rs.samples, rs.seed);
 
   RenderStats& stats = result.stats;
@@ -76,11 +103,10 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   stats.height = rs.height;
   stats.samples = rs.samples;
   stats.max_depth = rs.max_depth;
-  stats.threads = options.threads > 0 ? std::min(options.threads, kMaxThreads)
-                                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  stats.threads = threads;
   stats.instances = world.instance_count() - world.plane_count();
   stats.planes = world.plane_count();
-  stats.lights = lights.size();
+  stats.lights = prep.lights.size();
   stats.pixels.width = rs.width;
   stats.pixels.height = rs.height;
   stats.pixels.samples = rs.samples;
@@ -107,10 +133,6 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   };
 
   auto render_start = Clock::now();
-  // global_control lets --threads exceed TBB's default worker limit (the core count).
-  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
-                                  static_cast<std::size_t>(stats.threads));
-  tbb::task_arena arena(stats.threads);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& r) {
       for (int t = r.begin(); t != r.end(); ++t) render_tile(t);

@@ -18,10 +18,6 @@ namespace {
 
 bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
 
-Ray to_object_ray(const Mat4& to_object, const Ray& r) {
-  return Ray{Vec3(to_object * glm::dvec4(r.origin, 1.0)), Vec3(to_object * glm::dvec4(r.direction, 0.0))};
-}
-
 }  // namespace
 
 World::World(const SceneDesc& scene, const FlatScene& flat) {
@@ -37,13 +33,15 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
       inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
       has_transmissive_ = has_transmissive_ || inst.transmissive;
     }
-    inst.loc = fs.loc;
-    inst.identity = is_identity(fs.to_world);
-    if (!inst.identity) {
+    bool identity = is_identity(fs.to_world);
+    if (!identity) {
       double det = glm::determinant(glm::dmat3(fs.to_world));
       if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) continue;
-      inst.to_object = glm::inverse(fs.to_world);
-      inst.normal_to_world = glm::transpose(glm::dmat3(inst.to_object));
+      InstanceTransform xf;
+      xf.to_object = glm::inverse(fs.to_world);
+      xf.normal_to_world = glm::transpose(glm::dmat3(xf.to_object));
+      inst.transform = static_cast<uint32_t>(transforms_.size());
+      transforms_.push_back(xf);
     }
     AABB object_bounds;
     bool unbounded_shape = false;
@@ -85,10 +83,10 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
       continue;
     }
     if (!object_bounds.valid()) continue;  // empty mesh, nothing to hit
-    inst.world_bounds = inst.identity ? object_bounds : transform_bounds(fs.to_world, object_bounds);
-    if (!inst.world_bounds.finite()) continue;  // NaN/inf coordinates: never hit
+    AABB world_bounds = identity ? object_bounds : transform_bounds(fs.to_world, object_bounds);
+    if (!world_bounds.finite()) continue;  // NaN/inf coordinates: never hit
     bounded.push_back(inst);
-    boxes.push_back(inst.world_bounds);
+    boxes.push_back(world_bounds);
   }
   bvh_ = build_bvh(boxes);
   instances_ = std::move(bounded);
@@ -124,9 +122,15 @@ std::size_t World::mesh_bvh_count() const {
   return distinct.size();
 }
 
+Ray World::object_ray(const Instance& inst, const Ray& r) const {
+  if (inst.transform == kNoId) return r;
+  const Mat4& m = transforms_[inst.transform].to_object;
+  return Ray{Vec3(m * glm::dvec4(r.origin, 1.0)), Vec3(m * glm::dvec4(r.direction, 0.0))};
+}
+
 bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                                SurfaceHit& hit) const {
-  Ray ray = inst.identity ? world_ray : to_object_ray(inst.to_object, world_ray);
+  Ray ray = object_ray(inst, world_ray);
   switch (inst.kind) {
     case PrimKind::Sphere: return render::intersect(spheres_[inst.index], ray, ray_t, hit);
     case PrimKind::Plane: return render::intersect(plane_shapes_[inst.index], ray, ray_t, hit);
@@ -142,8 +146,7 @@ bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const
 
 bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const {
   if (inst.kind == PrimKind::Mesh) {
-    Ray ray = inst.identity ? world_ray : to_object_ray(inst.to_object, world_ray);
-    return meshes_[inst.index]->occluded(ray, ray_t);
+    return meshes_[inst.index]->occluded(object_ray(inst, world_ray), ray_t);
   }
   SurfaceHit scratch;
   return intersect_instance(inst, world_ray, ray_t, scratch);
@@ -180,20 +183,25 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   hit.object_point = best.point;
   hit.uv = best.uv;
   hit.has_uv = best.has_uv;
-  // Spherical UVs cost two inverse trigonometric calls: only for the hit that is kept.
-  if (inst.kind == PrimKind::Sphere) {
-    const Sphere& sp = spheres_[inst.index];
-    hit.uv = sphere_uv((best.point - sp.center) / sp.radius);
-    hit.has_uv = true;
-  }
-  if (inst.identity) {
+  // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
+  // texture asks for them.
+  hit.has_uv = best.has_uv || inst.kind == PrimKind::Sphere;
+  if (inst.transform == kNoId) {
     hit.normal = glm::normalize(best.normal);
     hit.shading_normal = glm::normalize(best.shading_normal);
   } else {
-    hit.normal = glm::normalize(inst.normal_to_world * best.normal);
-    hit.shading_normal = glm::normalize(inst.normal_to_world * best.shading_normal);
+    const glm::dmat3& nm = transforms_[inst.transform].normal_to_world;
+    hit.normal = glm::normalize(nm * best.normal);
+    hit.shading_normal = glm::normalize(nm * best.shading_normal);
   }
   return true;
+}
+
+glm::dvec2 World::surface_uv(const WorldHit& hit) const {
+  const Instance& inst = instances_[hit.instance];
+  if (inst.kind != PrimKind::Sphere) return hit.uv;
+  const Sphere& sp = spheres_[inst.index];
+  return sphere_uv((hit.object_point - sp.center) / sp.radius);
 }
 
 bool World::occluded(const Ray& ray, Interval ray_t, bool opaque_only) const {

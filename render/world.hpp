@@ -16,17 +16,20 @@ namespace rts::render {
 
 enum class PrimKind : uint8_t { Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh };
 
+// 16 bytes, so the instances a BVH leaf points at share cache lines; transforms live apart
+// (only transformed instances have one).
 struct Instance {
   PrimKind kind = PrimKind::Sphere;
-  bool identity = true;        // no transform: trace the world ray directly
   bool smooth = true;          // meshes: interpolate vertex normals
   bool transmissive = false;   // its material lets light through (shadow rays pass it)
   uint32_t index = 0;          // into the World's array for `kind` (meshes: the MeshId)
   MaterialId material = kNoId;
-  Mat4 to_object{1.0};         // world → object
+  uint32_t transform = kNoId;  // into World's transforms, or kNoId: trace the world ray as is
+};
+
+struct InstanceTransform {
+  Mat4 to_object{1.0};              // world → object
   glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
-  AABB world_bounds;
-  SourceRef loc;
 };
 
 // A hit in world space, plus what shading needs from object space.
@@ -37,7 +40,7 @@ struct WorldHit {
   Vec3 normal{0, 1, 0};        // world geometric normal, unit, outward
   Vec3 shading_normal{0, 1, 0};  // world, unit, outward
   Vec3 object_point{0.0};      // for textures
-  glm::dvec2 uv{0.0};
+  glm::dvec2 uv{0.0};           // spheres: use World::surface_uv
   bool has_uv = false;
 };
 
@@ -50,6 +53,8 @@ class World {
   // Any hit (early exit); with `opaque_only`, transmissive instances are ignored.
   bool occluded(const Ray& ray, Interval ray_t, bool opaque_only = false) const;
   bool has_transmissive() const { return has_transmissive_; }
+  // The hit's texture coordinates (spheres' are computed here, on demand).
+  glm::dvec2 surface_uv(const WorldHit& hit) const;
 
   const Instance& instance(uint32_t i) const { return instances_[i]; }
   std::size_t instance_count() const { return instances_.size(); }
@@ -58,6 +63,7 @@ class World {
   const BVH& top_level() const { return bvh_; }
 
  private:
+  Ray object_ray(const Instance& inst, const Ray& world_ray) const;
   bool intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                           SurfaceHit& hit) const;
   bool occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const;
@@ -75,6 +81,7 @@ class World {
   std::vector<std::shared_ptr<const MeshAccel>> meshes_;
 
   std::vector<Instance> instances_;  // bounded instances first (BVH), then planes
+  std::vector<InstanceTransform> transforms_;
   std::vector<uint32_t> planes_;     // instance indices of unbounded planes
   BVH bvh_;
   bool has_transmissive_ = false;

@@ -3,7 +3,7 @@
 # byte-identical), AOV files, determinism across --threads, --seed.
 #   tests/render/cli_render_test.sh path/to/rts
 set -uo pipefail
-rts="$1"
+rts="$(realpath "$1")"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 failures=0

@@ -224,3 +224,29 @@ TEST_CASE("no shadow acne at tiny or huge scene scales", "[analytic]") {
     CHECK(dark == 0);
   }
 }
+
+TEST_CASE("glossy reflection blurs around the mirror image", "[analytic]") {
+  // A rough mirror reflecting a large emitter: the average over many glossy samples stays
+  // close to the mirror's value (the emitter fills most of the lobe) but individual samples
+  // differ at the emitter's edge, unlike a perfect mirror.
+  SceneDesc s;
+  MaterialDesc rough;
+  rough.reflect = Color(1.0);
+  rough.diffuse = 0;
+  rough.ambient = 0;
+  rough.roughness = 0.3;
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, rough)));
+  place(s, add_shape(s, Sphere{Vec3(0, 5, 5), 1.5}, add_material(s, emissive(Color(1.0)))));
+  s.settings.seed = 3;
+  Tracer tracer(s);
+  Ray ray{Vec3(0, 5, -5), Vec3(0, -1, 1)};
+  int lit = 0;
+  const int n = 400;
+  for (int i = 0; i < n; ++i) {
+    Sampler sampler(0, 0, static_cast<uint32_t>(i), 3);
+    RayCounters counters;
+    lit += tracer.integrator->trace(ray, sampler, counters).x > 0.5;
+  }
+  CHECK(lit > n / 2);  // mostly on the emitter...
+  CHECK(lit < n);      // ...but the lobe reaches past its edge
+}

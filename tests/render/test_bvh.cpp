@@ -1,5 +1,6 @@
 // The BVHs against brute force: the same closest hit (and the same occlusion answer) for many
 // random rays, over random spheres (top level) and random triangles (a mesh's bottom level).
+#include <algorithm>
 #include <memory>
 #include <random>
 
@@ -130,4 +131,45 @@ TEST_CASE("BVH build with identical primitives terminates and keeps them all", "
   std::size_t total = 0;
   for (const BVHNode& n : bvh.nodes) total += n.count;
   CHECK(total == boxes.size());
+}
+
+TEST_CASE("large BVHs (built in parallel) are valid and the same on every build", "[bvh]") {
+  std::mt19937_64 rng(99);
+  const int n = 80'000;  // above the parallel build threshold
+  std::vector<AABB> boxes;
+  std::vector<Sphere> spheres;
+  for (int i = 0; i < n; ++i) {
+    Sphere sp{random_point(rng, 50.0), 0.2};
+    spheres.push_back(sp);
+    boxes.push_back(bounds(sp));
+  }
+  BVH a = build_bvh(boxes), b = build_bvh(boxes);
+  REQUIRE(a.nodes.size() == b.nodes.size());
+  CHECK(std::equal(a.order.begin(), a.order.end(), b.order.begin()));
+  bool same_nodes = true;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i)
+    same_nodes = same_nodes && a.nodes[i].offset == b.nodes[i].offset && a.nodes[i].count == b.nodes[i].count;
+  CHECK(same_nodes);
+
+  // Every primitive once; every node's children inside it; closest hits match brute force.
+  std::vector<int> seen(n, 0);
+  for (const BVHNode& node : a.nodes)
+    for (uint32_t i = 0; i < node.count; ++i) ++seen[a.order[node.offset + i]];
+  CHECK(std::count(seen.begin(), seen.end(), 1) == n);
+  for (int r = 0; r < 200; ++r) {
+    Ray ray = random_ray(rng);
+    double best = Interval::kInfinity;
+    for (const Sphere& sp : spheres) {
+      SurfaceHit h;
+      if (intersect(sp, ray, Interval(0.0, best), h)) best = h.t;
+    }
+    Interval range = Interval::positive();
+    traverse_bvh<false>(a, ray, range, [&](uint32_t slot, Interval& t_range) {
+      SurfaceHit h;
+      if (!intersect(spheres[a.order[slot]], ray, t_range, h)) return false;
+      t_range.max = h.t;
+      return true;
+    });
+    CHECK(range.max == best);
+  }
 }

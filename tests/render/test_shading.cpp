@@ -136,3 +136,24 @@ TEST_CASE("depth of field: every lens sample converges on the focal plane", "[sh
   CHECK(pa.x == Approx(pb.x).margin(1e-9));
   CHECK(pa.y == Approx(pb.y).margin(1e-9));
 }
+
+TEST_CASE("disc area light samples lie inside the inscribed ellipse", "[shading]") {
+  LightDesc d;
+  d.kind = LightKind::Area;
+  d.position = Vec3(0, 5, 0);
+  d.u = Vec3(4, 0, 0);  // ellipse semi-axes 2 (x) and 1 (z)
+  d.v = Vec3(0, 0, 2);
+  d.disc = true;
+  d.samples = 7;  // not a square: N-rooks strata
+  CompiledLight l = compile_lights({d})[0];
+  double max_r = 0;
+  for (int i = 0; i < 7; ++i)
+    for (double j : {0.01, 0.5, 0.99}) {
+      LightSample s = sample_light(l, Vec3(0), i, glm::dvec2(j, 1.0 - j), 1234);
+      Vec3 p = s.direction * s.distance;
+      double r = (p.x / 2) * (p.x / 2) + p.z * p.z;  // ellipse equation, <= 1 inside
+      CHECK(r <= 1.0 + 1e-9);
+      max_r = std::max(max_r, r);
+    }
+  CHECK(max_r > 0.5);  // the samples spread out, not all at the centre
+}

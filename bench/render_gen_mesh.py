@@ -2,7 +2,7 @@
 """Writes the same triangle mesh (a bumpy sphere with smooth normals) as an OBJ file for rts
 and as a POV-Ray mesh2 include, for bench/render.sh's mesh race.
 
-    gen_mesh.py N OUT_DIR     # 2*N*N triangles: OUT_DIR/bench_mesh.obj, OUT_DIR/bench_mesh.inc
+    render_gen_mesh.py N OUT_DIR     # 2*N*N triangles: OUT_DIR/bench_mesh.obj, OUT_DIR/bench_mesh.inc
 """
 import math
 import sys
