@@ -1,6 +1,7 @@
 // `rts check` (evaluate and summarise) and `rts eval` (evaluate and dump the scene), plus the
 // flags they share with `rts render` (add_eval_options, declared in cli/eval_options.hpp).
 #include <iostream>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -65,35 +66,35 @@ bool run_eval(const EvalCommand& cmd, CommandContext& ctx, SourceManager& source
   return false;
 }
 
-}  // namespace
-
-void add_check_command(CLI::App& app, CommandContext& ctx) {
+// `check` and `eval` share their arguments and evaluation; they differ only in what they print.
+void add_evaluating_command(CLI::App& app, CommandContext& ctx, const char* name, const char* help,
+                            std::function<void(const EvalResult&)> print) {
   auto cmd = std::make_shared<EvalCommand>();
-  CLI::App* sub = app.add_subcommand("check", "Evaluate a scene without rendering and summarise it");
+  CLI::App* sub = app.add_subcommand(name, help);
   sub->add_option("file", cmd->file, "Scene file (.rts)")->required();
   add_eval_options(*sub, cmd->options);
-  sub->callback([cmd, &ctx] {
+  sub->callback([cmd, &ctx, print = std::move(print)] {
     SourceManager sources;
     EvalResult result;
     if (!run_eval(*cmd, ctx, sources, result)) return;
-    runtime::SceneSummary s = runtime::summarize(result.scene);
-    runtime::print_summary(std::cout, result.scene, s, result.seconds);
+    print(result);
     ctx.exit_code = kExitOk;
   });
 }
 
+}  // namespace
+
+void add_check_command(CLI::App& app, CommandContext& ctx) {
+  add_evaluating_command(app, ctx, "check", "Evaluate a scene without rendering and summarise it",
+                         [](const EvalResult& result) {
+                           runtime::SceneSummary s = runtime::summarize(result.scene);
+                           runtime::print_summary(std::cout, result.scene, s, result.seconds);
+                         });
+}
+
 void add_eval_command(CLI::App& app, CommandContext& ctx) {
-  auto cmd = std::make_shared<EvalCommand>();
-  CLI::App* sub = app.add_subcommand("eval", "Evaluate a scene and print the scene description it builds");
-  sub->add_option("file", cmd->file, "Scene file (.rts)")->required();
-  add_eval_options(*sub, cmd->options);
-  sub->callback([cmd, &ctx] {
-    SourceManager sources;
-    EvalResult result;
-    if (!run_eval(*cmd, ctx, sources, result)) return;
-    result.scene.dump(std::cout);
-    ctx.exit_code = kExitOk;
-  });
+  add_evaluating_command(app, ctx, "eval", "Evaluate a scene and print the scene description it builds",
+                         [](const EvalResult& result) { result.scene.dump(std::cout); });
 }
 
 }  // namespace rts::cli
