@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -119,6 +120,15 @@ std::string resolve_path(const std::string& path, SourceRef where) {
   fs::path p(path);
   if (p.is_absolute() || where.file == nullptr || where.file[0] == '\0') return path;
   return (fs::path(where.file).parent_path() / p).lexically_normal().string();
+}
+
+// The same file however a scene spells it ("a/../m.obj", "./m.obj", through a symlink).
+std::string cache_key(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::path(path), ec);
+  if (ec) p = fs::absolute(fs::path(path), ec).lexically_normal();
+  return ec ? path : p.string();
 }
 
 }  // namespace
@@ -358,12 +368,18 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     MeshRef g;
     g.smooth = ps.boolean("smooth", g.smooth);
     std::shared_ptr<MeshData> mesh;
+    std::optional<std::pair<std::string, bool>> obj_key;
     if (ps.has("file")) {
       if (ps.has("vertices") || ps.has("faces"))
         ps.fail_block("mesh takes either 'file' or 'vertices' and 'faces', not both");
       SourceRef where = loc_of(ps, "file");
       std::string file = ps.string("file", "");
-      mesh = load_obj(resolve_path(file, where), file, g.smooth, where);
+      std::string path = resolve_path(file, where);
+      obj_key = std::make_pair(cache_key(path), g.smooth);
+      if (auto it = obj_meshes_.find(*obj_key); it != obj_meshes_.end())
+        g.mesh = it->second;  // already loaded (and counted against the triangle limit): share it
+      else
+        mesh = load_obj(path, file, g.smooth, where);
     } else {
       if (!ps.has("vertices")) ps.fail_block("mesh needs property 'file' or 'vertices' and 'faces'");
       if (!ps.has("faces")) ps.fail_block("mesh needs property 'faces'");
@@ -381,12 +397,15 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
         for (int k = 0; k < 3; ++k) mesh->indices.push_back(mesh_index(ps, f[k], vertices.size()));
       if (normals.empty() && g.smooth) compute_smooth_normals(*mesh);
     }
-    mesh_triangles_ += mesh->indices.size() / 3;
-    if (mesh_triangles_ > limits_.max_mesh_triangles)
-      ps.fail_block(fmt::format("meshes have more than {} triangles in total (raise with --max-mesh-triangles)",
-                                limits_.max_mesh_triangles));
-    scene_.meshes.push_back(std::move(mesh));
-    g.mesh = static_cast<MeshId>(scene_.meshes.size() - 1);
+    if (mesh) {  // newly built or loaded
+      mesh_triangles_ += mesh->indices.size() / 3;
+      if (mesh_triangles_ > limits_.max_mesh_triangles)
+        ps.fail_block(fmt::format("meshes have more than {} triangles in total (raise with --max-mesh-triangles)",
+                                  limits_.max_mesh_triangles));
+      scene_.meshes.push_back(std::move(mesh));
+      g.mesh = static_cast<MeshId>(scene_.meshes.size() - 1);
+      if (obj_key) obj_meshes_.emplace(std::move(*obj_key), g.mesh);
+    }
     s.geometry = g;
     ps.check_unused(kMeshNames);
   } else {

@@ -4,8 +4,10 @@
 // scene language's syntax.
 #pragma once
 
+#include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "render/params.hpp"
@@ -46,6 +48,9 @@ class SceneBuilder {
   BuilderLimits limits_;
   SceneDesc scene_;
   std::size_t mesh_triangles_ = 0;
+  // OBJ files already loaded, by (absolute resolved path, smooth): every `mesh { file }` naming
+  // the same file shares one MeshId, so the file is read once and one BVH is built for it.
+  std::map<std::pair<std::string, bool>, MeshId> obj_meshes_;
 };
 
 }  // namespace rts::render

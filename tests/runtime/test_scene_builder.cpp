@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 #include <catch2/catch.hpp>
@@ -195,6 +196,36 @@ TEST_CASE("OBJ meshes load, resolve relative paths and report their own line num
   CHECK_THAT(scene_error([&] { load("bad_vertex.obj"); }), Catch::Contains("bad_vertex.obj:2:"));
   CHECK_THAT(scene_error([&] { load("missing.obj"); }),
              Catch::Contains("missing.obj") && Catch::Contains("no such file"));
+}
+
+TEST_CASE("an OBJ file named by many mesh statements is loaded once and shared", "[builder]") {
+  TempDir dir;
+  dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  std::filesystem::create_directories(dir.path / "sub");
+  std::string scene_file = (dir.path / "scene.rts").string();
+  BuilderLimits limits;
+  limits.max_mesh_triangles = 3;  // shared data counts once against the limit
+  SceneBuilder b(limits);
+  auto load = [&](const std::string& file, std::optional<bool> smooth = {}) {
+    ParamSet p("mesh", SourceRef{scene_file.c_str(), 4, 1});
+    p.add("file", file, SourceRef{scene_file.c_str(), 4, 8});
+    if (smooth) p.add("smooth", *smooth, SourceRef{scene_file.c_str(), 4, 30});
+    NodeId n = b.shape("mesh", p);
+    return std::get<MeshRef>(b.scene().shapes[b.scene().nodes[n].index].geometry);
+  };
+  for (int i = 0; i < 100; ++i) CHECK(load("tri.obj").mesh == 0);
+  CHECK(load("sub/../tri.obj").mesh == 0);   // the same file spelled differently
+  CHECK(load(dir.path / "tri.obj").mesh == 0);  // and absolute
+  CHECK(b.scene().meshes.size() == 1);
+  CHECK(b.scene().shapes.size() == 102);
+  // smooth = false builds different data (no computed normals): its own entry.
+  MeshRef flat = load("tri.obj", false);
+  CHECK(flat.mesh == 1);
+  CHECK_FALSE(flat.smooth);
+  CHECK(b.scene().meshes[1]->normals.empty());
+  CHECK(b.scene().meshes[0]->normals.size() == 3);
+  CHECK(load("tri.obj", false).mesh == 1);
+  CHECK(b.scene().meshes.size() == 2);
 }
 
 TEST_CASE("groups and dumps", "[builder]") {
