@@ -1,5 +1,6 @@
 #include "render/flatten.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "render/tolerances.hpp"
@@ -9,6 +10,20 @@ namespace {
 
 Vec3 transform_point(const Mat4& m, const Vec3& p) { return Vec3(m * glm::dvec4(p, 1.0)); }
 Vec3 transform_vector(const Mat4& m, const Vec3& v) { return Vec3(m * glm::dvec4(v, 0.0)); }
+
+// A composed child → world transform must be finite and invertible: instances are traced in
+// object space through its inverse, and a singular one (a scale of 0, or tiny scales whose
+// product underflows) would give NaN rays and normals, or silently lose the object.
+void check_transform(const Mat4& m, const SourceRef& loc) {
+  if (m == Mat4(1.0)) return;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r]))
+        throw RenderError(loc, "transform is not finite (a scale or translation too large?)");
+  double det = glm::determinant(glm::dmat3(m));
+  if (!std::isfinite(det)) throw RenderError(loc, "transform is not finite (a scale too large?)");
+  if (!(std::abs(det) > tol::kSingularDeterminant)) throw RenderError(loc, "transform is singular (scale 0?)");
+}
 
 void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& parent, int depth,
                    FlatScene& out) {
@@ -22,10 +37,12 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
   switch (node.kind) {
     case NodeKind::Shape:
       if (node.index >= scene.shapes.size()) throw RenderError(node.loc, "internal: unknown shape");
+      check_transform(m, child.loc);
       out.shapes.push_back(FlatShape{node.index, m, child.loc});
       break;
     case NodeKind::Light:
       if (node.index >= scene.lights.size()) throw RenderError(node.loc, "internal: unknown light");
+      check_transform(m, child.loc);
       out.lights.push_back(transform_light(scene.lights[node.index], m));
       break;
     case NodeKind::Group:

@@ -19,8 +19,9 @@ struct FlatScene {
   std::vector<LightDesc> lights;  // already in world space
 };
 
-// Throws RenderError when a node index is out of range or groups nest deeper than
-// tol::kMaxGroupDepth (a cycle).
+// Throws RenderError when a node index is out of range, groups nest deeper than
+// tol::kMaxGroupDepth (a cycle), or an instance's composed transform is not finite or is
+// singular ("transform is singular (scale 0?)", located at the instance's placement).
 FlatScene flatten_scene(const SceneDesc& scene);
 
 // The light moved into world space by `m` (positions as points, directions as vectors).

@@ -27,7 +27,8 @@ inline constexpr double kParallelVectors = 1e-12;
 inline constexpr double kReferenceAxisCosine = 0.9;
 
 // An instance transform whose 3x3 determinant is below this (e.g. `scale 0`) cannot be
-// inverted: the instance is flattened to nothing and skipped.
+// inverted: flatten_scene reports it as a located RenderError (World also skips such an
+// instance, as a last guard).
 inline constexpr double kSingularDeterminant = 1e-300;
 
 // Lengths below this are treated as zero (degenerate axes, zero radii, null vectors).

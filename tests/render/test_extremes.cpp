@@ -1,0 +1,233 @@
+// Extreme scales and degenerate inputs: each must either render with no NaN or infinite pixel
+// (and no NaN sample), or be reported as a located SceneError (scene building) or RenderError
+// (rendering) with a clear message. Nothing may crash or abort.
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "render/renderer.hpp"
+#include "render/scene_builder.hpp"
+#include "scene_fixture.hpp"
+
+using namespace rts::render;
+using namespace rts::render::test;
+
+namespace {
+
+const char* const kFile = "extreme.rts";
+SourceRef at(uint32_t line, uint32_t col = 1) { return SourceRef{kFile, line, col}; }
+
+// A small lit scene with a floor and a shiny material that exercises every secondary ray.
+SceneDesc base_scene() {
+  SceneDesc s;
+  s.settings.width = 24;
+  s.settings.height = 18;
+  s.settings.samples = 2;
+  s.has_camera = true;
+  s.camera.position = Vec3(0, 1, -5);
+  s.camera.look_at = Vec3(0, 0.5, 0);
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}));
+  LightDesc l;
+  l.position = Vec3(3, 6, -4);
+  place(s, add_light(s, l));
+  return s;
+}
+
+MaterialId shiny(SceneDesc& s) {
+  MaterialDesc m;
+  m.reflect = Color(0.4);
+  m.transmit = Color(0.5);
+  m.ior = 1.5;
+  m.fresnel = true;
+  m.specular = 0.8;
+  return add_material(s, m);
+}
+
+void require_clean_render(const SceneDesc& s) {
+  RenderOptions o;
+  o.threads = 2;
+  o.aovs = {"normal", "depth", "albedo"};
+  RenderResult r = render(s, o);
+  for (float v : r.color.rgb) REQUIRE(std::isfinite(v));
+  for (const auto& [name, img] : r.aovs) {
+    CAPTURE(name);
+    for (float v : img.rgb) REQUIRE(std::isfinite(v));
+  }
+  CHECK(r.stats.rays.nan_samples == 0);
+}
+
+// The RenderError's message and location, or "(no error)".
+std::string render_error(const SceneDesc& s, SourceRef* where = nullptr) {
+  try {
+    RenderOptions o;
+    o.threads = 2;
+    render(s, o);
+  } catch (const RenderError& e) {
+    if (where) *where = e.where;
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string scene_error(const std::function<void()>& f, SourceRef* where = nullptr) {
+  try {
+    f();
+  } catch (const SceneError& e) {
+    if (where) *where = e.where;
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("extreme sphere radii render without NaN", "[extremes]") {
+  SECTION("radius 1e-8, seen up close") {
+    SceneDesc s = base_scene();
+    s.camera.position = Vec3(0, 0.5, -5e-8);
+    s.camera.look_at = Vec3(0, 0.5, 0);
+    place(s, add_shape(s, Sphere{Vec3(0, 0.5, 0), 1e-8}, shiny(s)));
+    require_clean_render(s);
+  }
+  SECTION("radius 1e-8 among normal objects") {
+    SceneDesc s = base_scene();
+    place(s, add_shape(s, Sphere{Vec3(0, 0.5, 0), 1e-8}, shiny(s)));
+    place(s, add_shape(s, Sphere{Vec3(1, 0.5, 0), 0.5}, shiny(s)));
+    require_clean_render(s);
+  }
+  SECTION("radius 1e8, camera outside") {
+    SceneDesc s = base_scene();
+    place(s, add_shape(s, Sphere{Vec3(0, 0, 1e8 + 10), 1e8}, shiny(s)));
+    require_clean_render(s);
+  }
+  SECTION("radius 1e8, camera inside") {
+    SceneDesc s = base_scene();
+    place(s, add_shape(s, Sphere{Vec3(0), 1e8}, shiny(s)));
+    require_clean_render(s);
+  }
+}
+
+TEST_CASE("degenerate shapes render without NaN", "[extremes]") {
+  SceneDesc s = base_scene();
+  MaterialId m = shiny(s);
+  place(s, add_shape(s, triangle(Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(1, 2, 0)), m));   // zero area (collinear)
+  Triangle smooth = triangle(Vec3(0.3), Vec3(0.3), Vec3(0.3));                        // a point, with normals
+  smooth.has_normals = true;
+  place(s, add_shape(s, smooth, m));
+  place(s, add_shape(s, Cylinder{Vec3(0, 0.5, 0), Vec3(0, 0.5, 0), 1.0, true}, m));    // from == to
+  place(s, add_shape(s, Cylinder{Vec3(0, 0.5, 0), Vec3(0, 0.5, 0), 1.0, false}, m));
+  place(s, add_shape(s, Box{Vec3(1), Vec3(-1)}, m));                                 // min > max
+  place(s, add_shape(s, Box{Vec3(0.5, 0, 0), Vec3(0.5, 1, 1)}, m));                  // zero thickness
+  require_clean_render(s);
+}
+
+TEST_CASE("degenerate cameras render without NaN", "[extremes]") {
+  SECTION("position == look_at") {
+    SceneDesc s = base_scene();
+    place(s, add_shape(s, Sphere{Vec3(0, 0.5, 2), 0.5}, shiny(s)));
+    s.camera.look_at = s.camera.position;
+    require_clean_render(s);
+  }
+  SECTION("up parallel to the view direction") {
+    SceneDesc s = base_scene();
+    place(s, add_shape(s, Sphere{Vec3(0, 0.5, 0), 0.5}, shiny(s)));
+    s.camera.position = Vec3(0, 5, 0);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.camera.up = Vec3(0, 1, 0);
+    require_clean_render(s);
+    s.camera.up = Vec3(0);  // no up at all
+    require_clean_render(s);
+  }
+}
+
+TEST_CASE("singular and non-finite transforms are located render errors", "[extremes]") {
+  SceneDesc s = base_scene();
+  s.roots.clear();
+  NodeId ball = add_shape(s, Sphere{Vec3(0), 1.0}, shiny(s));
+  SECTION("scale 0 on a placed shape") {
+    s.roots.push_back(Child{ball, scale(Vec3(0)), at(7, 3)});
+  }
+  SECTION("one flattened axis") {
+    s.roots.push_back(Child{ball, scale(Vec3(1, 0, 1)), at(7, 3)});
+  }
+  SECTION("tiny scales whose product underflows") {
+    NodeId g = add_group(s, {Child{ball, scale(Vec3(1e-110)), at(7, 3)}});
+    s.roots.push_back(Child{g, scale(Vec3(1e-110)), at(9, 1)});
+  }
+  SECTION("scale 0 on a group holding a light") {
+    LightDesc l;
+    l.kind = LightKind::Directional;
+    NodeId g = add_group(s, {Child{add_light(s, l), Mat4(1.0), at(7, 3)}});
+    s.roots.push_back(Child{g, scale(Vec3(0)), at(9, 1)});
+  }
+  SourceRef where;
+  std::string msg = render_error(s, &where);
+  CHECK(msg == "transform is singular (scale 0?)");
+  CHECK(std::string(where.file) == kFile);
+  CHECK(where.line == 7);
+  CHECK(where.col == 3);
+}
+
+TEST_CASE("an infinite composed scale is a located render error", "[extremes]") {
+  SceneDesc s = base_scene();
+  NodeId ball = add_shape(s, Sphere{Vec3(0), 1.0});
+  NodeId g = add_group(s, {Child{ball, scale(Vec3(1e200)), at(7, 3)}});
+  s.roots.push_back(Child{g, scale(Vec3(1e200)), at(9, 1)});
+  SourceRef where;
+  CHECK_THAT(render_error(s, &where), Catch::Contains("transform is not finite"));
+  CHECK(where.line == 7);
+}
+
+TEST_CASE("the scene builder rejects degenerate shapes and cameras with located errors", "[extremes]") {
+  SceneBuilder b;
+  SourceRef where;
+  {
+    ParamSet p("cylinder", at(3));
+    p.add("from", Vec3(1, 2, 3), at(3, 12));
+    p.add("to", Vec3(1, 2, 3), at(3, 30));
+    p.add("radius", 1.0, at(3, 50));
+    CHECK_THAT(scene_error([&] { b.shape("cylinder", p); }, &where), Catch::Contains("non-zero vector"));
+    CHECK(where.line == 3);
+    CHECK(where.col == 30);
+  }
+  {
+    ParamSet p("box", at(4));
+    p.add("min", Vec3(1), at(4, 7));
+    p.add("max", Vec3(-1), at(4, 20));
+    CHECK_THAT(scene_error([&] { b.shape("box", p); }, &where), Catch::Contains("max must be >= min"));
+    CHECK(where.line == 4);
+    CHECK(where.col == 20);
+  }
+  {
+    ParamSet p("triangle", at(5));
+    p.add("v0", Vec3(0), at(5, 12));
+    p.add("v1", Vec3(1), at(5, 24));
+    p.add("v2", Vec3(2), at(5, 36));
+    CHECK_NOTHROW(b.shape("triangle", p));  // zero area: allowed, never hit (rendered above)
+  }
+  {
+    ParamSet p("camera", at(6));
+    p.add("position", Vec3(0, 1, 0), at(6, 10));
+    p.add("look_at", Vec3(0, 1, 0), at(6, 30));
+    CHECK_THAT(scene_error([&] { b.camera(p); }, &where), Catch::Contains("position and look_at must differ"));
+    CHECK(where.line == 6);
+  }
+  {
+    ParamSet p("camera", at(8));
+    p.add("position", Vec3(0, 5, 0), at(8, 10));
+    p.add("look_at", Vec3(0), at(8, 30));
+    p.add("up", Vec3(0, 2, 0), at(8, 50));
+    CHECK_THAT(scene_error([&] { b.camera(p); }, &where), Catch::Contains("up must not be parallel"));
+    CHECK(where.line == 8);
+  }
+  {
+    ParamSet p("sphere", at(9));
+    p.add("radius", 1e-8, at(9, 10));
+    CHECK_NOTHROW(b.shape("sphere", p));
+    ParamSet q("sphere", at(10));
+    q.add("radius", 1e8, at(10, 10));
+    CHECK_NOTHROW(b.shape("sphere", q));
+  }
+}
