@@ -1,7 +1,10 @@
 #include "render/frame.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstdint>
 #include <new>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -34,6 +37,7 @@ void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, 
     if (aovs.depth) {
       result.aovs["depth"] = Image(width, height);
       frame.depth.assign(pixels, -1.0f);
+      frame.depth_bounded.assign(pixels, 0);
     }
   } catch (const std::bad_alloc&) {
     throw RenderError(where, fmt::format("out of memory for a {}x{} image", width, height));
@@ -43,13 +47,38 @@ void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, 
   frame.variance = &result.stats.pixels.variance;
 }
 
+namespace {
+
+// Without bounded geometry in view, depth is scaled by this quantile of the hit distances.
+constexpr double kDepthPercentile = 0.99;
+
+// The distance that maps to 1 in the depth AOV (see finish_depth); 0 when nothing was hit.
+float depth_reference(const Frame& frame) {
+  float farthest_bounded = 0.0f;
+  for (std::size_t i = 0; i < frame.depth.size(); ++i)
+    if (frame.depth_bounded[i]) farthest_bounded = std::max(farthest_bounded, frame.depth[i]);
+  if (farthest_bounded > 0.0f) return farthest_bounded;
+  // Only planes (or nothing) seen: the 99th percentile, so the few pixels at the horizon,
+  // whose depth grows without bound, do not set the scale.
+  std::vector<float> hits;
+  for (float d : frame.depth)
+    if (d >= 0.0f) hits.push_back(d);
+  if (hits.empty()) return 0.0f;
+  auto nth = hits.begin() + static_cast<std::ptrdiff_t>(kDepthPercentile * static_cast<double>(hits.size() - 1));
+  std::nth_element(hits.begin(), nth, hits.end());
+  return *nth;
+}
+
+}  // namespace
+
 void finish_depth(RenderResult& result, const Frame& frame) {
   if (!frame.aovs.depth) return;
-  float farthest = 0.0f;
-  for (float d : frame.depth) farthest = std::max(farthest, d);
+  const float reference = depth_reference(frame);
   Image& img = result.aovs["depth"];
   for (std::size_t i = 0; i < frame.depth.size(); ++i) {
-    float v = frame.depth[i] >= 0.0f && farthest > 0.0f ? frame.depth[i] / farthest : 0.0f;
+    float d = frame.depth[i];
+    float v = 0.0f;
+    if (d >= 0.0f) v = reference > 0.0f ? std::min(1.0f, d / reference) : 1.0f;
     img.rgb[i * 3] = img.rgb[i * 3 + 1] = img.rgb[i * 3 + 2] = v;
   }
 }

@@ -3,6 +3,7 @@
 // workers write disjoint pixels, so no locking is needed.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct Frame {
   Image* normal = nullptr;                 // null unless requested
   Image* albedo = nullptr;
   std::vector<float> depth;                // raw distances, < 0 where nothing is hit
+  std::vector<uint8_t> depth_bounded;      // 1 where the hit is bounded geometry (not a plane)
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 };
@@ -36,7 +38,10 @@ struct Frame {
 void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, SourceRef where,
                     Frame& frame);
 
-// Normalises the raw depths into result.aovs["depth"]: 1 at the farthest hit, 0 for misses.
+// Normalises the raw depths into result.aovs["depth"]: 0 for misses, otherwise depth / reference
+// clamped to 1. The reference is the farthest hit on bounded geometry when any is visible (so
+// an infinite plane running to the horizon cannot squash everything else to black), else the
+// 99th percentile of the (plane) depths.
 void finish_depth(RenderResult& result, const Frame& frame);
 
 }  // namespace rts::render

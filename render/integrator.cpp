@@ -77,6 +77,7 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
   out.hit = true;
   out.normal = hit.shading_normal;
   out.depth = hit.t * glm::length(ray.direction);
+  out.bounded = world_.instance(hit.instance).kind != PrimKind::Plane;
   out.albedo = albedo(material(hit.instance), hit);
   return out;
 }
@@ -151,13 +152,14 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
   Vec3 incident = ray.direction / dir_len;
   double travelled = hit.t * dir_len;
 
-  // Face the normals towards the incoming ray; leaving a solid = hitting its back side.
+  // The geometric normal decides the side: face it towards the incoming ray (leaving a solid
+  // = hitting its back side). The shading normal is then put into the same hemisphere as the
+  // faced geometric normal on its own, so vertex normals that disagree with the triangle's
+  // winding (common in OBJ files and hand-written meshes) shade the same as consistent ones.
   Vec3 ng = hit.normal, n = hit.shading_normal;
   bool entering = glm::dot(ng, incident) < 0.0;
-  if (!entering) {
-    ng = -ng;
-    n = -n;
-  }
+  if (!entering) ng = -ng;
+  if (glm::dot(n, ng) < 0.0) n = -n;
   Vec3 view = -incident;
   Rgb base = albedo(m, hit);
   Rgb color = to_rgb(m.emission) + m.ambient * base * ambient_light_;
@@ -171,8 +173,13 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
   Vec3 refracted(0.0);
   if (!is_black(kt)) {
     double eta = entering ? 1.0 / m.ior : m.ior;
+    // With fresnel, the interface splits one budget, max(reflect, transmit) per channel,
+    // between the two directions: a fraction F reflects, 1 - F (filtered by `transmit`)
+    // passes, so kr + kt never exceeds the larger weight (1 for clear glass, whatever
+    // `reflect` adds). Without fresnel the two weights simply add, as documented.
     if (!refract(incident, n, eta, refracted)) {
-      kr += kt;  // total internal reflection: the transmitted energy is reflected
+      // Total internal reflection: the transmitted energy is reflected (F = 1).
+      kr = m.fresnel ? glm::max(kr, kt) : kr + kt;
       kt = Rgb(0.0);
     } else if (m.fresnel) {
       double f0 = (m.ior - 1.0) / (m.ior + 1.0);
@@ -180,7 +187,7 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
       // Schlick uses the angle on the less dense side.
       double cos_outside = entering ? cos_i : -glm::dot(refracted, n);
       double f = schlick(std::abs(cos_outside), f0);
-      kr += kt * f;
+      kr = glm::max(kr, kt) * f;
       kt *= (1.0 - f);
     }
   } else if (m.fresnel && !is_black(kr)) {

@@ -17,6 +17,7 @@ struct FirstHit {
   bool hit = false;
   Vec3 normal{0.0};     // world shading normal, outward
   double depth = 0.0;   // distance from the camera
+  bool bounded = false; // the surface is bounded geometry (not an infinite plane)
   Rgb albedo{0.0};
 };
 

@@ -48,8 +48,11 @@ void PixelRenderer::render_aovs(int x, int y, Frame& frame, RayCounters& counter
   FirstHit fh = integrator_.first_hit(camera_.generate(x + 0.5, y + 0.5, glm::dvec2(0.5)));
   if (frame.normal) store(frame.normal->at(x, y), fh.hit ? (fh.normal + 1.0) * 0.5 : Vec3(0.0));
   if (frame.albedo) store(frame.albedo->at(x, y), fh.albedo);
-  if (frame.aovs.depth && fh.hit && std::isfinite(fh.depth))
-    frame.depth[frame.index(x, y)] = static_cast<float>(fh.depth);
+  const float depth = static_cast<float>(fh.depth);
+  if (frame.aovs.depth && fh.hit && std::isfinite(depth)) {
+    frame.depth[frame.index(x, y)] = depth;
+    frame.depth_bounded[frame.index(x, y)] = fh.bounded ? 1 : 0;
+  }
 }
 
 }  // namespace rts::render

@@ -250,3 +250,76 @@ TEST_CASE("glossy reflection blurs around the mirror image", "[analytic]") {
   CHECK(lit > n / 2);  // mostly on the emitter...
   CHECK(lit < n);      // ...but the lobe reaches past its edge
 }
+
+TEST_CASE("smooth normals opposite to the winding shade like consistent ones", "[analytic]") {
+  // The triangle winds clockwise as seen from the camera (geometric normal +z, away from it);
+  // its vertex normals point at the camera (-z). Lit head-on, it must shade as a lit
+  // Lambertian surface, n·l = 1, whichever way the normals were given.
+  const double kd = 0.7;
+  MaterialDesc m;
+  m.color = Color(1.0);
+  m.diffuse = kd;
+  m.ambient = 0;
+  LightDesc l;
+  l.kind = LightKind::Directional;
+  l.direction = Vec3(0, 0, 1);  // travelling away from the camera: onto the visible side
+  const Vec3 a(-1, -1, 0), b(1, -1, 0), c(0, 1, 0);
+  const Ray ray{Vec3(0, -0.2, -5), Vec3(0, 0, 1)};
+  for (Vec3 given : {Vec3(0, 0, -1), Vec3(0, 0, 1)}) {
+    CAPTURE(given);
+    SECTION("triangle") {
+      SceneDesc s;
+      Triangle t = triangle(a, b, c);
+      t.has_normals = true;
+      t.n0 = t.n1 = t.n2 = given;
+      place(s, add_shape(s, t, add_material(s, m)));
+      place(s, add_light(s, l));
+      Rgb got = Tracer(s).trace(ray);
+      CHECK(got.x == Approx(kd).epsilon(1e-9));
+    }
+    SECTION("mesh") {
+      SceneDesc s;
+      auto mesh = std::make_shared<MeshData>();
+      mesh->positions = {a, b, c};
+      mesh->normals = {given, given, given};
+      mesh->indices = {0, 1, 2};
+      s.meshes.push_back(mesh);
+      place(s, add_shape(s, MeshRef{0, true}, add_material(s, m)));
+      place(s, add_light(s, l));
+      Rgb got = Tracer(s).trace(ray);
+      CHECK(got.x == Approx(kd).epsilon(1e-9));
+    }
+  }
+}
+
+TEST_CASE("fresnel glass never outshines a uniform background", "[analytic]") {
+  // A glass sphere in a uniformly white world (no lights, no ambient, no diffuse): every
+  // path ends in the background, so energy conservation means no pixel may exceed 1 by
+  // more than rounding — whatever reflect and transmit say.
+  for (double reflect : {0.0, 0.5, 1.0}) {
+    for (double ior : {1.33, 1.5, 2.42}) {
+      CAPTURE(reflect, ior);
+      SceneDesc s;
+      s.settings.background = Color(1.0);
+      MaterialDesc glass;
+      glass.ambient = 0;
+      glass.diffuse = 0;
+      glass.reflect = Color(reflect);
+      glass.transmit = Color(1.0);
+      glass.ior = ior;
+      glass.fresnel = true;
+      place(s, add_shape(s, Sphere{Vec3(0), 1.0}, add_material(s, glass)));
+      Tracer tracer(s, 8);
+      double worst = 0;
+      for (int i = 0; i <= 40; ++i) {
+        double x = -1.0 + 2.0 * i / 40.0;  // across the sphere, centre to rim
+        for (double y : {0.0, 0.37, 0.71}) {
+          Rgb got = tracer.trace(Ray{Vec3(x, y, -5), Vec3(0, 0, 1)});
+          worst = std::max({worst, got.x, got.y, got.z});
+        }
+      }
+      CHECK(worst <= 1.0 + 1e-6);
+      CHECK(worst >= 0.5);  // and the glass is not black either
+    }
+  }
+}

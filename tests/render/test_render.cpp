@@ -137,7 +137,7 @@ TEST_CASE("degenerate geometry never produces NaN pixels", "[render]") {
   place(s, add_shape(s, Cone{Vec3(0), Vec3(0, 1, 0), 0.0, 0.0, true}, m));            // zero radii
   place(s, add_shape(s, Disc{Vec3(0), Vec3(0), 1.0, 0.0}, m));                        // no normal
   place(s, add_shape(s, Plane{Vec3(0), 0.0}, m));                                     // no normal
-  place(s, add_shape(s, Sphere{Vec3(0), 1.0}, m), scale(Vec3(1, 0, 1)));              // flattened
+  // (a flattened instance, scale <1, 0, 1>, is a render error: see test_extremes.cpp)
   place(s, add_shape(s, Box{Vec3(-0.5), Vec3(0.5)}, m), translate(Vec3(1, 0, 0)));
   auto mesh = std::make_shared<MeshData>();
   mesh->positions = {{0, 0, 0}, {0, 0, 0}, {1, 0, 0}};
@@ -187,6 +187,57 @@ TEST_CASE("AOVs: normal, depth and albedo images", "[render]") {
   for (float v : r.aovs["depth"].rgb) max_d = std::max(max_d, v);
   CHECK(max_d == 1.0f);  // normalised by the farthest finite depth
   CHECK(r.aovs["albedo"].at(8, 8)[1] == Approx(0.5));
+}
+
+TEST_CASE("depth AOV: a visible infinite plane does not squash bounded geometry to black", "[render]") {
+  // A floor running to the horizon has enormous depths near it; scaling by the farthest hit
+  // left the sphere (about 5 units away) at a few percent of gray.
+  SceneDesc s;
+  s.settings.width = 48;
+  s.settings.height = 36;
+  s.has_camera = true;
+  s.camera.position = Vec3(0, 1, -5);
+  s.camera.look_at = Vec3(0, 0.5, 0);
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}));
+  place(s, add_shape(s, Sphere{Vec3(0, 0.5, 0), 0.5}));
+  RenderOptions o;
+  o.aovs = {"depth"};
+  RenderResult r = render(s, o);
+  const Image& d = r.aovs["depth"];
+  // The sphere's centre pixel: ~4.6 units away; the farthest bounded hit is < 5.6.
+  float sphere = d.at(24, 18)[0];
+  CHECK(sphere > 0.75f);
+  CHECK(sphere < 1.0f);
+  float max_d = 0;
+  for (float v : d.rgb) {
+    CHECK(v >= 0.0f);
+    max_d = std::max(max_d, v);
+  }
+  CHECK(max_d == 1.0f);  // the far floor clamps to white
+  CHECK(d.at(0, 0)[0] == 0.0f);  // the sky above the horizon: nothing hit
+
+  SECTION("only the plane in view: scaled by the 99th percentile, not the horizon") {
+    SceneDesc p;
+    p.settings.width = 48;
+    p.settings.height = 36;
+    p.has_camera = true;
+    p.camera.position = Vec3(0, 1, -5);
+    p.camera.look_at = Vec3(0, 0.5, 0);
+    place(p, add_shape(p, Plane{Vec3(0, 1, 0), 0.0}));
+    RenderResult rp = render(p, o);
+    const Image& dp = rp.aovs["depth"];
+    // Near the horizon the top 1% of depths clamp to white; nearer floor is a gradient.
+    std::size_t hits = 0, white = 0;
+    for (std::size_t i = 0; i < dp.rgb.size(); i += 3) {
+      hits += dp.rgb[i] > 0.0f;
+      white += dp.rgb[i] == 1.0f;
+    }
+    REQUIRE(hits > 0);
+    CHECK(white * 100 >= hits);
+    CHECK(white * 100 <= hits * 2);
+    CHECK(dp.at(24, 35)[0] > 0.0f);
+    CHECK(dp.at(24, 35)[0] < dp.at(24, 20)[0]);
+  }
 }
 
 TEST_CASE("render errors: oversize image, bad settings, unknown AOV", "[render]") {
