@@ -55,16 +55,24 @@ Sized<T> pop(std::vector<Sized<T>>& v) {
   return x;
 }
 
-// Moves the expressions pushed since `mark` into `out`; returns their tallest height.
-uint32_t collect_exprs(ParseState& st, uint32_t mark, std::vector<ExprPtr>& out) {
+// Moves the pieces pushed on `stack` since `mark` into `out`, in order, first passing each
+// to `check` (which may throw); returns their tallest height (0 when there are none).
+template <typename T, typename Check>
+uint32_t collect(std::vector<Sized<T>>& stack, uint32_t mark, std::vector<T>& out, Check check) {
   uint32_t tallest = 0;
-  out.reserve(st.exprs.size() - mark);
-  for (std::size_t i = mark; i < st.exprs.size(); ++i) {
-    tallest = std::max(tallest, st.exprs[i].height);
-    out.push_back(std::move(st.exprs[i].node));
+  out.reserve(stack.size() - mark);
+  for (std::size_t i = mark; i < stack.size(); ++i) {
+    check(stack[i].node);
+    tallest = std::max(tallest, stack[i].height);
+    out.push_back(std::move(stack[i].node));
   }
-  st.exprs.resize(mark);
+  stack.resize(mark);
   return tallest;
+}
+
+template <typename T>
+uint32_t collect(std::vector<Sized<T>>& stack, uint32_t mark, std::vector<T>& out) {
+  return collect(stack, mark, out, [](const T&) {});
 }
 
 void append_utf8(std::string& out, uint32_t cp) {
@@ -181,14 +189,14 @@ Open close_bracket(ParseState& st) {
 void finish_list(ParseState& st) {
   Open o = close_bracket(st);
   auto list = std::make_unique<ListExpr>(o.loc);
-  uint32_t h = collect_exprs(st, o.mark, list->elements);
+  uint32_t h = collect(st.exprs, o.mark, list->elements);
   push_expr(st, std::move(list), h + 1);
 }
 
 void finish_vector(ParseState& st) {
   Open o = close_bracket(st);
   auto vec = std::make_unique<VectorExpr>(o.loc);
-  uint32_t h = collect_exprs(st, o.mark, vec->components);
+  uint32_t h = collect(st.exprs, o.mark, vec->components);
   push_expr(st, std::move(vec), h + 1);
 }
 
@@ -196,11 +204,8 @@ void finish_call(ParseState& st) {
   Open o = close_bracket(st);
   Sized<ExprPtr> callee = pop_expr(st);
   auto call = std::make_unique<CallExpr>(callee.node->loc, std::move(callee.node));
-  uint32_t h = callee.height;
-  call->args.reserve(st.args.size() - o.mark);
   std::optional<SourceLoc> first_named;
-  for (std::size_t i = o.mark; i < st.args.size(); ++i) {
-    Argument& a = st.args[i].node;
+  uint32_t h = std::max(callee.height, collect(st.args, o.mark, call->args, [&](const Argument& a) {
     if (a.name) {
       if (!first_named) first_named = a.loc;
     } else if (first_named) {
@@ -208,10 +213,7 @@ void finish_call(ParseState& st) {
       e.diag.notes.push_back(Note{*first_named, "the first named argument is here"});
       throw e;
     }
-    h = std::max(h, st.args[i].height);
-    call->args.push_back(std::move(a));
-  }
-  st.args.resize(o.mark);
+  }));
   push_expr(st, std::move(call), h + 1);
 }
 
@@ -228,13 +230,7 @@ void finish_block_body(ParseState& st) {
   Open o = close_bracket(st);
   BlockBody body;
   body.open_loc = o.loc;
-  body.items.reserve(st.items.size() - o.mark);
-  uint32_t h = 0;
-  for (std::size_t i = o.mark; i < st.items.size(); ++i) {
-    h = std::max(h, st.items[i].height);
-    body.items.push_back(std::move(st.items[i].node));
-  }
-  st.items.resize(o.mark);
+  uint32_t h = collect(st.items, o.mark, body.items);
   st.block_bodies.push_back({std::move(body), h});
 }
 
@@ -242,25 +238,16 @@ void finish_body(ParseState& st) {
   Open o = close_bracket(st);
   Body body;
   body.open_loc = o.loc;
-  body.stmts.reserve(st.stmts.size() - o.mark);
-  uint32_t h = 0;
-  for (std::size_t i = o.mark; i < st.stmts.size(); ++i) {
-    h = std::max(h, st.stmts[i].height);
-    body.stmts.push_back(std::move(st.stmts[i].node));
-  }
-  st.stmts.resize(o.mark);
+  uint32_t h = collect(st.stmts, o.mark, body.stmts);
   st.bodies.push_back({std::move(body), h});
 }
 
 void finish_params(ParseState& st) {
   Open o = close_bracket(st);
   std::vector<Param> list;
-  list.reserve(st.params.size() - o.mark);
-  uint32_t h = 0;
   std::unordered_map<Symbol, SourceLoc> seen;
   std::optional<SourceLoc> first_default;
-  for (std::size_t i = o.mark; i < st.params.size(); ++i) {
-    Param& p = st.params[i].node;
+  uint32_t h = collect(st.params, o.mark, list, [&](const Param& p) {
     if (auto [it, inserted] = seen.try_emplace(p.name, p.loc); !inserted) {
       LanguageError e(p.loc, fmt::format("duplicate parameter '{}'", *p.name));
       e.diag.notes.push_back(Note{it->second, "first declared here"});
@@ -274,10 +261,7 @@ void finish_params(ParseState& st) {
       e.diag.notes.push_back(Note{*first_default, "the first parameter with a default is here"});
       throw e;
     }
-    h = std::max(h, st.params[i].height);
-    list.push_back(std::move(p));
-  }
-  st.params.resize(o.mark);
+  });
   st.param_lists.push_back({std::move(list), h});
 }
 
