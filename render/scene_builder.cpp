@@ -131,6 +131,25 @@ std::string cache_key(const std::string& path) {
   return ec ? path : p.string();
 }
 
+// The reference in property `name` (a shape's material, a material's texture), or null when
+// it is absent: "property 'material' of sphere expects a material, got a number".
+template <typename Ref>
+const Ref* reference(ParamSet& ps, std::string_view name, std::string_view block, std::string_view what) {
+  const ParamValue* v = ps.value(name);
+  if (!v) return nullptr;
+  auto* ref = std::get_if<Ref>(v);
+  if (!ref)
+    ps.fail(*ps.find(name),
+            fmt::format("property '{}' of {} expects a {}, got a {}", name, block, what, param_type_name(*v)));
+  return ref;
+}
+
+// Appends a scene node for the shape, light or group at `index`; returns its id.
+NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef loc) {
+  scene.nodes.push_back(Node{kind, static_cast<uint32_t>(index), loc});
+  return static_cast<NodeId>(scene.nodes.size() - 1);
+}
+
 }  // namespace
 
 BlockCategory SceneBuilder::category(std::string_view kind) {
@@ -244,13 +263,7 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
     else
       m.color = ps.color("color", m.color);
   }
-  if (const ParamValue* t = ps.value("texture")) {
-    auto* ref = std::get_if<TextureRef>(t);
-    if (!ref)
-      ps.fail(*ps.find("texture"),
-              fmt::format("property 'texture' of material expects a texture, got a {}", param_type_name(*t)));
-    m.texture = ref->id;
-  }
+  if (const TextureRef* ref = reference<TextureRef>(ps, "texture", "material", "texture")) m.texture = ref->id;
   m.emission = ps.color("emission", m.emission);
   non_negative_color(ps, "emission", m.emission);
   m.ambient = non_negative(ps, "ambient", ps.number("ambient", m.ambient));
@@ -293,13 +306,7 @@ std::vector<Vec3> vector_list(ParamSet& ps, std::string_view name) {
 NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   ShapeDesc s;
   s.loc = ps.loc();
-  if (const ParamValue* m = ps.value("material")) {
-    auto* ref = std::get_if<MaterialRef>(m);
-    if (!ref)
-      ps.fail(*ps.find("material"),
-              fmt::format("property 'material' of {} expects a material, got a {}", kind, param_type_name(*m)));
-    s.material = ref->id;
-  }
+  if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) s.material = ref->id;
   if (kind == "sphere") {
     Sphere g;
     g.center = ps.vec3("center", g.center);
@@ -412,8 +419,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     ps.fail_block(fmt::format("'{}' is not a shape", kind));
   }
   scene_.shapes.push_back(std::move(s));
-  scene_.nodes.push_back(Node{NodeKind::Shape, static_cast<uint32_t>(scene_.shapes.size() - 1), ps.loc()});
-  return static_cast<NodeId>(scene_.nodes.size() - 1);
+  return add_node(scene_, NodeKind::Shape, scene_.shapes.size() - 1, ps.loc());
 }
 
 NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
@@ -464,14 +470,12 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     ps.fail_block(fmt::format("'{}' is not a light", kind));
   }
   scene_.lights.push_back(std::move(l));
-  scene_.nodes.push_back(Node{NodeKind::Light, static_cast<uint32_t>(scene_.lights.size() - 1), ps.loc()});
-  return static_cast<NodeId>(scene_.nodes.size() - 1);
+  return add_node(scene_, NodeKind::Light, scene_.lights.size() - 1, ps.loc());
 }
 
 NodeId SceneBuilder::group(std::vector<Child> children, SourceRef loc) {
   scene_.groups.push_back(GroupDesc{std::move(children)});
-  scene_.nodes.push_back(Node{NodeKind::Group, static_cast<uint32_t>(scene_.groups.size() - 1), loc});
-  return static_cast<NodeId>(scene_.nodes.size() - 1);
+  return add_node(scene_, NodeKind::Group, scene_.groups.size() - 1, loc);
 }
 
 void SceneBuilder::place(const Child& instance) { scene_.roots.push_back(instance); }
