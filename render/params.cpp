@@ -123,13 +123,24 @@ namespace {
   ps.fail(p, fmt::format("property '{}' of {} expects {}, got {}", p.name, ps.kind(), with_article(expected),
                          with_article(param_type_name(p.value))));
 }
+
+// Property `name` when it holds a T, `def` when it is absent; any other type is an error.
+template <typename T>
+T typed(ParamSet& ps, std::string_view name, const T& def, const char* expected) {
+  const Param* p = ps.find(name);
+  if (!p) return def;
+  if (auto* v = std::get_if<T>(&p->value)) return *v;
+  wrong_type(ps, *p, expected);
+}
+
+// For the require_* getters: "sphere needs property 'radius'".
+void require_present(const ParamSet& ps, std::string_view name) {
+  if (!ps.has(name)) ps.fail_block(fmt::format("{} needs property '{}'", ps.kind(), name));
+}
 }  // namespace
 
 double ParamSet::number(std::string_view name, double def) {
-  const Param* p = find(name);
-  if (!p) return def;
-  if (auto* d = std::get_if<double>(&p->value)) return *d;
-  wrong_type(*this, *p, "number");
+  return typed<double>(*this, name, def, "number");
 }
 
 int ParamSet::integer(std::string_view name, int def) {
@@ -143,24 +154,15 @@ int ParamSet::integer(std::string_view name, int def) {
 }
 
 bool ParamSet::boolean(std::string_view name, bool def) {
-  const Param* p = find(name);
-  if (!p) return def;
-  if (auto* b = std::get_if<bool>(&p->value)) return *b;
-  wrong_type(*this, *p, "bool");
+  return typed<bool>(*this, name, def, "bool");
 }
 
 std::string ParamSet::string(std::string_view name, const std::string& def) {
-  const Param* p = find(name);
-  if (!p) return def;
-  if (auto* s = std::get_if<std::string>(&p->value)) return *s;
-  wrong_type(*this, *p, "string");
+  return typed<std::string>(*this, name, def, "string");
 }
 
 Vec3 ParamSet::vec3(std::string_view name, Vec3 def) {
-  const Param* p = find(name);
-  if (!p) return def;
-  if (auto* v = std::get_if<Vec3>(&p->value)) return *v;
-  wrong_type(*this, *p, "vector");
+  return typed<Vec3>(*this, name, def, "vector");
 }
 
 Color ParamSet::color(std::string_view name, Color def) {
@@ -173,17 +175,17 @@ Color ParamSet::color(std::string_view name, Color def) {
 }
 
 double ParamSet::require_number(std::string_view name) {
-  if (!has(name)) fail_block(fmt::format("{} needs property '{}'", kind_, name));
+  require_present(*this, name);
   return number(name, 0.0);
 }
 
 Vec3 ParamSet::require_vec3(std::string_view name) {
-  if (!has(name)) fail_block(fmt::format("{} needs property '{}'", kind_, name));
+  require_present(*this, name);
   return vec3(name, Vec3(0.0));
 }
 
 std::string ParamSet::require_string(std::string_view name) {
-  if (!has(name)) fail_block(fmt::format("{} needs property '{}'", kind_, name));
+  require_present(*this, name);
   return string(name, "");
 }
 
