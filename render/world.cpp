@@ -155,8 +155,8 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
 bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only) const {
   SurfaceHit best;
   uint32_t best_instance = 0;
-  bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
-    uint32_t i = bvh_.order[slot];
+  // Instance i hit within t_range: keep it as the closest so far and end the range there.
+  auto closer = [&](uint32_t i, Interval& t_range) {
     if (transmissive_only && !instances_[i].transmissive) return false;
     SurfaceHit h;
     if (!intersect_instance(instances_[i], ray, t_range, h)) return false;
@@ -164,17 +164,10 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
     best = h;
     best_instance = i;
     return true;
-  });
-  for (uint32_t i : planes_) {
-    if (transmissive_only && !instances_[i].transmissive) continue;
-    SurfaceHit h;
-    if (intersect_instance(instances_[i], ray, ray_t, h)) {
-      ray_t.max = h.t;
-      best = h;
-      best_instance = i;
-      found = true;
-    }
-  }
+  };
+  bool found = traverse_bvh<false>(bvh_, ray, ray_t,
+                                   [&](uint32_t slot, Interval& t_range) { return closer(bvh_.order[slot], t_range); });
+  for (uint32_t i : planes_) found = closer(i, ray_t) || found;
   if (!found) return false;
   const Instance& inst = instances_[best_instance];
   hit.t = best.t;
@@ -182,7 +175,6 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   hit.point = ray.at(best.t);
   hit.object_point = best.point;
   hit.uv = best.uv;
-  hit.has_uv = best.has_uv;
   // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
   // texture asks for them.
   hit.has_uv = best.has_uv || inst.kind == PrimKind::Sphere;
@@ -205,14 +197,13 @@ glm::dvec2 World::surface_uv(const WorldHit& hit) const {
 }
 
 bool World::occluded(const Ray& ray, Interval ray_t, bool opaque_only) const {
+  auto blocks = [&](uint32_t i, const Interval& t_range) {
+    return !(opaque_only && instances_[i].transmissive) && occluded_instance(instances_[i], ray, t_range);
+  };
   for (uint32_t i : planes_)
-    if (!(opaque_only && instances_[i].transmissive) && occluded_instance(instances_[i], ray, ray_t))
-      return true;
-  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
-    uint32_t i = bvh_.order[slot];
-    if (opaque_only && instances_[i].transmissive) return false;
-    return occluded_instance(instances_[i], ray, t_range);
-  });
+    if (blocks(i, ray_t)) return true;
+  return traverse_bvh<true>(bvh_, ray, ray_t,
+                            [&](uint32_t slot, Interval& t_range) { return blocks(bvh_.order[slot], t_range); });
 }
 
 }  // namespace rts::render
