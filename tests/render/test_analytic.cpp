@@ -127,8 +127,10 @@ TEST_CASE("a mirror shows the reflected object's color times its reflectance", "
   CHECK(no_bounce.y == 0.0);
 }
 
-TEST_CASE("glass slab shifts a ray laterally by t sin(theta - theta') / cos(theta')", "[analytic]") {
-  const double thickness = 2.0, ior = 1.5;
+namespace {
+
+// A clear glass slab (no diffuse or ambient term) filling -thickness <= y <= 0.
+SceneDesc glass_slab(double thickness, double ior) {
   SceneDesc s;
   MaterialDesc glass;
   glass.transmit = Color(1.0);
@@ -136,6 +138,14 @@ TEST_CASE("glass slab shifts a ray laterally by t sin(theta - theta') / cos(thet
   glass.diffuse = 0;
   glass.ambient = 0;
   place(s, add_shape(s, Box{Vec3(-100, -thickness, -100), Vec3(100, 0, 100)}, add_material(s, glass)));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("glass slab shifts a ray laterally by t sin(theta - theta') / cos(theta')", "[analytic]") {
+  const double thickness = 2.0, ior = 1.5;
+  SceneDesc s = glass_slab(thickness, ior);
   for (double deg : {10.0, 40.0, 65.0}) {
     double theta = deg * std::numbers::pi / 180.0;
     double theta_t = std::asin(std::sin(theta) / ior);
@@ -168,13 +178,7 @@ TEST_CASE("glass slab shifts a ray laterally by t sin(theta - theta') / cos(thet
 TEST_CASE("the integrator sees through the slab along the shifted ray", "[analytic]") {
   const double thickness = 2.0, ior = 1.5, theta = 40.0 * std::numbers::pi / 180.0;
   const double theta_t = std::asin(std::sin(theta) / ior);
-  SceneDesc s;
-  MaterialDesc glass;
-  glass.transmit = Color(1.0);
-  glass.ior = ior;
-  glass.diffuse = 0;
-  glass.ambient = 0;
-  place(s, add_shape(s, Box{Vec3(-100, -thickness, -100), Vec3(100, 0, 100)}, add_material(s, glass)));
+  SceneDesc s = glass_slab(thickness, ior);
   Vec3 dir(std::sin(theta), -std::cos(theta), 0);
   // Where the ray leaves the slab: entry at the origin, then along the refracted direction.
   Vec3 exit(thickness * std::tan(theta_t), -thickness, 0);

@@ -70,6 +70,30 @@ bool all_finite(const Image& img) {
   return true;
 }
 
+// An orthographic view straight down onto the y = 0 plane (+z up in the image), `view_width`
+// units across.
+SceneDesc top_down_scene(int width, int height, double view_width) {
+  SceneDesc s;
+  s.settings.width = width;
+  s.settings.height = height;
+  s.has_camera = true;
+  s.camera.projection = Projection::Orthographic;
+  s.camera.position = Vec3(0, 5, 0);
+  s.camera.look_at = Vec3(0, 0, 0);
+  s.camera.up = Vec3(0, 0, 1);
+  s.camera.view_width = view_width;
+  return s;
+}
+
+// Adds `t` to the scene and a material that shows it unlit (ambient 1, no other light).
+MaterialId unlit_texture_material(SceneDesc& s, const TextureDesc& t) {
+  s.textures.push_back(t);
+  MaterialDesc m = emissive(Color(0));
+  m.ambient = 1;
+  m.texture = static_cast<TextureId>(s.textures.size() - 1);
+  return add_material(s, m);
+}
+
 }  // namespace
 
 TEST_CASE("the image is identical whatever the thread count", "[render]") {
@@ -286,25 +310,13 @@ TEST_CASE("an unreadable texture image is a located render error", "[render]") {
 }
 
 TEST_CASE("textures color the surface: checker on a plane", "[render]") {
-  SceneDesc s;
-  s.settings.width = 32;
-  s.settings.height = 32;
-  s.has_camera = true;
-  s.camera.projection = Projection::Orthographic;
-  s.camera.position = Vec3(0, 5, 0);
-  s.camera.look_at = Vec3(0, 0, 0);
-  s.camera.up = Vec3(0, 0, 1);
-  s.camera.view_width = 4;
+  SceneDesc s = top_down_scene(32, 32, 4);
   TextureDesc t;
   t.kind = TextureKind::Checker;
   t.color1 = Color(1, 0, 0);
   t.color2 = Color(0, 0, 1);
   t.scale = 1.0;
-  s.textures.push_back(t);
-  MaterialDesc m = emissive(Color(0));
-  m.ambient = 1;
-  m.texture = 0;
-  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, m)));
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, unlit_texture_material(s, t)));
   RenderResult r = render(s, RenderOptions{});
   // Neighbouring cells (one unit = 8 pixels apart) have opposite colors.
   const float* a = r.color.at(4, 4);
@@ -344,24 +356,12 @@ TEST_CASE("procedural textures move with their object's transform", "[render]") 
   // A checkered plane seen from above; translating the plane by half a cell in x moves the
   // cell boundaries by half a cell in the image (the texture lives in object space).
   auto render_plane = [](double shift) {
-    SceneDesc s;
-    s.settings.width = 64;
-    s.settings.height = 8;
-    s.has_camera = true;
-    s.camera.projection = Projection::Orthographic;
-    s.camera.position = Vec3(0, 5, 0);
-    s.camera.look_at = Vec3(0, 0, 0);
-    s.camera.up = Vec3(0, 0, 1);
-    s.camera.view_width = 8;  // 8 pixels per unit
+    SceneDesc s = top_down_scene(64, 8, 8);  // 8 pixels per unit
     TextureDesc t;
     t.kind = TextureKind::Checker;
     t.color1 = Color(1, 1, 1);
     t.color2 = Color(0, 0, 0);
-    s.textures.push_back(t);
-    MaterialDesc m = emissive(Color(0));
-    m.ambient = 1;
-    m.texture = 0;
-    place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, m)), translate(Vec3(shift, 0, 0)));
+    place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, unlit_texture_material(s, t)), translate(Vec3(shift, 0, 0)));
     RenderResult r = render(s, RenderOptions{});
     std::vector<bool> row;
     for (int x = 0; x < 64; ++x) row.push_back(r.color.at(x, 4)[0] > 0.5f);
@@ -397,11 +397,7 @@ TEST_CASE("image textures use the mesh's UVs", "[render]") {
   TextureDesc t;
   t.kind = TextureKind::Image;
   t.image_path = png.string();
-  s.textures.push_back(t);
-  MaterialDesc m = emissive(Color(0));
-  m.ambient = 1;
-  m.texture = 0;
-  place(s, add_shape(s, MeshRef{0, true}, add_material(s, m)));
+  place(s, add_shape(s, MeshRef{0, true}, unlit_texture_material(s, t)));
   RenderResult r = render(s, RenderOptions{});
   fs::remove(png);
   // Sample well inside each quadrant (bilinear filtering blends near the centre lines).
