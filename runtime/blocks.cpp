@@ -49,7 +49,7 @@ void Interpreter::collect_properties(const ast::BlockBody& body, std::vector<Pro
   pop_scope();
 }
 
-Value Interpreter::eval_block(const ast::BlockExpr& e) {
+Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
   const std::string& kind = *e.kind_name;
   render::BlockCategory cat = render::SceneBuilder::category(kind);
   switch (cat) {
@@ -94,33 +94,63 @@ Value Interpreter::eval_block(const ast::BlockExpr& e) {
   std::vector<Property> props;
   props.reserve(e.body.items.size());
   collect_properties(e.body, props, false);
-  render::ParamSet ps = to_params(kind, e.loc, props);
-  Value v;
   switch (cat) {
-    case render::BlockCategory::Settings:
+    case render::BlockCategory::Settings: {
+      render::ParamSet ps = to_params(kind, e.loc, props);
       builder_.settings(ps);
-      return v;
-    case render::BlockCategory::Camera:
+      return Value::none();
+    }
+    case render::BlockCategory::Camera: {
+      render::ParamSet ps = to_params(kind, e.loc, props);
       builder_.camera(ps);
-      return v;
+      return Value::none();
+    }
     case render::BlockCategory::Shape:
-      v.type = Type::Object;
-      v.id = builder_.shape(kind, ps);
-      return v;
-    case render::BlockCategory::Light:
-      v.type = Type::Object;
-      v.id = builder_.light(kind, ps);
-      return v;
+    case render::BlockCategory::Light: {
+      if (!keep_block) return define_object(kind, e.loc, props);
+      auto obj = std::make_shared<ObjectValue>();
+      obj->kind = e.kind_name;
+      obj->loc = e.loc;
+      obj->props = std::move(props);
+      return define_object(std::move(obj));
+    }
     default:
       break;
   }
   fail(e.loc, "internal error: unhandled block category");
 }
 
+Value Interpreter::define_object(const std::string& kind, SourceLoc loc, const std::vector<Property>& props) {
+  render::ParamSet ps = to_params(kind, loc, props);
+  Value v;
+  v.type = Type::Object;
+  v.id = render::SceneBuilder::category(kind) == render::BlockCategory::Shape ? builder_.shape(kind, ps)
+                                                                              : builder_.light(kind, ps);
+  return v;
+}
+
+Value Interpreter::define_object(std::shared_ptr<ObjectValue> obj) {
+  Value v = define_object(*obj->kind, obj->loc, obj->props);
+  v.ref = std::move(obj);
+  return v;
+}
+
 Value Interpreter::eval_with(const ast::WithExpr& e) {
   Value base = eval(*e.base);
+  if (base.type == Type::Object) {
+    const ObjectValue* def = object_definition(base);
+    if (!def) fail(e.base->loc, "cannot derive a group with 'with'");
+    // A new definition: the base block's properties, overridden, under the base's transform.
+    auto obj = std::make_shared<ObjectValue>();
+    obj->transform = object_transform(base);
+    obj->kind = def->kind;
+    obj->props = def->props;
+    obj->loc = e.loc;
+    collect_properties(e.body, obj->props, false);
+    return define_object(std::move(obj));
+  }
   if (base.type != Type::Material && base.type != Type::Texture)
-    fail(e.base->loc, fmt::format("'with' derives from a material or a texture, got {}", with_article(base.type)));
+    fail(e.base->loc, fmt::format("'with' derives from a material, a texture, a shape or a light, got {}", with_article(base.type)));
   auto rec = std::make_shared<RecordValue>(as_record(base));
   rec->built_id = render::kNoId;
   rec->loc = e.loc;
@@ -193,7 +223,17 @@ Value Interpreter::eval_transform(const ast::TransformExpr& e) {
   switch (obj.type) {
     case Type::Object: {
       Value r = obj;
-      r.ref = std::make_shared<TransformValue>(t * object_transform(obj));
+      auto moved = std::make_shared<ObjectValue>();
+      moved->transform = t * object_transform(obj);
+      if (obj.ref) {
+        const auto& from = static_cast<const ObjectValue&>(*obj.ref);
+        // Share the defining block, never copy it: chains stay one link long.
+        if (from.defined_by)
+          moved->defined_by = from.defined_by;
+        else if (from.kind)
+          moved->defined_by = std::static_pointer_cast<const ObjectValue>(obj.ref);
+      }
+      r.ref = std::move(moved);
       return r;
     }
     case Type::Transform: {

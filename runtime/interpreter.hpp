@@ -15,6 +15,7 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -119,8 +120,14 @@ class Interpreter {
   void check_nesting(const Value& v, SourceLoc loc) const;
 
   // blocks, `with`, transforms, placement (blocks.cpp)
-  Value eval_block(const ast::BlockExpr& e);
+  // keep_block: shapes and lights keep their properties in the value (for `with`); false
+  // for a block statement, whose value is placed and dropped.
+  Value eval_block(const ast::BlockExpr& e, bool keep_block = true);
   Value eval_with(const ast::WithExpr& e);
+  // Builds a shape or light definition from its block (kind, props, loc); the object value
+  // returned keeps the block, for `with`.
+  Value define_object(std::shared_ptr<ObjectValue> obj);
+  Value define_object(const std::string& kind, SourceLoc loc, const std::vector<Property>& props);
   Value eval_transform(const ast::TransformExpr& e);
   void collect_properties(const ast::BlockBody& body, std::vector<Property>& props, bool allow_placement);
   render::ParamSet to_params(const std::string& kind, SourceLoc loc, const std::vector<Property>& props);
@@ -165,6 +172,7 @@ class Interpreter {
   std::deque<ast::Program> programs_;
   std::map<std::string, const ast::Program*> parsed_;  // canonical path → program
   std::vector<std::string> include_chain_;             // canonical paths being run
+  std::set<std::string> included_;                     // canonical paths run to the end (include once)
   std::unordered_map<const char*, const SourceFile*> files_by_name_;
 
   // -D defines: parsed expressions, and whether each matched a top-level let.

@@ -99,7 +99,7 @@ double RandomValue::next_unit() {
 }
 
 render::Mat4 object_transform(const Value& v) {
-  return v.ref ? static_cast<const TransformValue&>(*v.ref).matrix : render::Mat4(1.0);
+  return v.ref ? static_cast<const ObjectValue&>(*v.ref).transform : render::Mat4(1.0);
 }
 
 namespace {

@@ -47,7 +47,7 @@ struct Value {
   bool inclusive = false;          // Range: end included (..=)
   uint32_t id = 0;                 // Object: NodeId; Builtin: index into the builtin table
   glm::dvec3 v{0.0};               // Number/Bool: v.x; Vector/Color: x,y,z; Range: from, to, step
-  std::shared_ptr<HeapValue> ref;  // String, List, Material, Texture, Macro, Random; Object: transform or null
+  std::shared_ptr<HeapValue> ref;  // String, List, Material, Texture, Macro, Random; Object: ObjectValue or null
 
   static Value none() { return {}; }
   static Value number(double x) {
@@ -116,6 +116,19 @@ struct RecordValue : HeapValue {
   void update_depth();
 };
 
+// An object's heap part: its transform and, for shapes and lights, the block that defined it
+// (kind, properties, location), so that `with` can derive a new definition. The object made
+// by a block or by `with` holds its block itself; a transformed copy (`s translate t`) points
+// to that object instead of copying the properties. Groups have no block (kind is null).
+struct ObjectValue : HeapValue {
+  render::Mat4 transform{1.0};
+  ast::Symbol kind = nullptr;  // "sphere", "point_light", ...; null for a group
+  std::vector<Property> props;
+  SourceLoc loc;
+  std::shared_ptr<const ObjectValue> defined_by;  // a transformed copy: the object holding the block
+  const ObjectValue& definition() const { return defined_by ? *defined_by : *this; }
+};
+
 struct TransformValue : HeapValue {
   render::Mat4 matrix;
   explicit TransformValue(const render::Mat4& m) : matrix(m) {}
@@ -144,6 +157,13 @@ inline const ast::MacroStmt* as_macro(const Value& v) { return static_cast<const
 uint32_t nesting_depth(const Value& v);
 // An object's transform (identity when it has none).
 render::Mat4 object_transform(const Value& v);
+// The object value holding the shape or light block an object was defined by (null for a
+// group).
+inline const ObjectValue* object_definition(const Value& v) {
+  if (!v.ref) return nullptr;
+  const ObjectValue& d = static_cast<const ObjectValue&>(*v.ref).definition();
+  return d.kind ? &d : nullptr;
+}
 // A transform value's matrix.
 inline const render::Mat4& as_transform(const Value& v) { return static_cast<const TransformValue&>(*v.ref).matrix; }
 

@@ -265,6 +265,68 @@ TEST_CASE("includes resolve relative to the including file, then -I paths", "[ev
   fs::remove_all(dir);
 }
 
+TEST_CASE("a file already fully included is not run again; one being included is a cycle", "[eval][include]") {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / ("rts_include_once_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "lib");
+  // materials.rts declares a name and places a sphere: included from a.rts, b.rts and main
+  // (by another spelling of its path), it runs once, so no "already defined" and one sphere.
+  std::ofstream(dir / "lib" / "materials.rts") << "let ivory = material { diffuse = 0.7 }\nsphere { radius = 5 }\n";
+  std::ofstream(dir / "a.rts") << "include \"lib/materials.rts\"\nsphere { radius = 1  material = ivory }\n";
+  std::ofstream(dir / "b.rts") << "include \"lib/materials.rts\"\nsphere { radius = 2  material = ivory }\n";
+  std::ofstream(dir / "main.rts") << "include \"a.rts\"\ninclude \"b.rts\"\ninclude \"lib/../lib/materials.rts\"\n";
+  std::ofstream(dir / "cycle.rts") << "include \"cycle.rts\"\n";
+  SourceManager sm;
+  std::ostringstream w;
+  DiagnosticSink sink(w);
+  SceneDesc s = evaluate_file(sm, (dir / "main.rts").string(), {}, sink).scene;
+  REQUIRE(s.shapes.size() == 3);
+  CHECK(std::get<Sphere>(s.shapes[0].geometry).radius == 5);  // materials.rts, once
+  CHECK(std::get<Sphere>(s.shapes[1].geometry).radius == 1);
+  CHECK(std::get<Sphere>(s.shapes[2].geometry).radius == 2);
+  CHECK(s.roots.size() == 3);
+  CHECK(s.materials.size() == 1);
+  // A file that includes itself is still a cycle (it is on the include stack, not finished).
+  try {
+    evaluate_file(sm, (dir / "cycle.rts").string(), {}, sink);
+    FAIL("expected an include cycle");
+  } catch (const LanguageError& e) {
+    CHECK(e.diag.message == "include cycle: 'cycle.rts' is already being included");
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("with derives a new shape or light definition from an object", "[eval][instancing]") {
+  SceneDesc s = eval_text(
+      "let m = material { diffuse = 0.5 }\n"
+      "let s = sphere { radius = 1  material = m }\n"
+      "let big = s with { radius = 2 }\n"
+      "for i in 0 .. 3 { s translate <i, 0, 0> }\n"
+      "for i in 0 .. 4 { big translate <i, 5, 0> }\n"
+      "(s translate <0, 0, 9>) with { center = <1, 0, 0> }\n"
+      "let lamp = point_light { position = <0, 5, 0>  intensity = 0.5 }\n"
+      "lamp\n"
+      "lamp with { position = <1, 2, 3> }\n");
+  // Two placed sphere definitions plus the transformed-and-derived one; the base unchanged.
+  REQUIRE(s.shapes.size() == 3);
+  CHECK(std::get<Sphere>(s.shapes[0].geometry).radius == 1);
+  CHECK(std::get<Sphere>(s.shapes[1].geometry).radius == 2);
+  CHECK(std::get<Sphere>(s.shapes[2].geometry).radius == 1);                    // inherited
+  CHECK(std::get<Sphere>(s.shapes[2].geometry).center == glm::dvec3(1, 0, 0));  // overridden
+  CHECK(s.shapes[1].material == s.shapes[0].material);                         // one material
+  CHECK(s.materials.size() == 1);
+  REQUIRE(s.roots.size() == 3 + 4 + 1 + 2);
+  for (std::size_t i = 0; i < 3; ++i) CHECK(s.roots[i].node == s.roots[0].node);
+  for (std::size_t i = 3; i < 7; ++i) CHECK(s.roots[i].node == s.roots[3].node);
+  CHECK(s.roots[3].node != s.roots[0].node);
+  CHECK(s.roots[7].transform[3].z == 9);  // the derived object keeps its base's transform
+  REQUIRE(s.lights.size() == 2);
+  CHECK(s.lights[0].intensity == 0.5);
+  CHECK(s.lights[1].intensity == 0.5);  // inherited
+  CHECK(s.nodes[s.roots[9].node].kind == NodeKind::Light);
+  CHECK(s.roots[9].node != s.roots[8].node);
+}
+
 TEST_CASE("check's summary counts placed instances through groups and bounds them in world space", "[eval][summary]") {
   SceneDesc s = eval_text(
       "let ball = sphere { radius = 1 }\n"

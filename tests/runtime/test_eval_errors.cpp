@@ -61,6 +61,12 @@ TEST_CASE("a catalogue of runtime errors", "[errors]") {
   CHECK(eval_diagnostic("return 1").message == "'return' outside a macro");
   CHECK(eval_diagnostic("let v = <1, 2>").message == "vectors have 3 components, this one has 2");
   CHECK(eval_diagnostic("for i in 0 .. 1 step 0 { }").message == "a range step must not be zero");
+  CHECK(eval_diagnostic("let g = group { }\nlet h = g with { }").message == "cannot derive a group with 'with'");
+  CHECK(eval_diagnostic("let g = group { } translate <1, 0, 0>\nlet h = g with { }").message ==
+        "cannot derive a group with 'with'");
+  CHECK(eval_diagnostic("let n = 1 with { }").message == "'with' derives from a material, a texture, a shape or a light, got a number");
+  CHECK(eval_diagnostic("let s = sphere { radius = 1 }\nlet t = s with { radius = -1 }").message ==
+        "property 'radius' of sphere must be > 0, got -1");
   CHECK(eval_diagnostic("sphere { radius = 1  sphere { radius = 2 } }").message.find("objects can only be placed") ==
         0);
 }
