@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <csetjmp>
@@ -70,11 +71,14 @@ class Srgb8Encoder {
     for (int k = 0; k < kCodes8 - 1; ++k) starts_[k] = decode_srgb((k + 0.5) / (kCodes8 - 1));
   }
   unsigned encode(double linear) const {
-    return static_cast<unsigned>(std::upper_bound(starts_, starts_ + kCodes8 - 1, linear) - starts_);
+    // Iterators, not `starts_ + kCodes8 - 1`: that parses as (starts_ + 256) - 1 and forms a
+    // pointer two past the end of the array first, which is undefined (clang's UBSan says so).
+    return static_cast<unsigned>(std::upper_bound(starts_.begin(), starts_.end(), linear) -
+                                 starts_.begin());
   }
 
  private:
-  double starts_[kCodes8 - 1];
+  std::array<double, kCodes8 - 1> starts_{};
 };
 
 // Packs the image into PNG rows (big-endian samples for 16-bit), top row first.
