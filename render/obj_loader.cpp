@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <tiny_obj_loader.h>
 
+#include "render/memory.hpp"
 #include "render/source_ref.hpp"
 
 namespace rts::render {
@@ -253,6 +254,13 @@ class ObjReader {
         }
       }
     }
+    // The file's own arrays go before the index array is trimmed (trimming copies it): the
+    // peak memory of a large mesh is reached here.
+    std::vector<float>().swap(positions_);
+    std::vector<float>().swap(normals_);
+    std::vector<float>().swap(uvs_);
+    std::vector<Corner>().swap(unified_);
+    others_ = {};
     indices_.shrink_to_fit();
     mesh.indices = std::move(indices_);
   }
@@ -352,6 +360,7 @@ std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& s
   if (!done) load_with_tinyobj(path, shown, where, *mesh);
   if (mesh->indices.empty()) throw SceneError(where, fmt::format("mesh file '{}' has no faces", shown));
   if (mesh->normals.empty() && smooth) compute_smooth_normals(*mesh);
+  release_free_memory(mesh->indices.size() / 3);
   return mesh;
 }
 
