@@ -40,6 +40,13 @@ inline constexpr int kBvhTraversalStack = 128;  // > the deepest possible tree
 
 BVH build_bvh(const std::vector<AABB>& primitive_bounds);
 
+// Bounds given in float (mesh triangles: their vertices are floats): the same tree as the
+// double overload builds for the same boxes, without a 48-byte double box per primitive.
+struct FloatBox {
+  float lo[3], hi[3];
+};
+BVH build_bvh(const std::vector<FloatBox>& primitive_bounds);
+
 // Visits the leaves a ray may hit, nearest child first (both children's boxes are tested at
 // their parent; the farther one waits on the stack with its entry distance and is skipped if
 // a closer hit has been found meanwhile). `leaf(slot, ray_t)` tests the primitive at position

@@ -5,28 +5,34 @@
 namespace rts::render {
 
 MeshAccel::MeshAccel(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mesh)) {
-  // Triangles whose indices point outside the vertex arrays are dropped (never hit).
+  // Triangles whose indices point outside the vertex arrays, or with non-finite vertices, are
+  // left out of the BVH (never hit). Boxes are kept in float (exact: the vertices are floats)
+  // and only for the valid triangles: two double box arrays were 96 bytes per triangle of the
+  // peak memory at 2M triangles.
   std::size_t n = mesh_->indices.size() / 3;
-  std::vector<AABB> boxes(n);
+  std::vector<FloatBox> valid_boxes;
+  std::vector<uint32_t> valid;  // BVH primitive → triangle index
+  valid_boxes.reserve(n);
+  valid.reserve(n);
+  const std::size_t vertex_count = mesh_->positions.size();
   for (std::size_t i = 0; i < n; ++i) {
     const uint32_t* idx = &mesh_->indices[i * 3];
-    bool ok = idx[0] < mesh_->positions.size() && idx[1] < mesh_->positions.size() &&
-              idx[2] < mesh_->positions.size();
-    if (!ok) continue;  // an invalid (empty) box: its triangle is skipped below
-    for (int k = 0; k < 3; ++k) boxes[i].extend(Vec3(mesh_->positions[idx[k]]));
-  }
-  // Keep only valid triangles in the BVH; `valid` maps BVH primitive → triangle index.
-  std::vector<AABB> valid_boxes;
-  std::vector<uint32_t> valid;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (boxes[i].valid() && boxes[i].finite()) {
-      valid_boxes.push_back(boxes[i]);
-      valid.push_back(static_cast<uint32_t>(i));
-      bounds_.extend(boxes[i]);
+    if (idx[0] >= vertex_count || idx[1] >= vertex_count || idx[2] >= vertex_count) continue;
+    AABB box;
+    for (int k = 0; k < 3; ++k) box.extend(Vec3(mesh_->positions[idx[k]]));
+    if (!box.valid() || !box.finite()) continue;
+    FloatBox fb;
+    for (int a = 0; a < 3; ++a) {
+      fb.lo[a] = static_cast<float>(box.lo[a]);
+      fb.hi[a] = static_cast<float>(box.hi[a]);
     }
+    valid_boxes.push_back(fb);
+    valid.push_back(static_cast<uint32_t>(i));
+    bounds_.extend(box);
   }
   triangle_count_ = valid.size();
   bvh_ = build_bvh(valid_boxes);
+  std::vector<FloatBox>().swap(valid_boxes);  // freed before the leaf vertices are allocated
   leaf_vertices_.reserve(bvh_.order.size() * 3);
   for (uint32_t& o : bvh_.order) {
     o = valid[o];  // leaves index triangles directly

@@ -1,0 +1,10 @@
+// Race scene "mesh2m" (bench/race.sh), for memory and BVH build rate: the same picture as
+// mesh2m.rts; the mesh2 include (mesh2m.inc) is written by
+// bench/race/gen_terrain.py. max_trace_level 1: camera and shadow rays only.
+#version 3.7;
+#include "mesh2m.inc"
+global_settings { assumed_gamma 1.0 max_trace_level 1 ambient_light rgb 1 adc_bailout 0.0001 }
+background { rgb <0.5, 0.6, 0.8> }
+camera { perspective location <0, 6, -14> look_at <0, 0, 0> right x*image_width/image_height angle 60 }
+light_source { <-10, 20, -10> rgb 1 }
+object { Terrain pigment { rgb <0.45, 0.6, 0.3> } finish { ambient 0.1 diffuse 0.9 } }
