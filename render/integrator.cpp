@@ -13,6 +13,11 @@ namespace {
 Rgb to_rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
 double max_channel(const Rgb& c) { return std::max({c.x, c.y, c.z}); }
 bool is_black(const Rgb& c) { return !(max_channel(c) > 0.0); }
+// Clamps overflowing radiance to a large finite value (NaN passes through, to be counted).
+Rgb saturate(const Rgb& c) {
+  auto sat = [](double v) { return v > tol::kMaxRadiance ? tol::kMaxRadiance : v; };
+  return Rgb(sat(c.x), sat(c.y), sat(c.z));
+}
 
 // Uniform point in the unit ball from three uniforms (for glossy perturbation).
 Vec3 in_unit_ball(Sampler& s) {
@@ -67,7 +72,21 @@ Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
 Rgb Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
   ++counters.camera;
   Path path{sampler, counters};
-  return radiance(ray, 0, Rgb(1.0), path);
+  // The Whitted tree (a reflected and a refracted ray per transmissive hit) is walked with an
+  // explicit stack, not recursion, so max_depth is limited by time (tol::kMaxDepth), never by
+  // the worker threads' stacks. Popping the reflected ray before the refracted one visits the
+  // nodes in the recursive order, so the sampler hands out the same numbers. The stack is
+  // per thread and reused: no allocation per ray once it has grown.
+  thread_local std::vector<PendingRay> pending;
+  pending.clear();
+  pending.push_back(PendingRay{ray, Rgb(1.0), 0, MediumStack{}});
+  Rgb color(0.0);
+  while (!pending.empty()) {
+    PendingRay pr = pending.back();
+    pending.pop_back();
+    color += pr.weight * shade(pr, path, pending);
+  }
+  return color;
 }
 
 FirstHit Integrator::first_hit(const Ray& ray) const {
@@ -87,21 +106,22 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   Ray ray{origin, ls.direction};
   double end = std::isinf(ls.distance) ? Interval::kInfinity
                                         : ls.distance * (1.0 - tol::kShadowEndRelative);
-  Interval range(0.0, end);
   // Any opaque occluder blocks the light whatever else lies on the segment: test those first
   // with an early-exit traversal.
-  if (world_.occluded(ray, range, /*opaque_only=*/true)) return Rgb(0.0);
+  if (world_.occluded(ray, Interval(0.0, end), /*opaque_only=*/true)) return Rgb(0.0);
   if (!world_.has_transmissive()) return Rgb(1.0);
-  // Only transmissive surfaces remain: multiply through each one up to the light.
+  // Only transmissive surfaces remain: multiply through each one up to the light, restarting
+  // just beyond each surface (offset by its own error bound, like any spawned ray).
   Rgb t(1.0);
   for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
     WorldHit hit;
-    if (!world_.intersect(ray, range, hit, /*transmissive_only=*/true)) return t;
+    if (!world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true)) return t;
     Rgb kt = to_rgb(material(hit.instance).transmit);
     t *= glm::clamp(kt, 0.0, 1.0);
     if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
-    range.min = hit.t + tol::kRayOffsetAbsolute +
-                tol::kRayOffsetRelative * std::max(max_abs_component(hit.point), hit.t);
+    Vec3 next = offset_ray_origin(hit.point, hit.normal, ls.direction, hit.error);
+    end -= glm::dot(next - ray.origin, ls.direction);
+    ray.origin = next;
   }
   return Rgb(0.0);
 }
@@ -144,13 +164,27 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
   return sum;
 }
 
-Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& path) const {
+Integrator::Interface Integrator::interface(const MediumStack& media, uint32_t instance,
+                                             const MaterialDesc& m, bool entering) {
+  // `ior` is absolute (the medium inside the object) unless `ior_relative` says it is the
+  // ratio to the medium around the object (the pre-medium-stack idiom `ior = 1/1.5`).
+  Interface f;
+  if (entering) {
+    f.n_from = media.current();
+    f.n_to = m.ior_relative ? f.n_from * m.ior : m.ior;
+  } else {
+    f.n_to = media.outside(instance);
+    if (!media.find(instance, f.n_from)) f.n_from = m.ior_relative ? f.n_to * m.ior : m.ior;
+  }
+  return f;
+}
+
+Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const {
+  const Ray& ray = pr.ray;
   WorldHit hit;
   if (!world_.intersect(ray, Interval::positive(), hit)) return background_;
   const MaterialDesc& m = material(hit.instance);
-  double dir_len = glm::length(ray.direction);
-  Vec3 incident = ray.direction / dir_len;
-  double travelled = hit.t * dir_len;
+  Vec3 incident = glm::normalize(ray.direction);
 
   // The geometric normal decides the side: face it towards the incoming ray (leaving a solid
   // = hitting its back side). The shading normal is then put into the same hemisphere as the
@@ -163,32 +197,38 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
   Vec3 view = -incident;
   Rgb base = albedo(m, hit);
   Rgb color = to_rgb(m.emission) + m.ambient * base * ambient_light_;
-  Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, travelled);
+  Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, hit.error);
   color += direct_light(hit, m, base, n, front_origin, view, path);
+  color = saturate(color);
 
-  if (depth >= max_depth_) return color;
+  if (pr.depth >= max_depth_) return color;
 
   Rgb kr = to_rgb(m.reflect), kt = to_rgb(m.transmit);
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Vec3 refracted(0.0);
+  MediumStack refracted_media = pr.media;
   if (!is_black(kt)) {
-    double eta = entering ? 1.0 / m.ior : m.ior;
+    Interface f = interface(pr.media, hit.instance, m, entering);
+    if (entering)
+      refracted_media.enter(hit.instance, f.n_to);
+    else
+      refracted_media.leave(hit.instance);
     // With fresnel, the interface splits one budget, max(reflect, transmit) per channel,
     // between the two directions: a fraction F reflects, 1 - F (filtered by `transmit`)
     // passes, so kr + kt never exceeds the larger weight (1 for clear glass, whatever
     // `reflect` adds). Without fresnel the two weights simply add, as documented.
-    if (!refract(incident, n, eta, refracted)) {
+    if (!refract(incident, n, f.n_from / f.n_to, refracted)) {
       // Total internal reflection: the transmitted energy is reflected (F = 1).
       kr = m.fresnel ? glm::max(kr, kt) : kr + kt;
       kt = Rgb(0.0);
     } else if (m.fresnel) {
-      double f0 = (m.ior - 1.0) / (m.ior + 1.0);
+      double f0 = (f.n_from - f.n_to) / (f.n_from + f.n_to);
       f0 *= f0;
       // Schlick uses the angle on the less dense side.
-      double cos_outside = entering ? cos_i : -glm::dot(refracted, n);
-      double f = schlick(std::abs(cos_outside), f0);
-      kr = glm::max(kr, kt) * f;
-      kt *= (1.0 - f);
+      double cos_thin = f.n_from <= f.n_to ? cos_i : -glm::dot(refracted, n);
+      double fr = schlick(std::abs(cos_thin), f0);
+      kr = glm::max(kr, kt) * fr;
+      kt *= (1.0 - fr);
     }
   } else if (m.fresnel && !is_black(kr)) {
     // Opaque: `reflect` is the reflectance at normal incidence, rising to 1 at grazing angles.
@@ -196,7 +236,14 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
     kr = kr + (Rgb(1.0) - kr) * f;
   }
 
-  if (max_channel(kr * weight) > tol::kMinPathWeight) {
+  // Pushed refracted first so the reflected subtree is walked first (see trace()). Weights
+  // saturate so colors above 1 reflected thousands of times stay finite.
+  if (max_channel(kt * pr.weight) > tol::kMinPathWeight) {
+    ++path.counters.refraction;
+    Ray r{offset_ray_origin(hit.point, ng, refracted, hit.error), refracted};
+    pending.push_back(PendingRay{r, saturate(pr.weight * kt), pr.depth + 1, refracted_media});
+  }
+  if (max_channel(kr * pr.weight) > tol::kMinPathWeight) {
     Vec3 mirror = incident + 2.0 * cos_i * n;
     Vec3 dir = mirror;
     if (m.roughness > 0.0) {
@@ -205,13 +252,8 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
       if (glm::dot(glossy, ng) > 0.0 && glm::length(glossy) > tol::kTinyLength) dir = glm::normalize(glossy);
     }
     ++path.counters.reflection;
-    Ray r{offset_ray_origin(hit.point, ng, dir, travelled), dir};
-    color += kr * radiance(r, depth + 1, weight * kr, path);
-  }
-  if (max_channel(kt * weight) > tol::kMinPathWeight) {
-    ++path.counters.refraction;
-    Ray r{offset_ray_origin(hit.point, ng, refracted, travelled), refracted};
-    color += kt * radiance(r, depth + 1, weight * kt, path);
+    Ray r{offset_ray_origin(hit.point, ng, dir, hit.error), dir};
+    pending.push_back(PendingRay{r, saturate(pr.weight * kr), pr.depth + 1, pr.media});
   }
   return color;
 }

@@ -1,10 +1,12 @@
 // Whitted ray tracing: Phong direct lighting with (transmission-filtered) shadow rays, then
-// recursive mirror/glossy reflection and Snell refraction up to max_depth.
+// mirror/glossy reflection and Snell refraction (through nested media) up to max_depth,
+// walked with an explicit stack of pending rays.
 #pragma once
 
 #include <vector>
 
 #include "render/lights.hpp"
+#include "render/medium_stack.hpp"
 #include "render/sampler.hpp"
 #include "render/stats.hpp"
 #include "render/texture.hpp"
@@ -37,7 +39,23 @@ class Integrator {
     Sampler& sampler;
     RayCounters& counters;
   };
-  Rgb radiance(const Ray& ray, int depth, const Rgb& weight, Path& path) const;
+  // A ray still to trace, with the product of the reflect/transmit weights that lead to it
+  // and the media it is inside.
+  struct PendingRay {
+    Ray ray;
+    Rgb weight;
+    int depth;
+    MediumStack media;
+  };
+  // The indices on the two sides of a transmissive surface, from the side the ray comes from.
+  struct Interface {
+    double n_from = 1.0, n_to = 1.0;
+  };
+  static Interface interface(const MediumStack& media, uint32_t instance, const MaterialDesc& m,
+                             bool entering);
+  // The light a pending ray's hit sends back along it (emission, ambient, direct light); its
+  // reflected and refracted rays go onto `pending`.
+  Rgb shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const;
   Rgb direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo, const Vec3& n,
                    const Vec3& shadow_origin, const Vec3& view, Path& path) const;
   Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const;

@@ -20,7 +20,9 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
   for (const LightDesc& d : world_lights) {
     CompiledLight l;
     l.kind = d.kind;
-    l.power = Rgb(d.color.r, d.color.g, d.color.b) * d.intensity;
+    // color * intensity may overflow (1e200 * 1e200): saturate, so the light stays the
+    // brightest finite light instead of infinity (and 0 * inf = NaN further on).
+    l.power = glm::min(Rgb(d.color.r, d.color.g, d.color.b) * d.intensity, Rgb(tol::kMaxRadiance));
     l.position = d.position;
     double dl = glm::length(d.direction);
     l.direction = dl > tol::kTinyLength ? d.direction / dl : Vec3(0, -1, 0);
@@ -59,9 +61,11 @@ double spot_factor(const CompiledLight& l, const Vec3& light_to_point) {
 }
 
 // Radiance arriving from one light sample at `distance`.
+// Saturated: a tiny attenuation (1e-10) near the light multiplies the power by up to 1e300.
 Rgb sample_radiance(const CompiledLight& l, double distance) {
-  return l.constant_attenuation ? l.sample_power
-                                : l.sample_power * attenuation_factor(l.attenuation, distance);
+  return l.constant_attenuation
+             ? l.sample_power
+             : glm::min(l.sample_power * attenuation_factor(l.attenuation, distance), Rgb(tol::kMaxRadiance));
 }
 
 LightSample toward(const Vec3& light_pos, const Vec3& point) {

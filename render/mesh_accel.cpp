@@ -28,7 +28,7 @@ MeshAccel::MeshAccel(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mes
     }
     valid_boxes.push_back(fb);
     valid.push_back(static_cast<uint32_t>(i));
-    bounds_.extend(box);
+    bounds_.extend(AABB{box.lo + mesh_->origin, box.hi + mesh_->origin});
   }
   triangle_count_ = valid.size();
   bvh_ = build_bvh(valid_boxes);
@@ -48,13 +48,19 @@ void MeshAccel::triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const {
   v2 = Vec3(mesh_->positions[idx[2]]);
 }
 
-bool MeshAccel::intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const {
+Ray MeshAccel::local_ray(const Ray& ray) const {
+  return Ray{ray.origin - mesh_->origin, ray.direction};
+}
+
+bool MeshAccel::intersect(const Ray& object_ray, Interval ray_t, SurfaceHit& hit, bool smooth) const {
   uint32_t best_slot = 0;
   double best_b1 = 0, best_b2 = 0;
+  const Ray ray = local_ray(object_ray);
+  const TriangleRay tri_ray(ray);
   bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
     const glm::vec3* v = &leaf_vertices_[static_cast<std::size_t>(slot) * 3];
     double t, b1, b2;
-    if (!intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), ray, t_range, t, b1, b2)) return false;
+    if (!intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), tri_ray, t_range, t, b1, b2)) return false;
     t_range.max = t;
     best_slot = slot;
     best_b1 = b1;
@@ -68,7 +74,9 @@ bool MeshAccel::intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool 
   const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(best_tri) * 3];
   double b0 = 1.0 - best_b1 - best_b2;
   hit.t = ray_t.max;
-  hit.point = ray.at(hit.t);
+  double local_error = 0.0;
+  hit.point = triangle_point(v0, v1, v2, best_b1, best_b2, local_error) + mesh_->origin;
+  hit.error = local_error + error_gamma(1) * (max_abs_component(hit.point) + max_abs_component(mesh_->origin));
   hit.normal = glm::normalize(glm::cross(v1 - v0, v2 - v0));
   hit.shading_normal = hit.normal;
   const auto& normals = mesh_->normals;
@@ -97,11 +105,13 @@ bool MeshAccel::intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool 
   return true;
 }
 
-bool MeshAccel::occluded(const Ray& ray, Interval ray_t) const {
+bool MeshAccel::occluded(const Ray& object_ray, Interval ray_t) const {
+  const Ray ray = local_ray(object_ray);
+  const TriangleRay tri_ray(ray);
   return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
     const glm::vec3* v = &leaf_vertices_[static_cast<std::size_t>(slot) * 3];
     double t, b1, b2;
-    return intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), ray, t_range, t, b1, b2);
+    return intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), tri_ray, t_range, t, b1, b2);
   });
 }
 

@@ -1,5 +1,6 @@
 // A triangle mesh ready for tracing: its own BVH (the bottom level of the two-level BVH),
-// built once per MeshData and shared by every instance of that mesh.
+// built once per MeshData and shared by every instance of that mesh. It works in the mesh's
+// own coordinates (relative to MeshData::origin) and reports hits in object space.
 #pragma once
 
 #include <memory>
@@ -15,13 +16,15 @@ class MeshAccel {
  public:
   explicit MeshAccel(std::shared_ptr<const MeshData> mesh);
 
-  AABB bounds() const { return bounds_; }
+  AABB bounds() const { return bounds_; }  // object space (origin included)
   std::size_t triangle_count() const { return triangle_count_; }
   // Closest hit in object space; `smooth` interpolates the mesh's vertex normals if it has them.
   bool intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const;
   bool occluded(const Ray& ray, Interval ray_t) const;
 
  private:
+  // The object-space ray in the mesh's own coordinates (relative to MeshData::origin).
+  Ray local_ray(const Ray& object_ray) const;
   void triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const;  // by triangle index
 
   std::shared_ptr<const MeshData> mesh_;

@@ -70,7 +70,8 @@ struct MaterialDesc {
   double shininess = 32.0;
   Color reflect{0.0};          // mirror reflection weight per channel
   Color transmit{0.0};         // transmission weight per channel (also filters shadows)
-  double ior = 1.0;
+  double ior = 1.0;            // absolute index of the inside (the medium stack pairs media)
+  bool ior_relative = false;   // `ior` is the ratio to the surrounding medium instead
   bool fresnel = false;        // Schlick's approximation scales reflect/transmit
   double roughness = 0.0;      // > 0: glossy (blurred) reflection, sampled
   SourceRef loc;
@@ -78,7 +79,10 @@ struct MaterialDesc {
 
 // ---- meshes -----------------------------------------------------------------------------
 struct MeshData {
+  // Relative to `origin` (the centre of the mesh's bounds): float storage then keeps 24 bits
+  // of the mesh's own size wherever it sits, instead of losing a whole unit at 1e7.
   std::vector<glm::vec3> positions;
+  Vec3 origin{0.0};
   std::vector<glm::vec3> normals;     // empty, or one per position (smooth shading)
   std::vector<glm::vec2> uvs;         // empty, or one per position
   std::vector<uint32_t> indices;      // 3 per triangle, into the arrays above

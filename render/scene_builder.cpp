@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "render/aabb.hpp"
 #include "render/obj_loader.hpp"
 
 namespace rts::render {
@@ -54,7 +55,8 @@ const std::vector<std::string_view> kCheckerNames = {"color1", "color2", "scale"
 const std::vector<std::string_view> kPatternTextureNames = {"color1", "color2", "scale", "axis"};
 const std::vector<std::string_view> kMaterialNames = {"color",    "texture",  "emission",  "ambient",
                                                       "diffuse",  "specular", "shininess", "reflect",
-                                                      "transmit", "ior",      "fresnel",   "roughness"};
+                                                      "transmit", "ior",      "fresnel",   "roughness",
+                                                      "ior_relative"};
 const std::vector<std::string_view> kSphereNames = {"material", "center", "radius"};
 const std::vector<std::string_view> kPlaneNames = {"material", "normal", "offset"};
 const std::vector<std::string_view> kTriangleNames = {"material", "v0", "v1", "v2", "n0", "n1", "n2"};
@@ -275,6 +277,7 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
   m.transmit = ps.color("transmit", m.transmit);
   non_negative_color(ps, "transmit", m.transmit);
   m.ior = positive(ps, "ior", ps.number("ior", m.ior));
+  m.ior_relative = ps.boolean("ior_relative", m.ior_relative);
   m.fresnel = ps.boolean("fresnel", m.fresnel);
   m.roughness = non_negative(ps, "roughness", ps.number("roughness", m.roughness));
   ps.check_unused(kMaterialNames);
@@ -398,7 +401,11 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
         throw SceneError(loc_of(ps, "normals"),
                          fmt::format("mesh has {} vertices but {} normals", vertices.size(), normals.size()));
       mesh = std::make_shared<MeshData>();
-      for (const Vec3& v : vertices) mesh->positions.emplace_back(v);
+      // Stored as float relative to the centre of the vertices' bounds (MeshData::origin).
+      AABB box;
+      for (const Vec3& v : vertices) box.extend(v);
+      if (box.valid() && box.finite()) mesh->origin = box.centroid();
+      for (const Vec3& v : vertices) mesh->positions.emplace_back(v - mesh->origin);
       for (const Vec3& n : normals) mesh->normals.emplace_back(glm::normalize(n));
       for (const Vec3& f : faces)
         for (int k = 0; k < 3; ++k) mesh->indices.push_back(mesh_index(ps, f[k], vertices.size()));

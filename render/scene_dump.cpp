@@ -129,9 +129,10 @@ void SceneDesc::dump(std::ostream& out) const {
     const MaterialDesc& m = materials[i];
     out << fmt::format(
         "  material {}: color {} texture {} emission {} ambient {} diffuse {} specular {} shininess {} reflect {} "
-        "transmit {} ior {} fresnel {} roughness {}{}\n",
+        "transmit {} ior {}{} fresnel {} roughness {}{}\n",
         i, col(m.color), id(m.texture), col(m.emission), num(m.ambient), num(m.diffuse), num(m.specular),
-        num(m.shininess), col(m.reflect), col(m.transmit), num(m.ior), yes(m.fresnel), num(m.roughness), where(m.loc));
+        num(m.shininess), col(m.reflect), col(m.transmit), num(m.ior), m.ior_relative ? " (relative)" : "",
+        yes(m.fresnel), num(m.roughness), where(m.loc));
   }
   out << fmt::format("meshes {}\n", meshes.size());
   for (std::size_t i = 0; i < meshes.size(); ++i) {

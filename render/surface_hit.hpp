@@ -14,6 +14,7 @@ struct SurfaceHit {
   Vec3 shading_normal{0, 1, 0};  // interpolated normal (== normal unless smooth)
   glm::dvec2 uv{0.0};
   bool has_uv = false;
+  double error = 0.0;        // bound on |point - exact point| per component (object space)
 };
 
 }  // namespace rts::render

@@ -1,15 +1,22 @@
 // Every numeric tolerance the renderer uses, in one place, with the reason for each value.
-// Geometry is intersected in double precision; mesh vertices are stored as float but are
-// converted exactly to double, so errors come from the arithmetic, not from storage.
+// Geometry is intersected in double precision; mesh vertices are stored as float relative to
+// the mesh's own centre (MeshData::origin, a double), so storage error is relative to the
+// mesh's size, not to its distance from the world origin.
 #pragma once
 
 namespace rts::render::tol {
 
-// Spawned rays start a little off the surface (pbrt's "offset ray origin"): the offset scales
-// with the magnitude of the hit point and the distance travelled, since the rounding error of
-// p = o + t*d grows with both. The absolute floor covers hits at the origin.
-inline constexpr double kRayOffsetRelative = 1e-9;
-inline constexpr double kRayOffsetAbsolute = 1e-9;
+// Spawned rays start off the surface by the hit point's own rounding error bound (see
+// offset_ray_origin in render/ray.hpp), times this safety factor: the bound covers the hit
+// point, the factor covers the rounding of the next intersection test from the new origin
+// (pbrt-v4 instead re-checks t against a bound in each test). 16 keeps offsets ~1e-14
+// relative, invisible at any scale, and the stability suite finds no acne with it.
+inline constexpr double kOffsetErrorScale = 16.0;
+// Rounded operations counted for p = o + t d including t's own computation.
+inline constexpr int kRayPointOps = 8;
+// A hit computed exactly (error bound 0, e.g. at the origin) still moves off by this, the
+// smallest normal double: a ray starting exactly on a surface could hit it at t = 0+.
+inline constexpr double kMinRayOffset = 2.2250738585072014e-308;
 
 // A ray parallel to a plane/disc/cap within this cosine is treated as missing it.
 inline constexpr double kParallelCosine = 1e-14;
@@ -45,6 +52,21 @@ inline constexpr int kMaxShadowSurfaces = 64;
 // A path whose remaining weight is below this in every channel contributes nothing visible
 // in an 8- or 16-bit image: recursion stops.
 inline constexpr double kMinPathWeight = 1e-4;
+
+// max_depth above this is capped (with a located warning): the bounce loop is iterative, so
+// depth costs only time, and between two perfect mirrors every extra level is one more ray
+// per pixel. 10,000 bounces are a few seconds for a small image; 1e9 would never finish.
+inline constexpr int kMaxDepth = 10000;
+
+// Transmissive objects a path can be inside at once (the medium stack of nested dielectrics).
+// Deeper nesting keeps refracting with the innermost tracked media.
+inline constexpr int kMaxNestedMedia = 8;
+
+// Radiance, light power and path weights saturate here: far below double's overflow, so sums
+// over lights, samples and bounces stay finite, and below float's 3.4e38 so the stored image
+// holds it. A light of intensity 1e300 then renders as the brightest possible light, not as
+// infinity times zero (NaN, black).
+inline constexpr double kMaxRadiance = 1e30;
 
 // Group nesting deeper than this is treated as a cycle in the scene graph.
 inline constexpr int kMaxGroupDepth = 1024;

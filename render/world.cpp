@@ -18,6 +18,15 @@ namespace {
 
 bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
 
+// The infinity norm of the 3x3 linear part (largest row sum of absolute values): how much it
+// can stretch a per-component error bound.
+double linear_norm(const Mat4& m) {
+  double best = 0.0;
+  for (int row = 0; row < 3; ++row)
+    best = std::max(best, std::abs(m[0][row]) + std::abs(m[1][row]) + std::abs(m[2][row]));
+  return best;
+}
+
 }  // namespace
 
 World::World(const SceneDesc& scene, const FlatScene& flat) {
@@ -38,6 +47,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
       double det = glm::determinant(glm::dmat3(fs.to_world));
       if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) continue;
       InstanceTransform xf;
+      xf.to_world = fs.to_world;
       xf.to_object = glm::inverse(fs.to_world);
       xf.normal_to_world = glm::transpose(glm::dmat3(xf.to_object));
       inst.transform = static_cast<uint32_t>(transforms_.size());
@@ -98,7 +108,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
 
 namespace {
 bool same_mesh_data(const MeshData& a, const MeshData& b) {
-  return a.source == b.source && a.indices == b.indices && a.positions == b.positions &&
+  return a.source == b.source && a.origin == b.origin && a.indices == b.indices && a.positions == b.positions &&
          a.normals == b.normals && a.uvs == b.uvs;
 }
 }  // namespace
@@ -172,19 +182,29 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   const Instance& inst = instances_[best_instance];
   hit.t = best.t;
   hit.instance = best_instance;
-  hit.point = ray.at(best.t);
   hit.object_point = best.point;
   hit.uv = best.uv;
   // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
   // texture asks for them.
   hit.has_uv = best.has_uv || inst.kind == PrimKind::Sphere;
+  // The world point is the shape's own (refined) object point carried to world space, not
+  // ray.at(t): its error bound then stays relative to the shape, whatever the ray travelled.
   if (inst.transform == kNoId) {
+    hit.point = best.point;
+    hit.error = best.error;
     hit.normal = glm::normalize(best.normal);
     hit.shading_normal = glm::normalize(best.shading_normal);
   } else {
-    const glm::dmat3& nm = transforms_[inst.transform].normal_to_world;
-    hit.normal = glm::normalize(nm * best.normal);
-    hit.shading_normal = glm::normalize(nm * best.shading_normal);
+    const InstanceTransform& xf = transforms_[inst.transform];
+    hit.point = Vec3(xf.to_world * glm::dvec4(best.point, 1.0));
+    // The linear part scales the object-space error; the product and the translation add
+    // rounding of their own (pbrt-v4's transformed-point error bound).
+    double linear = linear_norm(xf.to_world);
+    hit.error = linear * best.error * (1.0 + error_gamma(3)) +
+                error_gamma(3) * (linear * max_abs_component(best.point) +
+                                  max_abs_component(Vec3(xf.to_world[3])));
+    hit.normal = glm::normalize(xf.normal_to_world * best.normal);
+    hit.shading_normal = glm::normalize(xf.normal_to_world * best.shading_normal);
   }
   return true;
 }

@@ -28,6 +28,7 @@ struct Instance {
 };
 
 struct InstanceTransform {
+  Mat4 to_world{1.0};               // object → world
   Mat4 to_object{1.0};              // world → object
   glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
 };
@@ -37,6 +38,7 @@ struct WorldHit {
   double t = 0.0;
   uint32_t instance = 0;
   Vec3 point{0.0};             // world
+  double error = 0.0;          // bound on the rounding error of `point`, per component
   Vec3 normal{0, 1, 0};        // world geometric normal, unit, outward
   Vec3 shading_normal{0, 1, 0};  // world, unit, outward
   Vec3 object_point{0.0};      // for textures

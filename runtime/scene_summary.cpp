@@ -57,8 +57,8 @@ bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Ve
       lo = Vec3(std::numeric_limits<double>::max());
       hi = -lo;
       for (const glm::vec3& p : m.positions) {
-        lo = glm::min(lo, Vec3(p));
-        hi = glm::max(hi, Vec3(p));
+        lo = glm::min(lo, m.origin + Vec3(p));
+        hi = glm::max(hi, m.origin + Vec3(p));
       }
       return true;
     }

@@ -44,6 +44,8 @@ inline bool intersect(const Box& box, const Ray& ray, Interval ray_t, SurfaceHit
   }
   hit.t = t;
   hit.point = ray.at(t);
+  hit.error = ray_point_error(ray, t);
+  hit.point[axis] = sign > 0 ? hi[axis] : lo[axis];  // exactly on the face it crossed
   Vec3 n(0.0);
   n[axis] = sign;
   hit.normal = n;

@@ -77,6 +77,7 @@ inline bool intersect_cone(const Vec3& from, const Vec3& to, double r0, double r
   if (!found) return false;
   hit.t = best;
   hit.point = ray.at(best);
+  hit.error = ray_point_error(ray, best);
   Vec3 n;
   if (best_part == 1) {
     n = -ua;

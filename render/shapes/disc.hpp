@@ -50,6 +50,7 @@ inline bool intersect(const Disc& d, const Ray& ray, Interval ray_t, SurfaceHit&
     return false;
   hit.t = t;
   hit.point = ray.at(t);
+  hit.error = ray_point_error(ray, t);
   hit.normal = n;
   hit.shading_normal = n;
   hit.has_uv = false;

@@ -28,6 +28,7 @@ inline bool intersect(const Plane& p, const Ray& ray, Interval ray_t, SurfaceHit
   if (!ray_t.surrounds(t)) return false;
   hit.t = t;
   hit.point = ray.at(t);
+  hit.error = ray_point_error(ray, t);
   hit.normal = n;
   hit.shading_normal = n;
   Vec3 t1, t2;

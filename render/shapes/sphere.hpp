@@ -22,19 +22,24 @@ inline glm::dvec2 sphere_uv(const Vec3& unit_normal) {
   return {u, v};
 }
 
+// The stable quadratic of Ray Tracing Gems ch. 7 (Haines et al.): the discriminant comes from
+// the distance between the centre and the ray's closest point, not from b^2 - 4ac, which
+// cancels to nothing for a small sphere far away (r = 1e-3 at 1e4: b^2 ~ 1e16 against a
+// difference of ~1e-6); the roots come from q = b + sign(b) sqrt(...) (no cancellation).
 inline bool intersect(const Sphere& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
   if (!(s.radius > 0.0)) return false;  // zero/negative radius: nothing to hit
-  Vec3 oc = ray.origin - s.center;
+  Vec3 f = ray.origin - s.center;
   double a = glm::dot(ray.direction, ray.direction);
-  double h = glm::dot(ray.direction, oc);
-  // c computed as (|oc|-r)(|oc|+r) keeps precision for rays starting on the surface.
-  double len = glm::length(oc);
+  if (!(a > 0.0)) return false;
+  double b = -glm::dot(f, ray.direction);               // -b/2 of the textbook form
+  Vec3 closest = f + (b / a) * ray.direction;           // centre → the ray's closest point
+  double l = glm::length(closest);
+  double disc = a * ((s.radius - l) * (s.radius + l));  // a * (r^2 - |closest|^2)
+  if (disc < 0.0) return false;
+  // c as (|f|-r)(|f|+r) keeps precision for rays starting on the surface.
+  double len = glm::length(f);
   double c = (len - s.radius) * (len + s.radius);
-  double disc = h * h - a * c;
-  if (disc < 0.0 || a <= 0.0) return false;
-  double sq = std::sqrt(disc);
-  // The numerically stable pair of roots (no cancellation between -h and sq).
-  double q = h >= 0.0 ? -(h + sq) : -(h - sq);
+  double q = b + std::copysign(std::sqrt(disc), b);
   double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
   if (t0 > t1) std::swap(t0, t1);
   double t = t0;
@@ -43,8 +48,13 @@ inline bool intersect(const Sphere& s, const Ray& ray, Interval ray_t, SurfaceHi
     if (!ray_t.surrounds(t)) return false;
   }
   hit.t = t;
-  hit.point = ray.at(t);
-  Vec3 n = (hit.point - s.center) / s.radius;
+  // Re-project the point onto the sphere (pbrt-v4): its error is then relative to the centre
+  // and radius only, not to how far the ray travelled.
+  Vec3 rel = ray.at(t) - s.center;
+  double rel_len = glm::length(rel);
+  Vec3 n = rel_len > 0.0 ? rel / rel_len : Vec3(0, 1, 0);
+  hit.point = s.center + s.radius * n;
+  hit.error = error_gamma(6) * (max_abs_component(s.center) + s.radius);
   hit.normal = n;
   hit.shading_normal = n;
   hit.has_uv = false;  // World fills spherical UVs for the closest hit only (sphere_uv)
