@@ -1,6 +1,8 @@
 #include "render/integrator.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -40,21 +42,65 @@ double schlick(double cos_theta, double f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
+namespace spec {
+unsigned mask_for(const FeatureSet& f) {
+  unsigned mask = 0;
+  if (f.has(Feature::Reflection) || f.has(Feature::Transmission)) mask |= kSecondary;
+  if (f.has(Feature::Texture)) mask |= kTexture;
+  if (f.has(Feature::Specular)) mask |= kSpecular;
+  if (f.has(Feature::AreaSampling) || f.has(Feature::Glossiness)) mask |= kRandom;
+  if (f.has(Feature::TransmissiveShadows)) mask |= kTransmissiveShadows;
+  return mask;
+}
+}  // namespace spec
+
+namespace {
+// The sampler values direct_light draws for one light: a permutation seed, and a 2D jitter
+// per sample of an area light.
+uint32_t sampler_values(const CompiledLight& l) {
+  return 1 + (l.kind == LightKind::Area ? 2 * static_cast<uint32_t>(l.samples) : 0);
+}
+}  // namespace
+
 Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lights,
                        const std::vector<MaterialDesc>& materials,
                        const std::vector<CompiledTexture>& textures, const Settings& settings,
-                       int max_depth)
-    : world_(world), lights_(lights), materials_(materials), textures_(textures),
+                       int max_depth, unsigned mask)
+    : world_(world), materials_(materials), textures_(textures),
       background_(to_rgb(settings.background)), ambient_light_(to_rgb(settings.ambient_light)),
-      max_depth_(max_depth) {}
+      max_depth_(max_depth) {
+  bool generic = (mask & spec::kGeneric) != 0;
+  uint32_t skipped = 0;
+  for (const CompiledLight& l : lights) {
+    // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
+    if (!generic && l.power == Rgb(0.0)) {
+      skipped += sampler_values(l);
+      continue;
+    }
+    lights_.push_back(l);
+    skip_before_.push_back(skipped);
+    skipped = 0;
+  }
+  skip_after_ = skipped;
+  radiance_ = radiance_for(generic ? (spec::kGeneric | spec::kAll) : (mask & spec::kAll));
+}
+
+Integrator::RadianceFn Integrator::radiance_for(unsigned mask) {
+  static constexpr auto table = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<RadianceFn, sizeof...(I)>{&Integrator::radiance<static_cast<unsigned>(I)>...};
+  }(std::make_index_sequence<spec::kAll + 1>{});
+  if (mask & spec::kGeneric) return &Integrator::radiance<spec::kGeneric | spec::kAll>;
+  return table[mask & spec::kAll];
+}
 
 const MaterialDesc& Integrator::material(uint32_t instance) const {
   MaterialId id = world_.instance(instance).material;
   return id < materials_.size() ? materials_[id] : default_material_;
 }
 
+template <unsigned F>
 Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
-  if (m.texture != kNoId && m.texture < textures_.size()) {
+  if ((F & spec::kTexture) && m.texture != kNoId && m.texture < textures_.size()) {
     TexturePoint p;
     p.object_point = hit.object_point;
     p.has_uv = hit.has_uv;
@@ -67,7 +113,8 @@ Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
 Rgb Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
   ++counters.camera;
   Path path{sampler, counters};
-  return radiance(ray, 0, Rgb(1.0), path);
+  // One indirect call per camera sample, always to the same target; the recursion inside is direct.
+  return (this->*radiance_)(ray, 0, Rgb(1.0), path);
 }
 
 FirstHit Integrator::first_hit(const Ray& ray) const {
@@ -82,12 +129,32 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
   return out;
 }
 
+template <unsigned F>
 Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const {
   ++path.counters.shadow;
   Ray ray{origin, ls.direction};
   double end = std::isinf(ls.distance) ? Interval::kInfinity
                                         : ls.distance * (1.0 - tol::kShadowEndRelative);
   Interval range(0.0, end);
+  if constexpr (!(F & spec::kTransmissiveShadows)) {
+    return world_.occluded(ray, range) ? Rgb(0.0) : Rgb(1.0);  // nothing lets light through
+  } else if constexpr (!(F & spec::kGeneric)) {
+    // One traversal: stops at the first opaque hit, else collects the glass crossed, which is
+    // multiplied through in order along the ray (the same product as the closest-hit walk).
+    ShadowCrossings crossed;
+    if (world_.shadow_crossings(ray, range, crossed)) return Rgb(0.0);
+    for (int i = 1; i < crossed.count; ++i)  // insertion sort: a handful of crossings
+      for (int k = i; k > 0 && crossed.t[k] < crossed.t[k - 1]; --k) {
+        std::swap(crossed.t[k], crossed.t[k - 1]);
+        std::swap(crossed.instance[k], crossed.instance[k - 1]);
+      }
+    Rgb t(1.0);
+    for (int i = 0; i < crossed.count; ++i) {
+      t *= glm::clamp(to_rgb(material(crossed.instance[i]).transmit), 0.0, 1.0);
+      if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
+    }
+    return t;
+  }
   // Any opaque occluder blocks the light whatever else lies on the segment: test those first
   // with an early-exit traversal.
   if (world_.occluded(ray, range, /*opaque_only=*/true)) return Rgb(0.0);
@@ -106,16 +173,23 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   return Rgb(0.0);
 }
 
+template <unsigned F>
 Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo,
                              const Vec3& n, const Vec3& shadow_origin, const Vec3& view,
                              Path& path) const {
   Sampler& sampler = path.sampler;
   Rgb sum(0.0);
-  for (const CompiledLight& light : lights_) {
-    uint32_t perm = sampler.next_bits();
-    bool area = light.kind == LightKind::Area;
+  // Without kRandom no light is an area light and nothing later draws from the sampler: one
+  // sample per light, no permutation seed, no jitter.
+  constexpr bool kRandom = (F & spec::kRandom) != 0;
+  for (std::size_t k = 0; k < lights_.size(); ++k) {
+    const CompiledLight& light = lights_[k];
+    if constexpr (kRandom) sampler.skip(skip_before_[k]);
+    uint32_t perm = kRandom ? sampler.next_bits() : 0;
+    bool area = kRandom && light.kind == LightKind::Area;
+    int samples = kRandom ? light.samples : 1;
     uint32_t col = 0, row = 0;  // the grid stratum of sample j, stepped without dividing
-    for (int j = 0; j < light.samples; ++j) {
+    for (int j = 0; j < samples; ++j) {
       glm::dvec2 on_light(0.5);
       if (area) {
         glm::dvec2 jitter = sampler.next2();
@@ -131,19 +205,21 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
       double n_dot_l = glm::dot(n, ls.direction);
       if (n_dot_l <= 0.0 || is_black(ls.radiance)) continue;
       Rgb shade = m.diffuse * n_dot_l * albedo;
-      if (m.specular > 0.0) {
+      if ((F & spec::kSpecular) && m.specular > 0.0) {
         Vec3 r = 2.0 * n_dot_l * n - ls.direction;  // mirror of the light direction
         double r_dot_v = glm::dot(r, view);
         if (r_dot_v > 0.0) shade += Rgb(m.specular * std::pow(r_dot_v, m.shininess));
       }
       if (is_black(shade)) continue;
-      Rgb transmittance = light.shadows ? shadow_transmittance(shadow_origin, ls, path) : Rgb(1.0);
+      Rgb transmittance = light.shadows ? shadow_transmittance<F>(shadow_origin, ls, path) : Rgb(1.0);
       sum += shade * ls.radiance * transmittance;
     }
   }
+  if constexpr (kRandom) sampler.skip(skip_after_);
   return sum;
 }
 
+template <unsigned F>
 Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& path) const {
   WorldHit hit;
   if (!world_.intersect(ray, Interval::positive(), hit)) return background_;
@@ -161,11 +237,12 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
   if (!entering) ng = -ng;
   if (glm::dot(n, ng) < 0.0) n = -n;
   Vec3 view = -incident;
-  Rgb base = albedo(m, hit);
+  Rgb base = albedo<F>(m, hit);
   Rgb color = to_rgb(m.emission) + m.ambient * base * ambient_light_;
   Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, travelled);
-  color += direct_light(hit, m, base, n, front_origin, view, path);
+  color += direct_light<F>(hit, m, base, n, front_origin, view, path);
 
+  if constexpr (!(F & spec::kSecondary)) return color;  // nothing reflects or transmits
   if (depth >= max_depth_) return color;
 
   Rgb kr = to_rgb(m.reflect), kt = to_rgb(m.transmit);
@@ -206,12 +283,12 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
     }
     ++path.counters.reflection;
     Ray r{offset_ray_origin(hit.point, ng, dir, travelled), dir};
-    color += kr * radiance(r, depth + 1, weight * kr, path);
+    color += kr * radiance<F>(r, depth + 1, weight * kr, path);
   }
   if (max_channel(kt * weight) > tol::kMinPathWeight) {
     ++path.counters.refraction;
     Ray r{offset_ray_origin(hit.point, ng, refracted, travelled), refracted};
-    color += kt * radiance(r, depth + 1, weight * kt, path);
+    color += kt * radiance<F>(r, depth + 1, weight * kt, path);
   }
   return color;
 }

@@ -20,6 +20,9 @@ class MeshAccel {
   // Closest hit in object space; `smooth` interpolates the mesh's vertex normals if it has them.
   bool intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const;
   bool occluded(const Ray& ray, Interval ray_t) const;
+  std::size_t bvh_nodes() const { return bvh_.nodes.size(); }
+  // Bytes held: the mesh's arrays, its BVH and the leaf-ordered vertices.
+  std::size_t memory_bytes() const;
 
  private:
   void triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const;  // by triangle index
