@@ -130,11 +130,12 @@ Value Interpreter::define_object(const std::string& kind, SourceLoc loc, const s
 }
 
 Value Interpreter::define_object(std::shared_ptr<ObjectValue> obj) {
-  // Not built here: the block is kept and built when the object is first placed (see
-  // realize_object), so a definition never placed costs nothing and loads no file.
+  // A mesh is built when first placed (see realize_object): one never placed costs nothing and
+  // its file is never opened. Other shapes and lights are cheap and built (so checked) now.
+  if (*obj->kind != "mesh") obj->built_id = define_object(*obj->kind, obj->loc, obj->props).id;
   Value v;
   v.type = Type::Object;
-  v.id = render::kNoId;
+  v.id = render::kNoId;  // the node is the definition's built_id
   v.ref = std::move(obj);
   return v;
 }

@@ -240,8 +240,8 @@ void Interpreter::warn_unused(const SourceFile& main) {
   for (std::size_t i = 0; i < globals_end(); ++i) {
     const Binding& b = bindings_[i];
     if (b.used || b.loc.file != &main) continue;
-    const char* what = nullptr;
-    std::string file;
+    std::string what, file;
+    bool built = false;  // shapes and lights other than meshes are built (and checked) when declared
     switch (b.value.type) {
       case Type::Material: what = "material"; break;
       case Type::Texture:
@@ -249,14 +249,20 @@ void Interpreter::warn_unused(const SourceFile& main) {
         file = declared_file(as_record(b.value).props);
         break;
       case Type::Macro: what = "macro"; break;
-      case Type::Object:
+      case Type::Object: {
         what = "object";
-        if (b.value.ref) file = declared_file(static_cast<const ObjectValue&>(*b.value.ref).definition().props);
+        if (!b.value.ref) break;
+        const ObjectValue& def = static_cast<const ObjectValue&>(*b.value.ref).definition();
+        if (def.kind) what = *def.kind;
+        built = def.built_id != render::kNoId;
+        file = declared_file(def.props);
         break;
+      }
       default: break;
     }
-    if (!what) continue;
-    std::string msg = fmt::format("{} '{}' is declared but never used (it is not built)", what, *b.name);
+    if (what.empty()) continue;
+    const char* why = built ? "" : b.value.type == Type::Macro ? " (so it never runs)" : " (so it is not built)";
+    std::string msg = fmt::format("{} '{}' is declared but never used{}", what, *b.name, why);
     if (!file.empty()) {
       std::error_code ec;
       fs::path path(file);  // relative to the declaring file, as the builder resolves it

@@ -126,8 +126,8 @@ struct ObjectValue : HeapValue {
   std::vector<Property> props;
   SourceLoc loc;
   std::shared_ptr<const ObjectValue> defined_by;  // a transformed copy: the object holding the block
-  // The scene node this definition became when first placed (kNoId: never placed, so never
-  // built: an unused `let m = mesh { file "big.obj" }` never opens the file).
+  // The scene node this definition became (meshes: when first placed; kNoId until then, so an
+  // unused `let m = mesh { file = "big.obj" }` never opens the file).
   mutable uint32_t built_id = render::kNoId;
   const ObjectValue& definition() const { return defined_by ? *defined_by : *this; }
 };
