@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <utility>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "render/tolerances.hpp"
 
