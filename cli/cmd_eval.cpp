@@ -68,8 +68,9 @@ bool run_eval(const EvalCommand& cmd, CommandContext& ctx, SourceManager& source
 
 // `check` and `eval` share their arguments and evaluation; they differ only in what they print.
 void add_evaluating_command(CLI::App& app, CommandContext& ctx, const char* name, const char* help,
-                            std::function<void(const EvalResult&)> print) {
+                            std::function<void(const EvalResult&)> print, bool warn_unused = false) {
   auto cmd = std::make_shared<EvalCommand>();
+  cmd->options.warn_unused = warn_unused;
   CLI::App* sub = app.add_subcommand(name, help);
   sub->add_option("file", cmd->file, "Scene file (.rts)")->required();
   add_eval_options(*sub, cmd->options);
@@ -89,7 +90,8 @@ void add_check_command(CLI::App& app, CommandContext& ctx) {
                          [](const EvalResult& result) {
                            runtime::SceneSummary s = runtime::summarize(result.scene);
                            runtime::print_summary(std::cout, result.scene, s, result.seconds);
-                         });
+                         },
+                         /*warn_unused=*/true);
 }
 
 void add_eval_command(CLI::App& app, CommandContext& ctx) {

@@ -15,6 +15,7 @@
 
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
+#include "cli/stats_report.hpp"
 #include "parser/diagnostics.hpp"
 #include "render/image.hpp"
 #include "render/renderer.hpp"
@@ -34,6 +35,8 @@ struct RenderCommand {
   std::vector<std::string> aovs;
   int bits = 8;
   bool no_progress = false;
+  bool no_specialize = false;
+  StatsOptions stats;
   EvalOptions eval;
 };
 
@@ -78,11 +81,12 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   SourceManager sources;
   DiagnosticSink sink(std::cerr, ctx.color);
   render::SceneDesc scene;
-  double eval_seconds = 0;
+  double eval_seconds = 0, parse_seconds = 0;
   try {
     EvalResult evaluated = evaluate_file(sources, c.scene, c.eval, sink);
     scene = std::move(evaluated.scene);
     eval_seconds = evaluated.seconds;
+    parse_seconds = evaluated.parse_seconds;
   } catch (const LanguageError& e) {
     sink.report(e.diag);
     return kExitLanguageError;
@@ -103,11 +107,13 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   if (cmd.count("--max-depth")) opts.max_depth = c.max_depth;
   opts.aovs = c.aovs;
   opts.progress = !c.no_progress && isatty(STDERR_FILENO);
+  opts.specialize = !c.no_specialize;
 
   try {
     check_output_writable(out);
     render::RenderResult result = render::render(scene, opts);
     result.stats.eval_seconds = eval_seconds;
+    result.stats.parse_seconds = parse_seconds;
     auto write_start = std::chrono::steady_clock::now();
     render::write_png(out, result.color, c.bits, render::Encoding::SRGB);
     // AOVs are data (normals, depth), not colors: stored without the sRGB curve.
@@ -116,6 +122,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     result.stats.write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";
+    report_stats(c.stats, result.stats);
   } catch (const render::RenderError& e) {
     print_error(e.where, e.what());
     return kExitRenderError;
@@ -146,6 +153,9 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::IsMember({"normal", "depth", "albedo"}));
   cmd->add_option("--bits", c->bits, "Bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
   cmd->add_flag("--no-progress", c->no_progress, "Never draw the progress bar");
+  cmd->add_flag("--stats", c->stats.print, "Print features used and left out, rays, memory and time per phase");
+  cmd->add_option("--stats-json", c->stats.json_path, "Write the same figures as JSON to FILE ('-': stdout)");
+  cmd->add_flag("--no-specialize", c->no_specialize, "Render through the generic path (for benchmarks)");
   add_eval_options(*cmd, c->eval);
   cmd->callback([c, cmd, &ctx] { ctx.exit_code = run(*c, *cmd, ctx); });
 }

@@ -1,6 +1,8 @@
 #include "render/integrator.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -45,21 +47,65 @@ double schlick(double cos_theta, double f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
+namespace spec {
+unsigned mask_for(const FeatureSet& f) {
+  unsigned mask = 0;
+  if (f.has(Feature::Reflection) || f.has(Feature::Transmission)) mask |= kSecondary;
+  if (f.has(Feature::Texture)) mask |= kTexture;
+  if (f.has(Feature::Specular)) mask |= kSpecular;
+  if (f.has(Feature::AreaSampling) || f.has(Feature::Glossiness)) mask |= kRandom;
+  if (f.has(Feature::TransmissiveShadows)) mask |= kTransmissiveShadows;
+  return mask;
+}
+}  // namespace spec
+
+namespace {
+// The sampler values direct_light draws for one light: a permutation seed, and a 2D jitter
+// per sample of an area light.
+uint32_t sampler_values(const CompiledLight& l) {
+  return 1 + (l.kind == LightKind::Area ? 2 * static_cast<uint32_t>(l.samples) : 0);
+}
+}  // namespace
+
 Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lights,
                        const std::vector<MaterialDesc>& materials,
                        const std::vector<CompiledTexture>& textures, const Settings& settings,
-                       int max_depth)
-    : world_(world), lights_(lights), materials_(materials), textures_(textures),
+                       int max_depth, unsigned mask)
+    : world_(world), materials_(materials), textures_(textures),
       background_(to_rgb(settings.background)), ambient_light_(to_rgb(settings.ambient_light)),
-      max_depth_(max_depth) {}
+      max_depth_(max_depth) {
+  bool generic = (mask & spec::kGeneric) != 0;
+  uint32_t skipped = 0;
+  for (const CompiledLight& l : lights) {
+    // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
+    if (!generic && l.power == Rgb(0.0)) {
+      skipped += sampler_values(l);
+      continue;
+    }
+    lights_.push_back(l);
+    skip_before_.push_back(skipped);
+    skipped = 0;
+  }
+  skip_after_ = skipped;
+  trace_ = trace_for(generic ? (spec::kGeneric | spec::kAll) : (mask & spec::kAll));
+}
+
+Integrator::TraceFn Integrator::trace_for(unsigned mask) {
+  static constexpr auto table = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<TraceFn, sizeof...(I)>{&Integrator::trace_tree<static_cast<unsigned>(I)>...};
+  }(std::make_index_sequence<spec::kAll + 1>{});
+  if (mask & spec::kGeneric) return &Integrator::trace_tree<spec::kGeneric | spec::kAll>;
+  return table[mask & spec::kAll];
+}
 
 const MaterialDesc& Integrator::material(uint32_t instance) const {
   MaterialId id = world_.instance(instance).material;
   return id < materials_.size() ? materials_[id] : default_material_;
 }
 
+template <unsigned F>
 Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
-  if (m.texture != kNoId && m.texture < textures_.size()) {
+  if ((F & spec::kTexture) && m.texture != kNoId && m.texture < textures_.size()) {
     TexturePoint p;
     p.object_point = hit.object_point;
     p.has_uv = hit.has_uv;
@@ -72,6 +118,12 @@ Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
 Rgb Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
   ++counters.camera;
   Path path{sampler, counters};
+  // One indirect call per camera sample, always to the same target; everything inside is direct.
+  return (this->*trace_)(ray, path);
+}
+
+template <unsigned F>
+Rgb Integrator::trace_tree(const Ray& ray, Path& path) const {
   // The Whitted tree (a reflected and a refracted ray per transmissive hit) is walked with an
   // explicit stack, not recursion, so max_depth is limited by time (tol::kMaxDepth), never by
   // the worker threads' stacks. Popping the reflected ray before the refracted one visits the
@@ -79,12 +131,16 @@ Rgb Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters) c
   // per thread and reused: no allocation per ray once it has grown.
   thread_local std::vector<PendingRay> pending;
   pending.clear();
+  if constexpr (!(F & spec::kSecondary)) {
+    // Nothing reflects or transmits: the tree is the camera ray's hit alone.
+    return shade<F>(PendingRay{ray, Rgb(1.0), 0, MediumStack{}}, path, pending);
+  }
   pending.push_back(PendingRay{ray, Rgb(1.0), 0, MediumStack{}});
   Rgb color(0.0);
   while (!pending.empty()) {
     PendingRay pr = pending.back();
     pending.pop_back();
-    color += pr.weight * shade(pr, path, pending);
+    color += pr.weight * shade<F>(pr, path, pending);
   }
   return color;
 }
@@ -101,11 +157,32 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
   return out;
 }
 
+template <unsigned F>
 Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const {
   ++path.counters.shadow;
   Ray ray{origin, ls.direction};
   double end = std::isinf(ls.distance) ? Interval::kInfinity
                                         : ls.distance * (1.0 - tol::kShadowEndRelative);
+  if constexpr (!(F & spec::kTransmissiveShadows)) {
+    // Nothing lets light through.
+    return world_.occluded(ray, Interval(0.0, end)) ? Rgb(0.0) : Rgb(1.0);
+  } else if constexpr (!(F & spec::kGeneric)) {
+    // One traversal: stops at the first opaque hit, else collects the glass crossed, which is
+    // multiplied through in order along the ray (the same product as the closest-hit walk).
+    ShadowCrossings crossed;
+    if (world_.shadow_crossings(ray, Interval(0.0, end), crossed)) return Rgb(0.0);
+    for (int i = 1; i < crossed.count; ++i)  // insertion sort: a handful of crossings
+      for (int k = i; k > 0 && crossed.t[k] < crossed.t[k - 1]; --k) {
+        std::swap(crossed.t[k], crossed.t[k - 1]);
+        std::swap(crossed.instance[k], crossed.instance[k - 1]);
+      }
+    Rgb t(1.0);
+    for (int i = 0; i < crossed.count; ++i) {
+      t *= glm::clamp(to_rgb(material(crossed.instance[i]).transmit), 0.0, 1.0);
+      if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
+    }
+    return t;
+  }
   // Any opaque occluder blocks the light whatever else lies on the segment: test those first
   // with an early-exit traversal.
   if (world_.occluded(ray, Interval(0.0, end), /*opaque_only=*/true)) return Rgb(0.0);
@@ -126,16 +203,23 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   return Rgb(0.0);
 }
 
+template <unsigned F>
 Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo,
                              const Vec3& n, const Vec3& shadow_origin, const Vec3& view,
                              Path& path) const {
   Sampler& sampler = path.sampler;
   Rgb sum(0.0);
-  for (const CompiledLight& light : lights_) {
-    uint32_t perm = sampler.next_bits();
-    bool area = light.kind == LightKind::Area;
+  // Without kRandom no light is an area light and nothing later draws from the sampler: one
+  // sample per light, no permutation seed, no jitter.
+  constexpr bool kRandom = (F & spec::kRandom) != 0;
+  for (std::size_t k = 0; k < lights_.size(); ++k) {
+    const CompiledLight& light = lights_[k];
+    if constexpr (kRandom) sampler.skip(skip_before_[k]);
+    uint32_t perm = kRandom ? sampler.next_bits() : 0;
+    bool area = kRandom && light.kind == LightKind::Area;
+    int samples = kRandom ? light.samples : 1;
     uint32_t col = 0, row = 0;  // the grid stratum of sample j, stepped without dividing
-    for (int j = 0; j < light.samples; ++j) {
+    for (int j = 0; j < samples; ++j) {
       glm::dvec2 on_light(0.5);
       if (area) {
         glm::dvec2 jitter = sampler.next2();
@@ -151,16 +235,17 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
       double n_dot_l = glm::dot(n, ls.direction);
       if (n_dot_l <= 0.0 || is_black(ls.radiance)) continue;
       Rgb shade = m.diffuse * n_dot_l * albedo;
-      if (m.specular > 0.0) {
+      if ((F & spec::kSpecular) && m.specular > 0.0) {
         Vec3 r = 2.0 * n_dot_l * n - ls.direction;  // mirror of the light direction
         double r_dot_v = glm::dot(r, view);
         if (r_dot_v > 0.0) shade += Rgb(m.specular * std::pow(r_dot_v, m.shininess));
       }
       if (is_black(shade)) continue;
-      Rgb transmittance = light.shadows ? shadow_transmittance(shadow_origin, ls, path) : Rgb(1.0);
+      Rgb transmittance = light.shadows ? shadow_transmittance<F>(shadow_origin, ls, path) : Rgb(1.0);
       sum += shade * ls.radiance * transmittance;
     }
   }
+  if constexpr (kRandom) sampler.skip(skip_after_);
   return sum;
 }
 
@@ -179,6 +264,7 @@ Integrator::Interface Integrator::interface(const MediumStack& media, uint32_t i
   return f;
 }
 
+template <unsigned F>
 Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const {
   const Ray& ray = pr.ray;
   WorldHit hit;
@@ -195,12 +281,13 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   if (!entering) ng = -ng;
   if (glm::dot(n, ng) < 0.0) n = -n;
   Vec3 view = -incident;
-  Rgb base = albedo(m, hit);
+  Rgb base = albedo<F>(m, hit);
   Rgb color = to_rgb(m.emission) + m.ambient * base * ambient_light_;
   Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, hit.error);
-  color += direct_light(hit, m, base, n, front_origin, view, path);
+  color += direct_light<F>(hit, m, base, n, front_origin, view, path);
   color = saturate(color);
 
+  if constexpr (!(F & spec::kSecondary)) return color;  // nothing reflects or transmits
   if (pr.depth >= max_depth_) return color;
 
   Rgb kr = to_rgb(m.reflect), kt = to_rgb(m.transmit);

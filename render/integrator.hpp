@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "render/features.hpp"
 #include "render/lights.hpp"
 #include "render/medium_stack.hpp"
 #include "render/sampler.hpp"
@@ -23,11 +24,27 @@ struct FirstHit {
   Rgb albedo{0.0};
 };
 
+// The shading paths compiled for each set of these features (render/features.hpp): a scene
+// runs through the one instantiated for the features it uses, so an unused feature costs
+// neither a branch nor a loop per ray. kGeneric (--no-specialize) is everything on, every light
+// kept, and shadow rays through glass re-walking the scene with closest-hit steps.
+namespace spec {
+inline constexpr unsigned kSecondary = 1;            // reflection or transmission rays
+inline constexpr unsigned kTexture = 2;              // texture lookups (else constant colors)
+inline constexpr unsigned kSpecular = 4;             // Phong highlights
+inline constexpr unsigned kRandom = 8;               // area-light sampling loops, glossy rays
+inline constexpr unsigned kTransmissiveShadows = 16; // shadow rays multiply through glass
+inline constexpr unsigned kGeneric = 32;             // --no-specialize
+inline constexpr unsigned kAll = 31;
+unsigned mask_for(const FeatureSet& features);
+}  // namespace spec
+
 class Integrator {
  public:
+  // `mask`: spec::mask_for(the scene's features), or spec::kGeneric | spec::kAll.
   Integrator(const World& world, const std::vector<CompiledLight>& lights,
              const std::vector<MaterialDesc>& materials, const std::vector<CompiledTexture>& textures,
-             const Settings& settings, int max_depth);
+             const Settings& settings, int max_depth, unsigned mask = spec::kGeneric | spec::kAll);
 
   // Radiance arriving along a camera ray.
   Rgb trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const;
@@ -51,19 +68,33 @@ class Integrator {
   struct Interface {
     double n_from = 1.0, n_to = 1.0;
   };
+  using TraceFn = Rgb (Integrator::*)(const Ray&, Path&) const;
+  static TraceFn trace_for(unsigned mask);
+  // The whole Whitted tree of one camera ray, compiled for feature set F.
+  template <unsigned F>
+  Rgb trace_tree(const Ray& ray, Path& path) const;
   static Interface interface(const MediumStack& media, uint32_t instance, const MaterialDesc& m,
                              bool entering);
   // The light a pending ray's hit sends back along it (emission, ambient, direct light); its
   // reflected and refracted rays go onto `pending`.
+  template <unsigned F>
   Rgb shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const;
+  template <unsigned F>
   Rgb direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo, const Vec3& n,
                    const Vec3& shadow_origin, const Vec3& view, Path& path) const;
+  template <unsigned F>
   Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const;
   const MaterialDesc& material(uint32_t instance) const;
+  template <unsigned F = spec::kAll>
   Rgb albedo(const MaterialDesc& m, const WorldHit& hit) const;
 
   const World& world_;
-  const std::vector<CompiledLight>& lights_;
+  // The lights shading visits: all of them (generic), or those that send light, each with the
+  // sampler values the left-out lights before it would have drawn (so images stay the same).
+  std::vector<CompiledLight> lights_;
+  std::vector<uint32_t> skip_before_;
+  uint32_t skip_after_ = 0;
+  TraceFn trace_;
   const std::vector<MaterialDesc>& materials_;
   const std::vector<CompiledTexture>& textures_;
   MaterialDesc default_material_;

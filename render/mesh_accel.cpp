@@ -115,4 +115,12 @@ bool MeshAccel::occluded(const Ray& object_ray, Interval ray_t) const {
   });
 }
 
+std::size_t MeshAccel::memory_bytes() const {
+  const MeshData& m = *mesh_;
+  return m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * sizeof(m.normals[0]) +
+         m.uvs.size() * sizeof(m.uvs[0]) + m.indices.size() * sizeof(m.indices[0]) +
+         bvh_.nodes.size() * sizeof(BVHNode) + bvh_.order.size() * sizeof(uint32_t) +
+         leaf_vertices_.size() * sizeof(leaf_vertices_[0]);
+}
+
 }  // namespace rts::render

@@ -21,6 +21,9 @@ class MeshAccel {
   // Closest hit in object space; `smooth` interpolates the mesh's vertex normals if it has them.
   bool intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const;
   bool occluded(const Ray& ray, Interval ray_t) const;
+  std::size_t bvh_nodes() const { return bvh_.nodes.size(); }
+  // Bytes held: the mesh's arrays, its BVH and the leaf-ordered vertices.
+  std::size_t memory_bytes() const;
 
  private:
   // The object-space ray in the mesh's own coordinates (relative to MeshData::origin).

@@ -13,6 +13,7 @@
 #include <tbb/task_arena.h>
 
 #include "render/camera.hpp"
+#include "render/features.hpp"
 #include "render/flatten.hpp"
 #include "render/frame.hpp"
 #include "render/integrator.hpp"
@@ -63,18 +64,48 @@ int thread_count(const RenderOptions& options) {
 // Everything built from the scene before tracing: acceleration structures, lights, textures.
 struct Prepared {
   FlatScene flat;
+  FeatureSet features;
   std::unique_ptr<World> world;
   std::vector<CompiledLight> lights;
   std::vector<CompiledTexture> textures;
 };
 
-Prepared prepare(const SceneDesc& scene) {
+// Only what is placed is built: textures no placed material uses are never loaded.
+Prepared prepare(const SceneDesc& scene, const ResolvedSettings& rs, const RenderOptions& options) {
   Prepared p;
   p.flat = flatten_scene(scene);
-  p.world = std::make_unique<World>(scene, p.flat);
+  p.features = analyze_features(scene, p.flat, FeatureContext{rs.samples, rs.max_depth, !options.aovs.empty()});
+  p.world = std::make_unique<World>(scene, p.flat, options.specialize);
+  if (p.world->uses_bvh()) p.features.add(Feature::Bvh);
   p.lights = compile_lights(p.flat.lights);
-  p.textures = compile_textures(scene);
+  std::vector<bool> used = used_textures(scene, p.flat);
+  p.textures = compile_textures(scene, &used);
   return p;
+}
+
+// What --stats reports about the scene as built: features, primitives, BVH, memory by part.
+void describe(const Prepared& prep, const Frame& frame, const RenderResult& result, RenderStats& stats) {
+  const World& world = *prep.world;
+  for (std::string_view f : prep.features.used()) stats.features_used.emplace_back(f);
+  for (std::string_view f : prep.features.left_out()) stats.features_left_out.emplace_back(f);
+  static constexpr const char* kKinds[] = {"sphere", "plane", "triangle", "box", "cylinder", "cone", "disc", "mesh"};
+  uint64_t by_kind[std::size(kKinds)] = {};
+  for (std::size_t i = 0; i < world.instance_count(); ++i) ++by_kind[static_cast<std::size_t>(world.instance(i).kind)];
+  for (std::size_t k = 0; k < std::size(kKinds); ++k)
+    if (by_kind[k] > 0) stats.primitives.emplace_back(kKinds[k], by_kind[k]);
+  stats.triangles = world.triangle_count();
+  stats.bvh_nodes = world.bvh_nodes();
+  WorldMemory m = world.memory();
+  std::size_t texture_bytes = 0;
+  for (const CompiledTexture& t : prep.textures) texture_bytes += t.image_bytes();
+  std::size_t image_bytes = result.color.rgb.size() * sizeof(float);
+  for (const auto& [name, image] : result.aovs) image_bytes += image.rgb.size() * sizeof(float);
+  if (frame.mean) image_bytes += frame.mean->size() * sizeof(float);
+  if (frame.variance) image_bytes += frame.variance->size() * sizeof(float);
+  image_bytes += frame.depth.size() * sizeof(frame.depth[0]) + frame.depth_bounded.size();
+  stats.memory = {{"instances", m.instances + m.transforms}, {"shapes", m.shapes}, {"bvh", m.bvh},
+                  {"meshes", m.meshes}, {"textures", texture_bytes}, {"lights", prep.lights.size() * sizeof(CompiledLight)},
+                  {"images", image_bytes}};
 }
 
 }  // namespace
@@ -92,10 +123,11 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<std::size_t>(threads));
   tbb::task_arena arena(threads);
-  Prepared prep = arena.execute([&] { return prepare(scene); });
+  Prepared prep = arena.execute([&] { return prepare(scene, rs, options); });
   const World& world = *prep.world;
   Camera camera(scene.has_camera ? scene.camera : CameraDesc{}, rs.width, rs.height);
-  Integrator integrator(world, prep.lights, scene.materials, prep.textures, scene.settings, rs.max_depth);
+  Integrator integrator(world, prep.lights, scene.materials, prep.textures, scene.settings, rs.max_depth,
+                        options.specialize ? spec::mask_for(prep.features) : spec::kGeneric | spec::kAll);
   PixelRenderer pixels(camera, integrator, rs.samples, rs.seed);
 
   RenderStats& stats = result.stats;
@@ -107,6 +139,8 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   stats.instances = world.instance_count() - world.plane_count();
   stats.planes = world.plane_count();
   stats.lights = prep.lights.size();
+  stats.specialized = options.specialize;
+  describe(prep, frame, result, stats);
   stats.pixels.width = rs.width;
   stats.pixels.height = rs.height;
   stats.pixels.samples = rs.samples;

@@ -19,6 +19,7 @@ struct RenderOptions {
   std::optional<int> width, height, samples, max_depth;  // override settings
   std::vector<std::string> aovs;          // any of "normal", "depth", "albedo"
   bool progress = false;                  // progress bar with ETA on stderr
+  bool specialize = true;                 // false: the generic path (--no-specialize)
   std::size_t max_pixels = 100'000'000;   // larger images are a RenderError
 };
 

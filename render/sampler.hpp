@@ -76,6 +76,9 @@ class Sampler {
   // Identical for every sample of a pixel: pairs the pixel's strata (N-rooks permutation).
   uint32_t pixel_bits() const { return static_cast<uint32_t>(pixel_key_ >> 32); }
   uint32_t dimension() const { return dimension_; }
+  // Steps over `n` values a path does not draw (a light that sends nothing), so the values
+  // after them are the ones a path that drew them would get.
+  void skip(uint32_t n) { dimension_ += n; }
 
  private:
   uint64_t key_;

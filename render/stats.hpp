@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rts::render {
@@ -37,10 +38,21 @@ struct PixelStatistics {
   double mean_standard_error() const;
 };
 
+// A named amount (a primitive kind and its count, a part of memory and its bytes).
+using NamedCounts = std::vector<std::pair<std::string, uint64_t>>;
+
 struct RenderStats {
   int width = 0, height = 0, samples = 0, max_depth = 0, threads = 0;
   std::size_t instances = 0, planes = 0, lights = 0;
   RayCounters rays;
+  // What the scene uses and what rendering left out (render/features.hpp names).
+  bool specialized = true;     // false under --no-specialize
+  std::vector<std::string> features_used, features_left_out;
+  NamedCounts primitives;      // placed primitives by kind (meshes: their triangles counted apart)
+  uint64_t triangles = 0;      // in placed meshes, each distinct mesh once
+  uint64_t bvh_nodes = 0;      // top level plus each distinct mesh BVH
+  NamedCounts memory;          // bytes by part: instances, shapes, bvh, meshes, textures, images
+  double parse_seconds = -1;   // the main file's parse, filled in by the CLI (< 0: not measured)
   double eval_seconds = -1;    // parse + evaluate, filled in by the CLI (< 0: not measured)
   double build_seconds = 0;    // flatten + textures + BVHs
   double render_seconds = 0;
@@ -54,6 +66,42 @@ struct RenderStats {
   //  3.10M rays (...per kind...), 2.58M rays/s; error ±0.0042 (mean std. error of pixel
   //  luminance)"
   std::string summary() const;
+
+  // Every figure, by dotted name, for the JSON report (render/stats_json.hpp, schema in
+  // docs/stats-json.md) and `--stats`. A new figure is one line here: `f("section.name", member)`
+  // (numbers, bools, strings, string lists and NamedCounts are understood). Names of one
+  // section stay together.
+  template <class F>
+  void visit(F&& f) const {
+    f("image.width", width);
+    f("image.height", height);
+    f("image.samples", samples);
+    f("image.max_depth", max_depth);
+    f("image.threads", threads);
+    f("scene.instances", instances);
+    f("scene.planes", planes);
+    f("scene.lights", lights);
+    f("scene.triangles", triangles);
+    f("scene.bvh_nodes", bvh_nodes);
+    f("scene.primitives", primitives);
+    f("features.specialized", specialized);
+    f("features.used", features_used);
+    f("features.left_out", features_left_out);
+    f("rays.camera", rays.camera);
+    f("rays.shadow", rays.shadow);
+    f("rays.reflection", rays.reflection);
+    f("rays.refraction", rays.refraction);
+    f("rays.total", rays.total());
+    f("rays.per_second", rays_per_second());
+    f("samples.nan", rays.nan_samples);
+    f("memory_bytes", memory);
+    f("seconds.parse", parse_seconds);
+    f("seconds.evaluate", eval_seconds >= 0 && parse_seconds >= 0 ? eval_seconds - parse_seconds : eval_seconds);
+    f("seconds.build", build_seconds);
+    f("seconds.render", render_seconds);
+    f("seconds.write", write_seconds);
+    f("error.mean_standard_error", pixels.mean_standard_error());
+  }
 };
 
 }  // namespace rts::render

@@ -139,19 +139,28 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
   return sample_bilinear(*image_, uv.x, uv.y);
 }
 
-std::vector<CompiledTexture> compile_textures(const SceneDesc& scene) {
+std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used) {
   std::map<std::string, std::shared_ptr<const Image>> loaded;   // path → image, loaded once
   std::vector<CompiledTexture> compiled;
   compiled.reserve(scene.textures.size());
-  for (const TextureDesc& desc : scene.textures) {
+  for (std::size_t id = 0; id < scene.textures.size(); ++id) {
+    const TextureDesc& desc = scene.textures[id];
     std::shared_ptr<const Image> image;
-    if (desc.kind == TextureKind::Image) {
+    bool needed = !used || (id < used->size() && (*used)[id]);
+    if (desc.kind == TextureKind::Image && needed) {
       auto it = loaded.find(desc.image_path);
       if (it == loaded.end()) {
         auto fresh = std::make_shared<const Image>(read_png(desc.image_path, desc.loc));
         it = loaded.emplace(desc.image_path, std::move(fresh)).first;
       }
       image = it->second;
+    }
+    if (desc.kind == TextureKind::Image && !needed) {
+      // Never evaluated (no placed material refers to it): keep its slot, skip the file.
+      TextureDesc placeholder;
+      placeholder.loc = desc.loc;
+      compiled.emplace_back(placeholder, nullptr);
+      continue;
     }
     compiled.emplace_back(desc, std::move(image));
   }

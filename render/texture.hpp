@@ -23,6 +23,8 @@ class CompiledTexture {
  public:
   CompiledTexture(const TextureDesc& desc, std::shared_ptr<const Image> image);
   Color eval(const TexturePoint& p) const;
+  // Bytes of decoded image data this texture holds (0 for procedural ones).
+  std::size_t image_bytes() const { return image_ ? image_->rgb.size() * sizeof(float) : 0; }
 
  private:
   TextureDesc desc_;
@@ -31,7 +33,8 @@ class CompiledTexture {
 };
 
 // Loads each distinct image once. Throws RenderError located at the texture's SourceRef when
-// an image is missing or unreadable.
-std::vector<CompiledTexture> compile_textures(const SceneDesc& scene);
+// an image is missing or unreadable. With `used` (by TextureId), images no placed material
+// refers to are never opened (their CompiledTexture has no image and is never evaluated).
+std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used = nullptr);
 
 }  // namespace rts::render

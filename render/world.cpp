@@ -29,7 +29,7 @@ double linear_norm(const Mat4& m) {
 
 }  // namespace
 
-World::World(const SceneDesc& scene, const FlatScene& flat) {
+World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   meshes_.resize(scene.meshes.size());
   std::vector<Instance> bounded, unbounded;
   std::vector<AABB> boxes;
@@ -98,7 +98,9 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
     bounded.push_back(inst);
     boxes.push_back(world_bounds);
   }
-  bvh_ = build_bvh(boxes);
+  bounded_count_ = bounded.size();
+  use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
+  if (use_bvh_) bvh_ = build_bvh(boxes);
   instances_ = std::move(bounded);
   for (Instance& p : unbounded) {
     planes_.push_back(static_cast<uint32_t>(instances_.size()));
@@ -175,8 +177,13 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
     best_instance = i;
     return true;
   };
-  bool found = traverse_bvh<false>(bvh_, ray, ray_t,
-                                   [&](uint32_t slot, Interval& t_range) { return closer(bvh_.order[slot], t_range); });
+  bool found = false;
+  if (use_bvh_) {
+    found = traverse_bvh<false>(bvh_, ray, ray_t,
+                                [&](uint32_t slot, Interval& t_range) { return closer(bvh_.order[slot], t_range); });
+  } else {
+    for (uint32_t i = 0; i < bounded_count_; ++i) found = closer(i, ray_t) || found;
+  }
   for (uint32_t i : planes_) found = closer(i, ray_t) || found;
   if (!found) return false;
   const Instance& inst = instances_[best_instance];
@@ -222,8 +229,82 @@ bool World::occluded(const Ray& ray, Interval ray_t, bool opaque_only) const {
   };
   for (uint32_t i : planes_)
     if (blocks(i, ray_t)) return true;
+  if (!use_bvh_) {
+    for (uint32_t i = 0; i < bounded_count_; ++i)
+      if (blocks(i, ray_t)) return true;
+    return false;
+  }
   return traverse_bvh<true>(bvh_, ray, ray_t,
                             [&](uint32_t slot, Interval& t_range) { return blocks(bvh_.order[slot], t_range); });
+}
+
+bool World::shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& out) const {
+  out.count = 0;
+  // Instance i on the segment: an opaque one blocks; a transmissive one adds each of its own
+  // crossings (a sphere has two), stepping past each by the same offset as a closest-hit walk.
+  auto visit = [&](uint32_t i) {
+    const Instance& inst = instances_[i];
+    if (!inst.transmissive) return occluded_instance(inst, ray, ray_t);
+    Interval range = ray_t;
+    SurfaceHit h;
+    while (intersect_instance(inst, ray, range, h)) {
+      if (out.count == tol::kMaxShadowSurfaces) return true;  // too many: treated as blocked
+      out.t[out.count] = h.t;
+      out.instance[out.count] = i;
+      ++out.count;
+      Vec3 p = ray.at(h.t);
+      range.min = h.t + tol::kRayOffsetAbsolute + tol::kRayOffsetRelative * std::max(max_abs_component(p), h.t);
+    }
+    return false;
+  };
+  for (uint32_t i : planes_)
+    if (visit(i)) return true;
+  if (!use_bvh_) {
+    for (uint32_t i = 0; i < bounded_count_; ++i)
+      if (visit(i)) return true;
+    return false;
+  }
+  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t slot, Interval&) { return visit(bvh_.order[slot]); });
+}
+
+std::size_t World::bvh_nodes() const {
+  std::size_t n = bvh_.nodes.size();
+  std::vector<const MeshAccel*> distinct;
+  for (const auto& m : meshes_)
+    if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {
+      distinct.push_back(m.get());
+      n += m->bvh_nodes();
+    }
+  return n;
+}
+
+std::size_t World::triangle_count() const {
+  std::size_t n = 0;
+  std::vector<const MeshAccel*> distinct;
+  for (const auto& m : meshes_)
+    if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {
+      distinct.push_back(m.get());
+      n += m->triangle_count();
+    }
+  return n;
+}
+
+WorldMemory World::memory() const {
+  WorldMemory w;
+  w.instances = instances_.capacity() * sizeof(Instance) + planes_.capacity() * sizeof(uint32_t);
+  w.transforms = transforms_.capacity() * sizeof(InstanceTransform);
+  w.shapes = spheres_.capacity() * sizeof(Sphere) + plane_shapes_.capacity() * sizeof(Plane) +
+             triangles_.capacity() * sizeof(Triangle) + boxes_.capacity() * sizeof(Box) +
+             cylinders_.capacity() * sizeof(Cylinder) + cones_.capacity() * sizeof(Cone) +
+             discs_.capacity() * sizeof(Disc);
+  w.bvh = bvh_.nodes.capacity() * sizeof(BVHNode) + bvh_.order.capacity() * sizeof(uint32_t);
+  std::vector<const MeshAccel*> distinct;
+  for (const auto& m : meshes_)
+    if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {
+      distinct.push_back(m.get());
+      w.meshes += m->memory_bytes();
+    }
+  return w;
 }
 
 }  // namespace rts::render

@@ -11,6 +11,7 @@
 #include "render/mesh_accel.hpp"
 #include "render/scene.hpp"
 #include "render/surface_hit.hpp"
+#include "render/tolerances.hpp"
 
 namespace rts::render {
 
@@ -46,15 +47,41 @@ struct WorldHit {
   bool has_uv = false;
 };
 
+// A few bounded objects are tested one after another: a BVH over them is one leaf holding the
+// same objects behind an extra box test per ray.
+inline constexpr std::size_t kMaxObjectsWithoutBvh = kBvhMaxLeafSize;
+
+// The transmissive surfaces a shadow ray crosses, in no particular order (see shadow_crossings).
+struct ShadowCrossings {
+  int count = 0;
+  double t[tol::kMaxShadowSurfaces];
+  uint32_t instance[tol::kMaxShadowSurfaces];
+};
+
+// Bytes held by each part of the world, for --stats.
+struct WorldMemory {
+  std::size_t instances = 0, transforms = 0, shapes = 0, bvh = 0, meshes = 0;
+};
+
 class World {
  public:
-  World(const SceneDesc& scene, const FlatScene& flat);
+  // `specialize`: a scene of at most kMaxObjectsWithoutBvh bounded objects gets no BVH.
+  World(const SceneDesc& scene, const FlatScene& flat, bool specialize = true);
 
   // Closest hit; with `transmissive_only`, opaque instances are ignored.
   bool intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only = false) const;
   // Any hit (early exit); with `opaque_only`, transmissive instances are ignored.
   bool occluded(const Ray& ray, Interval ray_t, bool opaque_only = false) const;
   bool has_transmissive() const { return has_transmissive_; }
+  // One any-hit traversal of [ray_t]: true (blocked) at the first opaque hit, or when the ray
+  // crosses tol::kMaxShadowSurfaces transmissive surfaces or more; otherwise every crossing of
+  // a transmissive surface is in `out` (each instance is re-tested only along its own
+  // crossings, instead of re-walking the whole scene with closest-hit steps).
+  bool shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& out) const;
+  bool uses_bvh() const { return use_bvh_; }
+  std::size_t bvh_nodes() const;         // top level plus each distinct mesh BVH
+  std::size_t triangle_count() const;    // in each distinct mesh
+  WorldMemory memory() const;
   // The hit's texture coordinates (spheres' are computed here, on demand).
   glm::dvec2 surface_uv(const WorldHit& hit) const;
 
@@ -86,6 +113,8 @@ class World {
   std::vector<InstanceTransform> transforms_;
   std::vector<uint32_t> planes_;     // instance indices of unbounded planes
   BVH bvh_;
+  std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded
+  bool use_bvh_ = true;
   bool has_transmissive_ = false;
 };
 

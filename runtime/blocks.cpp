@@ -130,9 +130,21 @@ Value Interpreter::define_object(const std::string& kind, SourceLoc loc, const s
 }
 
 Value Interpreter::define_object(std::shared_ptr<ObjectValue> obj) {
-  Value v = define_object(*obj->kind, obj->loc, obj->props);
+  // A mesh is built when first placed (see realize_object): one never placed costs nothing and
+  // its file is never opened. Other shapes and lights are cheap and built (so checked) now.
+  if (*obj->kind != "mesh") obj->built_id = define_object(*obj->kind, obj->loc, obj->props).id;
+  Value v;
+  v.type = Type::Object;
+  v.id = render::kNoId;  // the node is the definition's built_id
   v.ref = std::move(obj);
   return v;
+}
+
+uint32_t Interpreter::realize_object(const Value& object) {
+  if (object.id != render::kNoId || !object.ref) return object.id;
+  const ObjectValue& def = static_cast<const ObjectValue&>(*object.ref).definition();
+  if (def.built_id == render::kNoId) def.built_id = define_object(*def.kind, def.loc, def.props).id;
+  return def.built_id;
 }
 
 Value Interpreter::eval_with(const ast::WithExpr& e) {
@@ -335,7 +347,7 @@ void Interpreter::place(const Value& object, SourceLoc loc) {
   if (++placements_ > options_.limits.max_objects)
     fail(loc,
          fmt::format("more than {} objects placed (raise the limit with --max-objects)", options_.limits.max_objects));
-  render::Child c{object.id, object_transform(object), ref(loc)};
+  render::Child c{realize_object(object), object_transform(object), ref(loc)};
   if (target_)
     target_->push_back(c);
   else

@@ -81,6 +81,7 @@ EvalResult evaluate_source(SourceManager& sources, const SourceFile& file, const
     runtime::Interpreter interp(sources, options, warnings);
     interp.run(file);
     result.scene = interp.finish();
+    result.parse_seconds = interp.parse_seconds();
   });
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -40,11 +40,13 @@ struct EvalOptions {
   std::vector<std::string> include_paths;  // -I, searched after the including file's folder
   std::vector<Define> defines;             // -D
   EvalLimits limits;
+  bool warn_unused = false;                // `rts check`: warn about unused declarations
 };
 
 struct EvalResult {
   render::SceneDesc scene;
   double seconds = 0.0;  // wall-clock time of parsing + evaluation
+  double parse_seconds = 0.0;  // the parsing part of `seconds` (every file, included ones too)
 };
 
 // Parses and evaluates the scene file at `path` (loaded through `sources`, which must outlive

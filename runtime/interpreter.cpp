@@ -1,6 +1,7 @@
 // Statements, names, expressions, macro calls and includes.
 #include "runtime/interpreter.hpp"
 
+#include <chrono>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -69,7 +70,7 @@ LanguageError Interpreter::from_scene_error(const render::SceneError& e) const {
 void Interpreter::run(const SourceFile& main) {
   try {
     files_by_name_[main.path().c_str()] = &main;
-    programs_.push_back(parse(main));
+    programs_.push_back(timed_parse(main));
     main_program_ = &programs_.back();
     std::error_code ec;
     include_chain_.push_back(fs::weakly_canonical(main.path(), ec).string());
@@ -81,7 +82,7 @@ void Interpreter::run(const SourceFile& main) {
       const SourceFile* f =
           sources_.add(fmt::format("<define {}>", d.name), fmt::format("let {} = {}", d.name, d.value));
       files_by_name_[f->path().c_str()] = f;
-      programs_.push_back(parse(*f));
+      programs_.push_back(timed_parse(*f));
       const ast::Program& p = programs_.back();
       if (p.stmts.size() != 1 || p.stmts[0]->kind != ast::StmtKind::Let)
         fail(SourceLoc{f, 1, 1}, fmt::format("define '{}={}' is not a single value", d.name, d.value));
@@ -97,6 +98,7 @@ void Interpreter::run(const SourceFile& main) {
   } catch (const render::SceneError& e) {
     throw from_scene_error(e);
   }
+  if (options_.warn_unused) warn_unused(main);
   for (const DefineExpr& d : defines_)
     if (!d.used)
       warnings_.warning(SourceLoc{&main, 0, 0},
@@ -175,7 +177,7 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
       fail(s.loc, fmt::format("cannot read include file '{}': {}", s.path, e.message));
     }
     files_by_name_[file->path().c_str()] = file;
-    programs_.push_back(parse(*file));
+    programs_.push_back(timed_parse(*file));
     program = &programs_.back();
     parsed_[canonical] = program;
   }
@@ -189,6 +191,13 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
 // ---------------------------------------------------------------------------------------
 // Scopes and names
 // ---------------------------------------------------------------------------------------
+
+ast::Program Interpreter::timed_parse(const SourceFile& file) {
+  auto start = std::chrono::steady_clock::now();
+  ast::Program p = parse(file);
+  parse_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return p;
+}
 
 void Interpreter::declare(ast::Symbol name, Value value, SourceLoc loc) {
   for (std::size_t i = scopes_.back(); i < bindings_.size(); ++i) {
@@ -205,11 +214,63 @@ void Interpreter::declare(ast::Symbol name, Value value, SourceLoc loc) {
 
 Binding* Interpreter::lookup(ast::Symbol name) {
   for (std::size_t i = bindings_.size(); i-- > frame_base_;)
-    if (bindings_[i].name == name) return &bindings_[i];
+    if (bindings_[i].name == name) {
+      bindings_[i].used = true;
+      return &bindings_[i];
+    }
   if (frame_base_ > 0)
     for (std::size_t i = globals_end(); i-- > 0;)
-      if (bindings_[i].name == name) return &bindings_[i];
+      if (bindings_[i].name == name) {
+        bindings_[i].used = true;
+        return &bindings_[i];
+      }
   return nullptr;
+}
+
+namespace {
+// The file an unused declaration names ("file" of a mesh or image_texture), or "".
+std::string declared_file(const std::vector<Property>& props) {
+  for (const Property& p : props)
+    if (*p.name == "file" && p.value.type == Type::String) return as_string(p.value);
+  return {};
+}
+}  // namespace
+
+void Interpreter::warn_unused(const SourceFile& main) {
+  for (std::size_t i = 0; i < globals_end(); ++i) {
+    const Binding& b = bindings_[i];
+    if (b.used || b.loc.file != &main) continue;
+    std::string what, file;
+    bool built = false;  // shapes and lights other than meshes are built (and checked) when declared
+    switch (b.value.type) {
+      case Type::Material: what = "material"; break;
+      case Type::Texture:
+        what = "texture";
+        file = declared_file(as_record(b.value).props);
+        break;
+      case Type::Macro: what = "macro"; break;
+      case Type::Object: {
+        what = "object";
+        if (!b.value.ref) break;
+        const ObjectValue& def = static_cast<const ObjectValue&>(*b.value.ref).definition();
+        if (def.kind) what = *def.kind;
+        built = def.built_id != render::kNoId;
+        file = declared_file(def.props);
+        break;
+      }
+      default: break;
+    }
+    if (what.empty()) continue;
+    const char* why = built ? "" : b.value.type == Type::Macro ? " (so it never runs)" : " (so it is not built)";
+    std::string msg = fmt::format("{} '{}' is declared but never used{}", what, *b.name, why);
+    if (!file.empty()) {
+      std::error_code ec;
+      fs::path path(file);  // relative to the declaring file, as the builder resolves it
+      if (path.is_relative()) path = fs::path(main.path()).parent_path() / path;
+      if (!fs::exists(path, ec)) msg += fmt::format("; its file '{}' does not exist", file);
+    }
+    warnings_.warning(b.loc, msg);
+  }
 }
 
 uint32_t Interpreter::find_builtin(ast::Symbol name) {

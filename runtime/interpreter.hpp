@@ -35,6 +35,7 @@ struct Binding {
   ast::Symbol name;
   Value value;
   SourceLoc loc;  // where it was declared, for "already defined" notes
+  bool used = false;  // looked up at least once (for the unused-declaration warnings)
 };
 
 // One active macro call or include, for error notes.
@@ -68,6 +69,7 @@ class Interpreter {
   // Runs the main file; throws LanguageError (with notes) on any error.
   void run(const SourceFile& main);
   render::SceneDesc finish() { return builder_.finish(); }
+  double parse_seconds() const { return parse_seconds_; }  // of every file parsed
 
   // ---- services for builtins and blocks ----
   [[noreturn]] void fail(SourceLoc loc, std::string message) const;
@@ -83,6 +85,7 @@ class Interpreter {
 
  private:
   // statements (interpreter.cpp)
+  ast::Program timed_parse(const SourceFile& file);
   void run_program(const ast::Program& program, bool is_main);
   Flow exec_list(const ast::StmtList& stmts);
   Flow exec_body(const ast::Body& body);
@@ -93,6 +96,9 @@ class Interpreter {
   Flow exec_while(const ast::WhileStmt& s);
   void exec_include(const ast::IncludeStmt& s);
   void count_iteration(SourceLoc loc);
+  // Warns about each material, texture, object and macro declared at the top level of the
+  // main file and never named again (options_.warn_unused).
+  void warn_unused(const SourceFile& main);
 
   // scopes
   void push_scope() { scopes_.push_back(bindings_.size()); }
@@ -128,6 +134,8 @@ class Interpreter {
   // returned keeps the block, for `with`.
   Value define_object(std::shared_ptr<ObjectValue> obj);
   Value define_object(const std::string& kind, SourceLoc loc, const std::vector<Property>& props);
+  // The scene node of an object value, building its definition on first placement.
+  uint32_t realize_object(const Value& object);
   Value eval_transform(const ast::TransformExpr& e);
   void collect_properties(const ast::BlockBody& body, std::vector<Property>& props, bool allow_placement);
   render::ParamSet to_params(const std::string& kind, SourceLoc loc, const std::vector<Property>& props);
@@ -148,6 +156,7 @@ class Interpreter {
   bool in_macro_ = false;    // `return` allowed
   Value return_value_;
 
+  double parse_seconds_ = 0.0;
   uint64_t iterations_ = 0;
   std::size_t placements_ = 0;
 

@@ -102,6 +102,12 @@ render::Mat4 object_transform(const Value& v) {
   return v.ref ? static_cast<const ObjectValue&>(*v.ref).transform : render::Mat4(1.0);
 }
 
+const void* object_identity(const Value& v) {
+  // Built objects are their node; a definition not built yet is its defining block.
+  if (v.id == render::kNoId && v.ref) return &static_cast<const ObjectValue&>(*v.ref).definition();
+  return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(v.id) + 1);
+}
+
 namespace {
 std::string num_text(double x) {
   if (x == 0.0) x = 0.0;  // no "-0"
@@ -140,6 +146,11 @@ std::string to_text(const Value& v, bool quote_strings) {
     case Type::Texture:
       return fmt::format("<texture {}>", *as_record(v).kind);
     case Type::Object:
+      if (v.id == render::kNoId && v.ref) {  // a definition not placed (so not built) yet
+        const ObjectValue& def = static_cast<const ObjectValue&>(*v.ref).definition();
+        if (def.built_id != render::kNoId) return fmt::format("<object {}>", def.built_id);
+        if (def.kind) return fmt::format("<object {}>", *def.kind);
+      }
       return fmt::format("<object {}>", v.id);
     case Type::Transform:
       return "<transform>";
@@ -177,7 +188,7 @@ bool equal(const Value& a, const Value& b) {
       return true;
     }
     case Type::Object:
-      return a.id == b.id && object_transform(a) == object_transform(b);
+      return object_identity(a) == object_identity(b) && object_transform(a) == object_transform(b);
     case Type::Builtin:
       return a.id == b.id;
     default:

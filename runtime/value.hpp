@@ -126,6 +126,9 @@ struct ObjectValue : HeapValue {
   std::vector<Property> props;
   SourceLoc loc;
   std::shared_ptr<const ObjectValue> defined_by;  // a transformed copy: the object holding the block
+  // The scene node this definition became (meshes: when first placed; kNoId until then, so an
+  // unused `let m = mesh { file = "big.obj" }` never opens the file).
+  mutable uint32_t built_id = render::kNoId;
   const ObjectValue& definition() const { return defined_by ? *defined_by : *this; }
 };
 
@@ -157,6 +160,8 @@ inline const ast::MacroStmt* as_macro(const Value& v) { return static_cast<const
 uint32_t nesting_depth(const Value& v);
 // An object's transform (identity when it has none).
 render::Mat4 object_transform(const Value& v);
+// What `==` compares for objects: the node, or for a definition not built yet its block.
+const void* object_identity(const Value& v);
 // The object value holding the shape or light block an object was defined by (null for a
 // group).
 inline const ObjectValue* object_definition(const Value& v) {

@@ -15,7 +15,9 @@
 
 using namespace rts;
 using namespace rts::render;
+using rts::test::eval_diagnostic;
 using rts::test::eval_text;
+using rts::test::eval_warnings;
 
 namespace {
 
@@ -345,4 +347,40 @@ TEST_CASE("check's summary counts placed instances through groups and bounds the
   REQUIRE(sum.has_bounds);
   CHECK(sum.bounds_min == glm::dvec3(-2, -2, -2));  // the scaled pair: spheres of radius 2
   CHECK(sum.bounds_max == glm::dvec3(10, 11, 2));   // <8,0,0> + 2, and <4,10,0> + 1
+}
+
+TEST_CASE("a mesh is built when first placed: an unused one never opens its file", "[eval][lazy]") {
+  // The OBJ does not exist: unused, that is no error and no mesh is built.
+  render::SceneDesc unused = eval_text("let m = mesh { file = \"no-such-mesh.obj\" }\nsphere { radius = 1 }");
+  CHECK(unused.meshes.empty());
+  CHECK(unused.shapes.size() == 1);
+  // Placed, the same declaration is the usual error, located at the file property.
+  CHECK(eval_diagnostic("let m = mesh { file = \"no-such-mesh.obj\" }\nm").message.find("no-such-mesh.obj") !=
+        std::string::npos);
+  // Placed twice (and once transformed), an inline mesh is built once.
+  render::SceneDesc placed = eval_text(
+      "let m = mesh { vertices = [<0, 0, 0>, <1, 0, 0>, <0, 1, 0>]  faces = [<0, 1, 2>] }\n"
+      "m\nm translate <1, 0, 0>\nlet n = m with { smooth = false }\n");
+  CHECK(placed.meshes.size() == 1);
+  CHECK(placed.roots.size() == 2);
+  CHECK(placed.roots[0].node == placed.roots[1].node);
+}
+
+TEST_CASE("check warns about each unused top-level declaration, with its location", "[eval][lazy]") {
+  EvalOptions opts;
+  opts.warn_unused = true;
+  std::string w = eval_warnings(
+      "let used = material { }\nlet spare = material { }\nlet t = checker(rgb(1), rgb(0), 1)\n"
+      "macro unused_macro() { }\nlet big = mesh { file = \"missing.obj\" }\nlet n = 3\n"
+      "sphere { radius = 1  material = used }\n",
+      opts);
+  CHECK(w.find("test.rts:2:5: warning: material 'spare' is declared but never used") != std::string::npos);
+  CHECK(w.find("test.rts:3:5: warning: texture 't'") != std::string::npos);
+  CHECK(w.find("macro 'unused_macro' is declared but never used (so it never runs)") != std::string::npos);
+  CHECK(w.find("mesh 'big' is declared but never used (so it is not built); its file 'missing.obj' does not exist") !=
+        std::string::npos);
+  CHECK(w.find("'used'") == std::string::npos);  // used
+  CHECK(w.find("'n'") == std::string::npos);     // numbers are not declarations of features
+  // Without the option (rts render, rts eval) nothing is said.
+  CHECK(eval_warnings("let spare = material { }\n", EvalOptions{}).empty());
 }
