@@ -289,3 +289,21 @@ TEST_CASE("a time limit keeps every pixel's first pass and reports the stop", "[
   CHECK(r.stats.error.max_spp < 4096);
   for (float v : r.color.rgb) CHECK(v > 0.0f);
 }
+
+TEST_CASE("adaptive and progressive images are identical whatever the thread count", "[convergence]") {
+  SceneDesc s = plane_under_square_light(256, SamplerKind::Stratified);
+  RenderOptions o;
+  o.target_error = 0.004;
+  o.threads = 1;
+  RenderResult one = render(s, o);
+  o.threads = 3;
+  RenderResult three = render(s, o);
+  CHECK(one.color.rgb == three.color.rgb);
+  CHECK(one.stats.pixels.taken == three.stats.pixels.taken);
+  // Progressive passes (a generous time limit) give the same image as one pass.
+  RenderOptions plain, timed;
+  plain.threads = timed.threads = 2;
+  timed.time_limit = 1e6;
+  s.settings.samples = 12;
+  CHECK(render(s, plain).color.rgb == render(s, timed).color.rgb);
+}
