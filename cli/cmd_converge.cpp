@@ -3,6 +3,7 @@
 // wall time, RMSE, relative MSE, PSNR and the render's own error estimate per run; writes
 // convergence.csv and log-log SVG plots, prints fitted slopes, an equal-time table and, with
 // --adaptive, the time adaptive sampling saves at equal measured error.
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -45,9 +46,17 @@ struct Run {
   int spp = 0;          // samples per pixel asked for (the cap when adaptive)
   double mean_spp = 0;  // taken, on average
   double seconds = 0;   // render wall time (after the scene is built)
+  double cpu_seconds = 0;  // process CPU time (all threads) of the whole render call
   render::ImageError measured;
   render::ErrorEstimate estimate;
 };
+
+double cpu_seconds_now() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path);
@@ -56,13 +65,13 @@ void write_text(const fs::path& path, const std::string& text) {
 }
 
 std::string csv(const std::vector<Run>& runs) {
-  std::string s = "sampler,spp,mean_spp,seconds,rmse,rel_mse,psnr,est_rmse,est_rel_mse,est_over_measured\n";
+  std::string s = "sampler,spp,mean_spp,seconds,cpu_seconds,rmse,rel_mse,psnr,est_rmse,est_rel_mse,est_over_measured\n";
   for (const Run& r : runs) {
     std::string est = r.estimate.known ? fmt::format("{:.6g},{:.6g},{:.4f}", r.estimate.rmse, r.estimate.rel_mse,
                                                      r.estimate.rmse / r.measured.rmse)
                                        : "n/a,n/a,n/a";
-    s += fmt::format("{},{},{:.2f},{:.6f},{:.6g},{:.6g},{:.3f},{}\n", r.sampler, r.spp, r.mean_spp, r.seconds,
-                     r.measured.rmse, r.measured.rel_mse, r.measured.psnr, est);
+    s += fmt::format("{},{},{:.2f},{:.6f},{:.4f},{:.6g},{:.6g},{:.3f},{}\n", r.sampler, r.spp, r.mean_spp, r.seconds,
+                     r.cpu_seconds, r.measured.rmse, r.measured.rel_mse, r.measured.psnr, est);
   }
   return s;
 }
@@ -169,8 +178,9 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
 
     std::vector<Run> runs;
     auto record = [&](const std::string& label, const render::RenderOptions& o) {
+      double cpu_start = cpu_seconds_now();
       render::RenderResult r = render::render(scene, o);
-      Run run{label, *o.samples, r.stats.error.mean_spp, r.stats.render_seconds,
+      Run run{label, *o.samples, r.stats.error.mean_spp, r.stats.render_seconds, cpu_seconds_now() - cpu_start,
               render::image_error(r.color, reference), r.stats.error};
       std::cerr << fmt::format("converge: {:>10} {:>5} spp ({:7.1f} taken) {:8.3f}s  rmse {:.4g}  est. {}\n", label,
                                run.spp, run.mean_spp, run.seconds, run.measured.rmse,

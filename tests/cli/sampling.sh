@@ -39,7 +39,7 @@ expect_exit 0 "converge" -- "$RTS" converge "$TMP/soft.rts" -o "$TMP/conv" --max
 for f in convergence.csv convergence.svg convergence-spp.svg reference.pfm; do
   [[ -s "$TMP/conv/$f" ]] || { echo "FAIL: converge did not write $f"; FAILS=$((FAILS + 1)); }
 done
-expect_grep "$TMP/conv/convergence.csv" "^sampler,spp,mean_spp,seconds,rmse,rel_mse,psnr,est_rmse" "csv header"
+expect_grep "$TMP/conv/convergence.csv" "^sampler,spp,mean_spp,seconds,cpu_seconds,rmse,rel_mse,psnr,est_rmse" "csv header"
 [[ $(grep -c '^random,' "$TMP/conv/convergence.csv") == 3 ]] || { echo "FAIL: 3 random rows (1,2,4 spp) expected"; FAILS=$((FAILS + 1)); }
 expect_grep "$TMP/conv/convergence.csv" "^sobol,1,.*,n/a,n/a,n/a$" "1 spp has no estimate in the csv"
 expect_grep "$TMP/out" "fitted slopes" "slopes printed"
