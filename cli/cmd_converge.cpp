@@ -36,6 +36,7 @@ struct ConvergeCommand {
   int reference_samples = 0, min_samples = 1, max_samples = 256;
   std::vector<std::string> samplers{"random", "stratified", "sobol"};
   bool adaptive = false;
+  std::string clock = "wall";  // or "cpu": what "time" means in plots, slopes and tables
   int threads = 0, width = 0, height = 0;
   uint64_t seed = 0;
   EvalOptions eval;
@@ -95,16 +96,17 @@ std::vector<double> rmse_column(const std::vector<const Run*>& rs) {
 }
 
 LogLogPlot make_plot(const std::string& scene, const std::vector<Run>& runs, const std::vector<std::string>& names,
-                     bool by_time) {
+                     bool by_time, double Run::*time) {
   LogLogPlot plot;
-  plot.title = fmt::format("{}: RMSE against {}", scene, by_time ? "render time" : "samples per pixel");
-  plot.x_label = by_time ? "render wall time (s)" : "samples per pixel";
+  const bool cpu = time == &Run::cpu_seconds;
+  plot.title = fmt::format("{}: RMSE against {}", scene, by_time ? (cpu ? "CPU time" : "render time") : "samples per pixel");
+  plot.x_label = by_time ? (cpu ? "render CPU time, all threads (s)" : "render wall time (s)") : "samples per pixel";
   plot.y_label = "RMSE (linear RGB)";
   double gx = 0, gy = 0, xmin = 1e300, xmax = 0;
   for (const std::string& name : names) {
     std::vector<const Run*> rs = runs_of(runs, name);
     if (rs.empty()) continue;
-    PlotSeries s{name, by_time ? column(rs, &Run::seconds) : column(rs, &Run::mean_spp), rmse_column(rs)};
+    PlotSeries s{name, by_time ? column(rs, time) : column(rs, &Run::mean_spp), rmse_column(rs)};
     if (gx == 0 && s.x[0] > 0) gx = s.x[0], gy = s.y[0];
     for (double x : s.x)
       if (x > 0) xmin = std::min(xmin, x), xmax = std::max(xmax, x);
@@ -208,7 +210,7 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
       for (const Run* u : uniform) targets.push_back(*u);
       if (targets.empty()) std::cerr << "converge: --adaptive needs the sobol sampler in --samplers\n";
       for (const Run& u : targets) {
-        if (u.spp < 8) continue;
+        if (u.spp < 16) continue;  // below, the first adaptive pass alone already has 8 spp
         render::RenderOptions o = base;
         o.samples = 8 * u.spp;
         o.sampler = render::SamplerKind::Sobol;
@@ -219,8 +221,9 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
     }
 
     write_text(dir / "convergence.csv", csv(runs));
-    write_text(dir / "convergence.svg", render_svg(make_plot(name, runs, names, true)));
-    write_text(dir / "convergence-spp.svg", render_svg(make_plot(name, runs, names, false)));
+    double Run::*time = c.clock == "cpu" ? &Run::cpu_seconds : &Run::seconds;
+    write_text(dir / "convergence.svg", render_svg(make_plot(name, runs, names, true, time)));
+    write_text(dir / "convergence-spp.svg", render_svg(make_plot(name, runs, names, false, time)));
 
     std::cout << fmt::format("{}: fitted slopes of log RMSE (slope -0.5: independent samples)\n", name);
     std::cout << fmt::format("  {:<11} {:>9} {:>9} {:>22}\n", "sampler", "vs time", "vs spp", "est./measured rmse");
@@ -233,21 +236,22 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
           lo = std::min(lo, q), hi = std::max(hi, q);
         }
       std::cout << fmt::format("  {:<11} {:>9.3f} {:>9.3f} {:>22}\n", s,
-                               render::log_log_slope(column(rs, &Run::seconds), rmse_column(rs)),
+                               render::log_log_slope(column(rs, time), rmse_column(rs)),
                                render::log_log_slope(column(rs, &Run::mean_spp), rmse_column(rs)),
                                hi > 0 ? fmt::format("{:.2f} .. {:.2f}", lo, hi) : "n/a");
     }
     // Equal time: each sampler's RMSE interpolated at the times the last sampler took.
     std::vector<const Run*> base_runs = runs_of(runs, c.samplers.back());
-    std::cout << "equal-time RMSE (log-log interpolation; '-' outside a sampler's measured range)\n";
+    std::cout << fmt::format("equal-time RMSE at {} seconds (log-log interpolation; '-' outside a sampler's "
+                             "measured range)\n", c.clock == "cpu" ? "CPU" : "wall");
     std::cout << fmt::format("  {:>10}", "seconds");
     for (const std::string& s : names) std::cout << fmt::format(" {:>11}", s);
     std::cout << "\n";
     for (const Run* b : base_runs) {
-      std::cout << fmt::format("  {:>10.4f}", b->seconds);
+      std::cout << fmt::format("  {:>10.4f}", b->*time);
       for (const std::string& s : names) {
         std::vector<const Run*> rs = runs_of(runs, s);
-        double e = render::log_log_interpolate(column(rs, &Run::seconds), rmse_column(rs), b->seconds);
+        double e = render::log_log_interpolate(column(rs, time), rmse_column(rs), b->*time);
         std::cout << (std::isnan(e) ? fmt::format(" {:>11}", "-") : fmt::format(" {:>11.4g}", e));
       }
       std::cout << "\n";
@@ -256,10 +260,10 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
       std::vector<const Run*> uniform = runs_of(runs, "sobol");
       std::cout << "adaptive against uniform sobol at equal measured RMSE\n";
       for (const Run* a : runs_of(runs, "adaptive")) {
-        double t = render::log_log_interpolate(rmse_column(uniform), column(uniform, &Run::seconds), a->measured.rmse);
-        std::cout << fmt::format("  rmse {:.4g}: adaptive {:.3f}s, uniform {}{}\n", a->measured.rmse, a->seconds,
+        double t = render::log_log_interpolate(rmse_column(uniform), column(uniform, time), a->measured.rmse);
+        std::cout << fmt::format("  rmse {:.4g}: adaptive {:.3f}s, uniform {}{}\n", a->measured.rmse, a->*time,
                                  std::isnan(t) ? "outside the measured range" : fmt::format("{:.3f}s", t),
-                                 std::isnan(t) ? "" : fmt::format(" -> {:.2f}x faster", t / a->seconds));
+                                 std::isnan(t) ? "" : fmt::format(" -> {:.2f}x faster", t / (a->*time)));
       }
     }
     std::cerr << fmt::format("converge: wrote {}/convergence.csv, convergence.svg, convergence-spp.svg\n",
@@ -287,6 +291,9 @@ void add_converge_command(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--samplers", c->samplers, "Samplers to compare (default: random,stratified,sobol)")
       ->delimiter(',')
       ->check(CLI::IsMember({"random", "stratified", "sobol"}));
+  cmd->add_option("--clock", c->clock, "Time axis of plots, slopes and tables: wall (default) or cpu (all threads' "
+                  "CPU time: steadier on a shared machine)")
+      ->check(CLI::IsMember({"wall", "cpu"}));
   cmd->add_flag("--adaptive", c->adaptive, "Also run adaptive sampling (sobol) to each uniform sobol run's error");
   cmd->add_option("--threads", c->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", c->seed, "Random seed (overrides the scene's settings.seed)");

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Equal-time comparison with POV-Ray 3.7 on the soft-shadow scene (docs/convergence.md):
-# POV-Ray's antialiasing threshold is swept at 2x2 and 4x4 jittered area-light samples, each
+# POV-Ray's antialiasing threshold is swept at 2x2, 4x4 and 8x8 jittered area-light samples, each
 # image measured against POV-Ray's own high-quality reference (16x16 jittered light samples,
 # 6x6 jittered supersamples per pixel). Prints: config, trace wall s, CPU s, RMSE (linear).
 set -euo pipefail
@@ -14,7 +14,7 @@ pov() {  # pov OUT.png ARGS...: renders and prints "wall_seconds cpu_seconds"
 }
 echo "reference..." >&2
 pov ref.png Declare=AREA_N=16 +A0.0 +AM1 +R6 +J >/dev/null
-for n in 2 4; do
+for n in 2 4 8; do
   for aa in none 0.3 0.1 0.03 0.01 0.0; do
     if [[ $aa == none ]]; then args=(-A); else args=(+A$aa +AM2 +R3 +J); fi
     t=$(pov run.png Declare=AREA_N=$n "${args[@]}")
