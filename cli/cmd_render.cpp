@@ -34,6 +34,8 @@ struct RenderCommand {
   int width = 0, height = 0, samples = 0, max_depth = 0;
   std::vector<std::string> aovs;
   int bits = 8;
+  std::string sampler;
+  double target_error = 0, time_limit = 0;
   bool no_progress = false;
   bool no_specialize = false;
   StatsOptions stats;
@@ -74,6 +76,17 @@ void check_output_writable(const std::string& out) {
     throw render::RenderError({}, fmt::format("cannot write '{}': it is a directory", out));
 }
 
+// The time limit or the sample cap cut an adaptive or time-limited render short.
+void print_sampling_warnings(const std::string& out, const render::RenderStats& st) {
+  const render::ErrorEstimate& e = st.error;
+  if (e.stopped_by_time)
+    std::cerr << fmt::format("rts: warning: {}: the time limit of {}s ran out; wrote the image with {:.1f} "
+                             "samples per pixel on average\n", out, e.time_limit, e.mean_spp);
+  else if (e.target_error > 0 && !e.target_reached && e.known)
+    std::cerr << fmt::format("rts: warning: {}: estimated error {:.3g} did not reach the target {} within "
+                             "{} samples per pixel (raise --samples)\n", out, e.rmse, e.target_error, st.samples);
+}
+
 int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) {
   std::string out = c.output;
   if (out.empty()) out = fs::path(c.scene).stem().string() + ".png";
@@ -106,6 +119,13 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   if (cmd.count("--samples")) opts.samples = c.samples;
   if (cmd.count("--max-depth")) opts.max_depth = c.max_depth;
   opts.aovs = c.aovs;
+  if (!c.sampler.empty()) {
+    render::SamplerKind kind = render::SamplerKind::Sobol;
+    render::parse_sampler(c.sampler, kind);  // CLI11 checked the name
+    opts.sampler = kind;
+  }
+  opts.target_error = c.target_error;
+  opts.time_limit = c.time_limit;
   opts.progress = !c.no_progress && isatty(STDERR_FILENO);
   opts.specialize = !c.no_specialize;
 
@@ -122,6 +142,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     result.stats.write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";
+    print_sampling_warnings(out, result.stats);
     report_stats(c.stats, result.stats);
   } catch (const render::RenderError& e) {
     print_error(e.where, e.what());
@@ -148,9 +169,16 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--samples", c->samples, "Samples per pixel")->check(CLI::PositiveNumber);
   cmd->add_option("--max-depth", c->max_depth, "Reflection/refraction depth")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--aov", c->aovs, "Extra images: normal,depth,albedo (written as OUT.<name>.png)")
+  cmd->add_option("--aov", c->aovs, "Extra images: normal,depth,albedo,error (written as OUT.<name>.png)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"normal", "depth", "albedo"}));
+      ->check(CLI::IsMember({"normal", "depth", "albedo", "error"}));
+  cmd->add_option("--sampler", c->sampler, "Sample placement: random, stratified or sobol")
+      ->check(CLI::IsMember({"random", "stratified", "sobol"}));
+  cmd->add_option("--target-error", c->target_error,
+                  "Adaptive: sample until the estimated RMSE is at most this (--samples is the cap)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--time-limit", c->time_limit, "Stop adding samples after this many seconds")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--bits", c->bits, "Bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
   cmd->add_flag("--no-progress", c->no_progress, "Never draw the progress bar");
   cmd->add_flag("--stats", c->stats.print, "Print features used and left out, rays, memory and time per phase");

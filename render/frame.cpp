@@ -1,6 +1,7 @@
 #include "render/frame.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <new>
@@ -16,7 +17,8 @@ AovFlags parse_aovs(const std::vector<std::string>& names) {
     if (n == "normal") f.normal = true;
     else if (n == "depth") f.depth = true;
     else if (n == "albedo") f.albedo = true;
-    else throw RenderError({}, fmt::format("unknown AOV '{}' (expected normal, depth or albedo)", n));
+    else if (n == "error") f.error = true;
+    else throw RenderError({}, fmt::format("unknown AOV '{}' (expected normal, depth, albedo or error)", n));
   }
   return f;
 }
@@ -29,11 +31,12 @@ void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, 
   frame.aovs = aovs;
   try {
     result.color = Image(width, height);
-    result.stats.pixels.mean.assign(pixels, 0.0f);
-    result.stats.pixels.variance.assign(pixels, 0.0f);
+    result.stats.pixels.variance.assign(pixels * 3, -1.0f);
+    result.stats.pixels.taken.assign(pixels, 0);
     // std::map lookups happen here, once: operator[] must not run concurrently in workers.
     if (aovs.normal) frame.normal = &(result.aovs["normal"] = Image(width, height));
     if (aovs.albedo) frame.albedo = &(result.aovs["albedo"] = Image(width, height));
+    if (aovs.error) result.aovs["error"] = Image(width, height);
     if (aovs.depth) {
       result.aovs["depth"] = Image(width, height);
       frame.depth.assign(pixels, -1.0f);
@@ -43,8 +46,8 @@ void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, 
     throw RenderError(where, fmt::format("out of memory for a {}x{} image", width, height));
   }
   frame.color = &result.color;
-  frame.mean = &result.stats.pixels.mean;
   frame.variance = &result.stats.pixels.variance;
+  frame.taken = &result.stats.pixels.taken;
 }
 
 namespace {
@@ -81,6 +84,17 @@ void finish_depth(RenderResult& result, const Frame& frame) {
     if (d >= 0.0f) v = reference > 0.0f ? std::min(1.0f, d / reference) : 1.0f;
     img.rgb[i * 3] = img.rgb[i * 3 + 1] = img.rgb[i * 3 + 2] = v;
   }
+}
+
+}  // namespace rts::render
+
+namespace rts::render {
+
+void finish_error(RenderResult& result, const Frame& frame) {
+  if (!frame.aovs.error) return;
+  Image& img = result.aovs["error"];
+  const std::vector<float>& var = *frame.variance;
+  for (std::size_t i = 0; i < var.size(); ++i) img.rgb[i] = var[i] > 0.0f ? std::sqrt(var[i]) : 0.0f;
 }
 
 }  // namespace rts::render

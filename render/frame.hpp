@@ -13,18 +13,19 @@ namespace rts::render {
 
 struct AovFlags {
   bool normal = false, depth = false, albedo = false;
-  bool any() const { return normal || depth || albedo; }
+  bool error = false;  // the per-pixel standard error, from the statistics after rendering
+  bool any() const { return normal || depth || albedo; }  // needs a first-hit ray per pixel
 };
 
-// "normal", "depth", "albedo"; anything else is a RenderError.
+// "normal", "depth", "albedo", "error"; anything else is a RenderError.
 AovFlags parse_aovs(const std::vector<std::string>& names);
 
 struct Frame {
   int width = 0, height = 0;
   AovFlags aovs;
   Image* color = nullptr;
-  std::vector<float>* mean = nullptr;      // RenderStats::pixels
-  std::vector<float>* variance = nullptr;
+  std::vector<float>* variance = nullptr;  // RenderStats::pixels
+  std::vector<uint32_t>* taken = nullptr;
   Image* normal = nullptr;                 // null unless requested
   Image* albedo = nullptr;
   std::vector<float> depth;                // raw distances, < 0 where nothing is hit
@@ -43,5 +44,9 @@ void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, 
 // an infinite plane running to the horizon cannot squash everything else to black), else the
 // 99th percentile of the (plane) depths.
 void finish_depth(RenderResult& result, const Frame& frame);
+
+// Fills result.aovs["error"] (when requested) with each pixel's standard error per channel,
+// linear; 0 where it is unknown.
+void finish_error(RenderResult& result, const Frame& frame);
 
 }  // namespace rts::render

@@ -1,6 +1,8 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -12,6 +14,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "render/adaptive.hpp"
 #include "render/camera.hpp"
 #include "render/features.hpp"
 #include "render/flatten.hpp"
@@ -38,16 +41,21 @@ double seconds_since(Clock::time_point t) {
 struct ResolvedSettings {
   int width, height, samples, max_depth;
   uint64_t seed;
+  SamplerKind sampler;
 };
 
 ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o) {
   const Settings& s = scene.settings;
   ResolvedSettings r{o.width.value_or(s.width), o.height.value_or(s.height),
                      o.samples.value_or(s.samples), o.max_depth.value_or(s.max_depth),
-                     o.seed.value_or(s.seed)};
+                     o.seed.value_or(s.seed), o.sampler.value_or(s.sampler)};
   if (r.width < 1 || r.height < 1)
     throw RenderError(s.loc, fmt::format("image size {}x{} must be at least 1x1", r.width, r.height));
   if (r.samples < 1) throw RenderError(s.loc, fmt::format("samples must be at least 1, got {}", r.samples));
+  if (!(o.target_error >= 0) || !std::isfinite(o.target_error))
+    throw RenderError({}, fmt::format("target error must be a finite number >= 0, got {}", o.target_error));
+  if (!(o.time_limit >= 0) || !std::isfinite(o.time_limit))
+    throw RenderError({}, fmt::format("time limit must be a finite number of seconds >= 0, got {}", o.time_limit));
   if (r.max_depth < 0) throw RenderError(s.loc, fmt::format("max_depth must be at least 0, got {}", r.max_depth));
   std::size_t pixels = static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
   if (pixels > o.max_pixels)
@@ -106,6 +114,61 @@ void describe(const Prepared& prep, const Frame& frame, const RenderResult& resu
   stats.memory = {{"instances", m.instances + m.transforms}, {"shapes", m.shapes}, {"bvh", m.bvh},
                   {"meshes", m.meshes}, {"textures", texture_bytes}, {"lights", prep.lights.size() * sizeof(CompiledLight)},
                   {"images", image_bytes}};
+// Independent interleaved batches per pixel (see PixelRenderer): two halves (as Dammertz et
+// al. 2010 and Cycles) keep each batch's stratification as fine as possible; four from 32 spp
+// give steadier per-pixel estimates (3 degrees of freedom instead of 1). Adaptive sampling
+// keeps two: splitting a Sobol sequence into more batches costs more error than the steadier
+// estimate saves (its planner smooths the estimates over 3x3 pixels instead).
+int batch_count(int samples, bool adaptive) {
+  if (samples < 2) return 1;
+  if (adaptive) return 2;
+  return samples >= 32 && samples % 4 == 0 ? 4 : 2;
+}
+
+// Samples per pixel at the end of each progressive pass: one per batch, then doubling.
+std::vector<uint32_t> pass_schedule(uint32_t samples, uint32_t batches) {
+  std::vector<uint32_t> goals;
+  for (uint32_t g = batches; g < samples; g *= 2) goals.push_back(g);
+  goals.push_back(samples);
+  return goals;
+}
+
+// The image-level figures from the per-pixel variances.
+void summarise_error(const Image& color, const PixelStatistics& px, ErrorEstimate& e) {
+  const std::size_t n = px.taken.size();
+  double mse = 0, rel = 0, spp = 0;
+  uint32_t lo = ~0u, hi = 0;
+  bool known = n > 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    spp += px.taken[i];
+    lo = std::min(lo, px.taken[i]);
+    hi = std::max(hi, px.taken[i]);
+    for (int c = 0; c < 3; ++c) {
+      double v = px.variance[i * 3 + c];
+      if (v < 0) {
+        known = false;
+        continue;
+      }
+      double value = color.rgb[i * 3 + c];
+      mse += v;
+      rel += v / (value * value + kRelMseEpsilon);
+    }
+  }
+  const double count = 3.0 * static_cast<double>(std::max<std::size_t>(n, 1));
+  e.known = known;
+  e.rmse = known ? std::sqrt(mse / count) : 0.0;
+  e.rel_mse = known ? rel / count : 0.0;
+  e.mean_spp = n ? spp / static_cast<double>(n) : 0.0;
+  e.min_spp = n ? lo : 0;
+  e.max_spp = hi;
+}
+
+// Mean over channels of each pixel's variance, for adaptive planning.
+std::vector<double> channel_mean_variance(const std::vector<PixelEstimate>& est) {
+  std::vector<double> v(est.size());
+  for (std::size_t i = 0; i < est.size(); ++i)
+    v[i] = std::max(0.0, (est[i].variance.x + est[i].variance.y + est[i].variance.z) / 3.0);
+  return v;
 }
 
 }  // namespace
@@ -128,7 +191,15 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   Camera camera(scene.has_camera ? scene.camera : CameraDesc{}, rs.width, rs.height);
   Integrator integrator(world, prep.lights, scene.materials, prep.textures, scene.settings, rs.max_depth,
                         options.specialize ? spec::mask_for(prep.features) : spec::kGeneric | spec::kAll);
-  PixelRenderer pixels(camera, integrator, rs.samples, rs.seed);
+  const bool adaptive = options.target_error > 0 && rs.samples >= 2;
+  const bool progressive = adaptive || (options.time_limit > 0 && rs.samples >= 2);
+  const int batches = batch_count(rs.samples, adaptive);
+  const uint32_t spp = static_cast<uint32_t>(rs.samples);
+  // Adaptive rendering starts with 4 samples per batch everywhere.
+  const uint32_t first_goal = adaptive ? std::min<uint32_t>(spp, 4u * batches) : spp;
+  SamplePattern pattern{rs.sampler, rs.seed,
+                        (first_goal + static_cast<uint32_t>(batches) - 1) / static_cast<uint32_t>(batches)};
+  PixelRenderer pixels(camera, integrator, pattern, batches, rs.samples == 1);
 
   RenderStats& stats = result.stats;
   stats.width = rs.width;
@@ -146,35 +217,124 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   stats.pixels.samples = rs.samples;
   stats.build_seconds = seconds_since(build_start);
 
+  ErrorEstimate& err = stats.error;
+  err.sampler = sampler_name(rs.sampler);
+  err.batches = batches;
+  err.target_error = options.target_error;
+  err.time_limit = options.time_limit;
+  err.method = batches >= 2 ? fmt::format("spread of {} independent interleaved batch means per pixel", batches)
+                            : "none (1 sample per pixel)";
+
   // Square tiles, handed out dynamically: each pixel's result depends only on its own
-  // coordinates, so the image is the same whichever thread renders which tile.
+  // coordinates (and, when adaptive, on the plan made between rounds from the whole image),
+  // so the image is the same whichever thread renders which tile.
   const int tiles_x = (rs.width + kTileSize - 1) / kTileSize;
   const int tiles_y = (rs.height + kTileSize - 1) / kTileSize;
   const int tile_count = tiles_x * tiles_y;
-  Progress progress(static_cast<std::size_t>(tile_count), options.progress);
   std::mutex stats_mutex;
-  auto render_tile = [&](int tile) {
-    RayCounters counters;
-    int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-    int x1 = std::min(x0 + kTileSize, rs.width), y1 = std::min(y0 + kTileSize, rs.height);
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x) pixels.render(x, y, frame, counters);
-    {
-      std::lock_guard lock(stats_mutex);
-      stats.rays += counters;
-    }
-    progress.tick();
+  auto for_each_tile = [&](auto&& per_pixel, Progress* progress, const std::atomic<bool>* stop) {
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& r) {
+        for (int tile = r.begin(); tile != r.end(); ++tile) {
+          if (stop && stop->load(std::memory_order_relaxed)) continue;
+          RayCounters counters;
+          int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+          int x1 = std::min(x0 + kTileSize, rs.width), y1 = std::min(y0 + kTileSize, rs.height);
+          for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) per_pixel(x, y, counters);
+          {
+            std::lock_guard lock(stats_mutex);
+            stats.rays += counters;
+          }
+          if (progress) progress->tick();
+        }
+      });
+    });
   };
 
   auto render_start = Clock::now();
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& r) {
-      for (int t = r.begin(); t != r.end(); ++t) render_tile(t);
-    });
-  });
-  progress.finish();
+  if (!progressive) {
+    // One pass: each pixel takes all its samples at once; nothing is kept between pixels.
+    Progress progress(static_cast<std::size_t>(tile_count), options.progress);
+    for_each_tile(
+        [&](int x, int y, RayCounters& counters) {
+          PixelAccum acc;
+          pixels.add_samples(x, y, spp, acc, counters);
+          pixels.store(x, y, acc, frame, counters);
+        },
+        &progress, nullptr);
+    progress.finish();
+    err.passes = 1;
+  } else {
+    const std::size_t count = static_cast<std::size_t>(rs.width) * static_cast<std::size_t>(rs.height);
+    std::vector<PixelAccum> accs;
+    try {
+      accs.resize(count);
+    } catch (const std::bad_alloc&) {
+      throw RenderError(scene.settings.loc, fmt::format("out of memory for the sample sums of a {}x{} image",
+                                                        rs.width, rs.height));
+    }
+    std::atomic<bool> out_of_time{false};
+    auto check_time = [&] {
+      if (options.time_limit > 0 && seconds_since(render_start) >= options.time_limit) out_of_time = true;
+      return out_of_time.load();
+    };
+    // Uniform passes; the first always completes so every pixel has a value.
+    std::vector<uint32_t> goals = adaptive ? std::vector<uint32_t>{first_goal} : pass_schedule(spp, batches);
+    Progress progress(static_cast<std::size_t>(tile_count) * goals.size(), options.progress);
+    for (std::size_t p = 0; p < goals.size(); ++p) {
+      if (p > 0 && check_time()) break;
+      const uint32_t goal = goals[p];
+      for_each_tile(
+          [&](int x, int y, RayCounters& counters) {
+            if (p > 0 && check_time()) return;
+            PixelAccum& acc = accs[frame.index(x, y)];
+            pixels.add_samples(x, y, goal - acc.taken, acc, counters);
+          },
+          &progress, nullptr);
+      ++err.passes;
+    }
+    progress.finish();
+    // Adaptive rounds: refine where the estimated error is highest until the estimate
+    // reaches the target, every pixel is at the cap, or time runs out.
+    if (adaptive) {
+      const double target_mse = options.target_error * options.target_error;
+      std::vector<PixelEstimate> est(count);
+      std::vector<uint32_t> taken(count);
+      while (!check_time()) {
+        double mse = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+          est[i] = estimate_pixel(accs[i], batches);
+          taken[i] = accs[i].taken;
+          mse += (est[i].variance.x + est[i].variance.y + est[i].variance.z) / 3.0;
+        }
+        if (mse / static_cast<double>(count) <= target_mse) {
+          err.target_reached = true;
+          break;
+        }
+        std::vector<double> var = channel_mean_variance(est);
+        AdaptiveInput in{rs.width, rs.height, &var, &taken, spp, static_cast<uint32_t>(batches), target_mse};
+        std::vector<uint32_t> add = plan_adaptive_round(in);
+        if (std::all_of(add.begin(), add.end(), [](uint32_t a) { return a == 0; })) break;
+        for_each_tile(
+            [&](int x, int y, RayCounters& counters) {
+              std::size_t i = frame.index(x, y);
+              if (add[i] == 0 || check_time()) return;
+              pixels.add_samples(x, y, add[i], accs[i], counters);
+            },
+            nullptr, nullptr);
+        ++err.passes;
+      }
+    }
+    err.stopped_by_time = out_of_time.load();
+    for_each_tile(
+        [&](int x, int y, RayCounters& counters) { pixels.store(x, y, accs[frame.index(x, y)], frame, counters); },
+        nullptr, nullptr);
+  }
   finish_depth(result, frame);
+  finish_error(result, frame);
   stats.render_seconds = seconds_since(render_start);
+  summarise_error(result.color, stats.pixels, err);
   return result;
 }
 

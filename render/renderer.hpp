@@ -17,7 +17,14 @@ struct RenderOptions {
   int threads = 0;                        // 0: all hardware threads
   std::optional<uint64_t> seed;           // overrides settings.seed
   std::optional<int> width, height, samples, max_depth;  // override settings
-  std::vector<std::string> aovs;          // any of "normal", "depth", "albedo"
+  std::vector<std::string> aovs;          // any of "normal", "depth", "albedo", "error"
+  std::optional<SamplerKind> sampler;     // overrides settings.sampler
+  // Adaptive sampling: add samples where the estimated error is highest until the image's
+  // estimated RMSE is at most this (0: off); `samples` is then the per-pixel maximum.
+  double target_error = 0;
+  // Stop adding passes after this many seconds of rendering (0: no limit); the image then
+  // holds what was rendered (every pixel has at least its first pass) and stats say so.
+  double time_limit = 0;
   bool progress = false;                  // progress bar with ETA on stderr
   bool specialize = true;                 // false: the generic path (--no-specialize)
   std::size_t max_pixels = 100'000'000;   // larger images are a RenderError

@@ -1,10 +1,12 @@
-// Counter-based random numbers: every value is a hash of (pixel x, y, sample index, seed,
-// dimension), so no state is shared between threads and the image does not depend on which
-// thread rendered which tile. `dimension` advances with each value a sample path consumes.
+// Sample generation: counter-based hashes (no shared state, so images do not depend on the
+// thread count), stratification helpers, and the three pixel samplers (random, stratified,
+// Owen-scrambled Sobol).
 #pragma once
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <string_view>
 
 #include <glm/glm.hpp>
 
@@ -61,28 +63,162 @@ inline glm::dvec2 stratified_2d(uint32_t i, uint32_t n, glm::dvec2 jitter, uint3
   return stratified_2d(i, n, square_side(n), jitter, perm_seed);
 }
 
+// ---- low-discrepancy building blocks (Burley 2020, "Practical Hash-based Owen Scrambling") ---
+
+inline uint32_t reverse_bits(uint32_t x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+  return (x >> 16) | (x << 16);
+}
+
+// A hash that only lets a bit depend on the bits below it: on bit-reversed input that is a
+// nested uniform (Owen) scramble of the digits, each subtree flipped by its own random bit.
+inline uint32_t laine_karras(uint32_t x, uint32_t seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return x;
+}
+
+inline uint32_t owen_scramble(uint32_t x, uint32_t seed) {
+  return reverse_bits(laine_karras(reverse_bits(x), seed));
+}
+
+// The first two Sobol dimensions (a (0,2)-sequence): van der Corput and the Pascal-matrix
+// dimension, as 32-bit fractions.
+inline uint32_t sobol_dim0(uint32_t i) { return reverse_bits(i); }
+inline uint32_t sobol_dim1(uint32_t i) {
+  uint32_t x = 0, v = 0x80000000u;
+  for (; i; i >>= 1, v ^= v >> 1)
+    if (i & 1) x ^= v;
+  return x;
+}
+
+// A 32-bit fraction to [0, 1), with random low bits below the 2^-32 cell so values are not
+// confined to a lattice.
+inline double fraction_to_unit(uint32_t x, uint64_t low) {
+  return (static_cast<double>(x) + to_unit(low)) * 0x1.0p-32;
+}
+
+// ---- samplers -----------------------------------------------------------------------------
+
+// How a pixel's sample points are placed: independently at random, on a jittered grid per
+// dimension pair (padded, randomly paired strata), or on an Owen-scrambled Sobol
+// (0,2)-sequence per dimension pair with a shuffled index (best at powers of two).
+enum class SamplerKind : uint8_t { Random, Stratified, Sobol };
+
+inline const char* sampler_name(SamplerKind k) {
+  switch (k) {
+    case SamplerKind::Random: return "random";
+    case SamplerKind::Stratified: return "stratified";
+    case SamplerKind::Sobol: return "sobol";
+  }
+  return "?";
+}
+
+// "random", "stratified" or "sobol"; false for anything else.
+inline bool parse_sampler(std::string_view name, SamplerKind& out) {
+  for (SamplerKind k : {SamplerKind::Random, SamplerKind::Stratified, SamplerKind::Sobol})
+    if (name == sampler_name(k)) {
+      out = k;
+      return true;
+    }
+  return false;
+}
+
+// A pixel's samples form `batches` independent interleaved sets (sample s is index s / K of
+// batch s % K), each stratified or low-discrepancy on its own with its own scrambling, so the
+// spread of the batch means measures the error of the pixel honestly whatever the sampler.
+// A stratified set holds `set_size` points; indices past it start a fresh, independent set.
+struct SamplePattern {
+  SamplerKind kind = SamplerKind::Random;
+  uint64_t seed = 0;
+  uint32_t set_size = 1;
+};
+
+// Counter-based: every value is a hash of (seed, pixel, batch, index, dimension), so no state
+// is shared between threads and the image does not depend on which thread rendered which tile.
+// `dimension` advances with each value a sample path consumes; next2() takes one 2-D pair.
 class Sampler {
  public:
+  // Independent random samples (tests and one-off draws).
   Sampler(uint32_t x, uint32_t y, uint32_t sample, uint64_t seed)
-      : key_(hash_combine(hash_combine(hash_combine(mix64(seed), x), y), sample)),
-        pixel_key_(hash_combine(hash_combine(mix64(seed), x), y)) {}
+      : Sampler(SamplePattern{SamplerKind::Random, seed, 1}, x, y, 0, sample) {}
 
-  double next() { return to_unit(hash_combine(key_, dimension_++)); }
-  glm::dvec2 next2() {
-    double a = next();
-    return {a, next()};
+  Sampler(const SamplePattern& pattern, uint32_t x, uint32_t y, uint32_t batch, uint32_t index)
+      : kind_(pattern.kind),
+        set_key_(hash_combine(hash_combine(hash_combine(mix64(pattern.seed), x), y), batch)),
+        key_(hash_combine(set_key_, index)),
+        index_(index) {
+    if (kind_ == SamplerKind::Stratified) {
+      uint32_t n = std::max<uint32_t>(1, pattern.set_size);
+      set_key_ = hash_combine(set_key_, 0x5e7000000ULL + index / n);  // one key per set
+      index_ = index % n;
+      set_size_ = n;
+      side_ = square_side(n);
+    }
   }
+
+  double next() {
+    uint32_t d = dimension_++;
+    switch (kind_) {
+      case SamplerKind::Random: break;
+      case SamplerKind::Stratified: {
+        uint64_t h = hash_combine(set_key_, d);
+        return (permute(index_, set_size_, static_cast<uint32_t>(h)) + to_unit(hash_combine(key_, d))) /
+               set_size_;
+      }
+      case SamplerKind::Sobol: {
+        uint64_t h = hash_combine(set_key_, d);
+        uint32_t i = owen_scramble(index_, static_cast<uint32_t>(h));
+        return fraction_to_unit(owen_scramble(sobol_dim0(i), static_cast<uint32_t>(h >> 32)),
+                                hash_combine(key_, d));
+      }
+    }
+    return to_unit(hash_combine(key_, d));
+  }
+
+  glm::dvec2 next2() {
+    uint32_t d = dimension_;
+    dimension_ += 2;
+    switch (kind_) {
+      case SamplerKind::Random: break;
+      case SamplerKind::Stratified: {
+        uint64_t h = hash_combine(set_key_, d);
+        glm::dvec2 jitter(to_unit(hash_combine(key_, d)), to_unit(hash_combine(key_, d + 1)));
+        // Each dimension pair visits the set's strata in its own random order.
+        uint32_t i = permute(index_, set_size_, static_cast<uint32_t>(h));
+        return stratified_2d(i, set_size_, side_, jitter, static_cast<uint32_t>(h >> 32));
+      }
+      case SamplerKind::Sobol: {
+        uint64_t h = hash_combine(set_key_, d), h2 = hash_combine(set_key_, d + 1);
+        uint32_t i = owen_scramble(index_, static_cast<uint32_t>(h));
+        return {fraction_to_unit(owen_scramble(sobol_dim0(i), static_cast<uint32_t>(h >> 32)),
+                                 hash_combine(key_, d)),
+                fraction_to_unit(owen_scramble(sobol_dim1(i), static_cast<uint32_t>(h2)),
+                                 hash_combine(key_, d + 1))};
+      }
+    }
+    return {to_unit(hash_combine(key_, d)), to_unit(hash_combine(key_, d + 1))};
+  }
+
+  // Random bits (permutation seeds), independent of the sampler kind.
   uint32_t next_bits() { return static_cast<uint32_t>(hash_combine(key_, dimension_++) >> 32); }
-  // Identical for every sample of a pixel: pairs the pixel's strata (N-rooks permutation).
-  uint32_t pixel_bits() const { return static_cast<uint32_t>(pixel_key_ >> 32); }
   uint32_t dimension() const { return dimension_; }
   // Steps over `n` values a path does not draw (a light that sends nothing), so the values
   // after them are the ones a path that drew them would get.
   void skip(uint32_t n) { dimension_ += n; }
 
  private:
-  uint64_t key_;
-  uint64_t pixel_key_;
+  SamplerKind kind_;
+  uint64_t set_key_;   // the (pixel, batch[, set]): shared by the points of one set
+  uint64_t key_;       // this sample
+  uint32_t index_;     // index within the set
+  uint32_t set_size_ = 1, side_ = 1;
   uint32_t dimension_ = 0;
 };
 

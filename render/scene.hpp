@@ -21,6 +21,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/sampler.hpp"
 #include "render/source_ref.hpp"
 
 namespace rts::render {
@@ -148,6 +149,7 @@ struct Settings {
   Color background{0.0};
   Color ambient_light{1.0};        // multiplies each material's ambient term
   uint64_t seed = 0;
+  SamplerKind sampler = SamplerKind::Sobol;  // how pixel samples are placed
   SourceRef loc;
 };
 

@@ -47,7 +47,8 @@ constexpr KindInfo kKinds[] = {
 
 // The property names each block kind accepts (for unknown-name checks and suggestions).
 const std::vector<std::string_view> kSettingsNames = {"width",      "height",        "samples", "max_depth",
-                                                      "background", "ambient_light", "seed"};
+                                                      "background", "ambient_light", "seed",
+                                                      "sampler"};
 const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
                                                     "fov",        "view_width", "aperture", "focus_distance"};
 const std::vector<std::string_view> kImageTextureNames = {"file", "mapping"};
@@ -185,6 +186,12 @@ void SceneBuilder::settings(ParamSet& ps) {
     require(ps, "seed", seed >= 0 && seed <= kMaxExactWhole && std::floor(seed) == seed,
             "a whole number from 0 to 2^53", seed);
     s.seed = static_cast<uint64_t>(seed);
+  }
+  if (ps.has("sampler")) {
+    std::string name = ps.string("sampler", "sobol");
+    if (!parse_sampler(name, s.sampler))
+      throw SceneError(loc_of(ps, "sampler"),
+                       fmt::format("unknown sampler '{}' (expected random, stratified or sobol)", name));
   }
   s.loc = ps.loc();
   ps.check_unused(kSettingsNames);

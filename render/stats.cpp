@@ -6,17 +6,10 @@
 
 namespace rts::render {
 
-double PixelStatistics::standard_error(int x, int y) const {
-  if (samples < 2) return -1.0;
-  std::size_t i = static_cast<std::size_t>(y) * width + x;
-  return std::sqrt(static_cast<double>(variance[i]) / samples);
-}
-
-double PixelStatistics::mean_standard_error() const {
-  if (samples < 2 || variance.empty()) return -1.0;
-  double sum = 0;
-  for (float v : variance) sum += std::sqrt(static_cast<double>(v) / samples);
-  return sum / static_cast<double>(variance.size());
+double PixelStatistics::standard_error(int x, int y, int c) const {
+  std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3 + c;
+  if (i >= variance.size() || variance[i] < 0.0f) return -1.0;
+  return std::sqrt(static_cast<double>(variance[i]));
 }
 
 namespace {
@@ -37,11 +30,14 @@ std::string RenderStats::summary() const {
       write_seconds, si(static_cast<double>(rays.total())), si(static_cast<double>(rays.camera)),
       si(static_cast<double>(rays.shadow)), si(static_cast<double>(rays.reflection)),
       si(static_cast<double>(rays.refraction)), si(rays_per_second()));
-  double err = pixels.mean_standard_error();
-  if (err >= 0)
-    s += fmt::format("; error ±{:.4f} (mean std. error of pixel luminance)", err);
+  s += fmt::format("; {} sampler", error.sampler);
+  if (error.min_spp != error.max_spp)
+    s += fmt::format(", {:.1f} spp on average ({}..{})", error.mean_spp, error.min_spp, error.max_spp);
+  if (error.known)
+    s += fmt::format(", est. error: rmse {:.3g}, rel. mse {:.3g} ({} batches)", error.rmse, error.rel_mse,
+                     error.batches);
   else
-    s += "; error n/a (1 spp)";
+    s += ", est. error n/a (1 sample per pixel)";
   if (rays.nan_samples > 0) s += fmt::format("; {} NaN samples replaced by black", rays.nan_samples);
   return s;
 }

@@ -121,23 +121,25 @@ TEST_CASE("ray counters and per-pixel statistics are filled in", "[render]") {
   CHECK(st.rays.reflection > 0);
   CHECK(st.rays.refraction > 0);
   CHECK(st.rays.nan_samples == 0);
-  CHECK(st.pixels.mean.size() == 40u * 30u);
-  CHECK(st.pixels.mean_standard_error() > 0.0);
+  CHECK(st.pixels.variance.size() == 40u * 30u * 3u);
+  CHECK(st.error.known);
+  CHECK(st.error.rmse > 0.0);
   CHECK(st.summary().find("40x30, 4 spp") != std::string::npos);
 }
 
-TEST_CASE("Welford statistics: a flat emitter has zero variance and its luminance as mean", "[render]") {
+TEST_CASE("error statistics: a flat background has zero variance and an exact value", "[render]") {
   SceneDesc s;
   s.settings.width = 8;
   s.settings.height = 8;
   s.settings.samples = 9;
   s.settings.background = Color(0.5, 0.5, 0.5);
   RenderResult r = render_with(s, 1);
-  for (std::size_t i = 0; i < r.stats.pixels.mean.size(); ++i) {
-    CHECK(r.stats.pixels.mean[i] == Approx(0.5));
+  for (std::size_t i = 0; i < r.stats.pixels.variance.size(); ++i) {
+    CHECK(r.color.rgb[i] == Approx(0.5));
     CHECK(r.stats.pixels.variance[i] == Approx(0.0).margin(1e-12));
   }
-  CHECK(r.stats.pixels.mean_standard_error() == Approx(0.0).margin(1e-9));
+  CHECK(r.stats.error.known);
+  CHECK(r.stats.error.rmse == Approx(0.0).margin(1e-9));
 }
 
 TEST_CASE("degenerate geometry never produces NaN pixels", "[render]") {
