@@ -108,12 +108,14 @@ void describe(const Prepared& prep, const Frame& frame, const RenderResult& resu
   for (const CompiledTexture& t : prep.textures) texture_bytes += t.image_bytes();
   std::size_t image_bytes = result.color.rgb.size() * sizeof(float);
   for (const auto& [name, image] : result.aovs) image_bytes += image.rgb.size() * sizeof(float);
-  if (frame.mean) image_bytes += frame.mean->size() * sizeof(float);
   if (frame.variance) image_bytes += frame.variance->size() * sizeof(float);
+  if (frame.taken) image_bytes += frame.taken->size() * sizeof(uint32_t);
   image_bytes += frame.depth.size() * sizeof(frame.depth[0]) + frame.depth_bounded.size();
   stats.memory = {{"instances", m.instances + m.transforms}, {"shapes", m.shapes}, {"bvh", m.bvh},
                   {"meshes", m.meshes}, {"textures", texture_bytes}, {"lights", prep.lights.size() * sizeof(CompiledLight)},
                   {"images", image_bytes}};
+}
+
 // Independent interleaved batches per pixel (see PixelRenderer): two halves (as Dammertz et
 // al. 2010 and Cycles) keep each batch's stratification as fine as possible; four from 32 spp
 // give steadier per-pixel estimates (3 degrees of freedom instead of 1). Adaptive sampling

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -120,7 +121,22 @@ struct RenderStats {
     f("seconds.build", build_seconds);
     f("seconds.render", render_seconds);
     f("seconds.write", write_seconds);
-    f("error.mean_standard_error", pixels.mean_standard_error());
+    f("error.known", error.known);
+    // Unknown estimates (one sample per pixel) are written as null: NaN is not finite.
+    constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+    f("error.rmse", error.known ? error.rmse : kUnknown);
+    f("error.rel_mse", error.known ? error.rel_mse : kUnknown);
+    f("error.method", error.method);
+    f("error.batches", error.batches);
+    f("sampling.sampler", error.sampler);
+    f("sampling.mean_spp", error.mean_spp);
+    f("sampling.min_spp", error.min_spp);
+    f("sampling.max_spp", error.max_spp);
+    f("sampling.passes", error.passes);
+    f("sampling.target_error", error.target_error);
+    f("sampling.time_limit", error.time_limit);
+    f("sampling.target_reached", error.target_reached);
+    f("sampling.stopped_by_time", error.stopped_by_time);
   }
 };
 

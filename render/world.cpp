@@ -247,13 +247,19 @@ bool World::shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& ou
     if (!inst.transmissive) return occluded_instance(inst, ray, ray_t);
     Interval range = ray_t;
     SurfaceHit h;
+    const Vec3 object_dir = object_ray(inst, ray).direction;
     while (intersect_instance(inst, ray, range, h)) {
       if (out.count == tol::kMaxShadowSurfaces) return true;  // too many: treated as blocked
       out.t[out.count] = h.t;
       out.instance[out.count] = i;
       ++out.count;
-      Vec3 p = ray.at(h.t);
-      range.min = h.t + tol::kRayOffsetAbsolute + tol::kRayOffsetRelative * std::max(max_abs_component(p), h.t);
+      // Step past the surface by the hit's own error bound, as offset_ray_origin moves a
+      // spawned ray's origin: that distance along the normal, converted to ray parameter.
+      Vec3 n = glm::normalize(h.normal);
+      double n1 = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+      double offset = std::max(tol::kOffsetErrorScale * h.error * n1, tol::kMinRayOffset);
+      double cos_dn = std::max(std::abs(glm::dot(n, object_dir)), tol::kParallelCosine);
+      range.min = h.t + offset / cos_dn;
     }
     return false;
   };
