@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <tiny_obj_loader.h>
 
+#include "render/resource_limits.hpp"
 #include "render/source_ref.hpp"
 
 namespace rts::render {
@@ -32,10 +33,17 @@ bool parse_index(std::string_view s, long& out) {
   return r.ec == std::errc() && r.ptr == s.data() + s.size();
 }
 
+// What the loaded mesh costs per triangle and per vertex, roughly (the loader's arrays, the
+// unified vertices and the BVH built later), to check the memory limit before building it.
+constexpr std::size_t kBytesPerTriangle = 64;
+constexpr std::size_t kBytesPerVertex = 48;
+
 // tinyobjloader skips or clamps bad data silently, so check what it cannot report with a line:
-// unparsable vertex coordinates and face indices that point outside the arrays so far.
-void prescan(const std::string& shown, std::istream& in, SourceRef where) {
+// unparsable vertex coordinates and face indices that point outside the arrays so far. The
+// triangle and memory limits are checked here too, while counting, before anything is built.
+void prescan(const std::string& shown, std::istream& in, SourceRef where, const ObjLimits& limits) {
   std::size_t counts[3] = {0, 0, 0};  // v, vt, vn
+  std::size_t triangles = 0;
   std::string line;
   unsigned line_no = 0;
   auto fail = [&](const std::string& msg) {
@@ -79,8 +87,20 @@ void prescan(const std::string& shown, std::istream& in, SourceRef where) {
         }
       }
       if (corners < 3) fail(fmt::format("face with {} corners (needs at least 3)", corners));
+      triangles += static_cast<std::size_t>(corners - 2);
+      if (triangles > limits.max_triangles)
+        fail(fmt::format("more than {} triangles, the limit left for meshes (raise it with --max-mesh-triangles)",
+                         limits.max_triangles));
     }
+    if ((line_no & 0xFFFFF) == 0 && !memory_fits(limits.max_memory, triangles * kBytesPerTriangle +
+                                                                        counts[0] * kBytesPerVertex))
+      fail(fmt::format("the mesh would need more than the memory limit of {} (raise it with --max-memory)",
+                       size_in_words(limits.max_memory)));
   }
+  if (!memory_fits(limits.max_memory, triangles * kBytesPerTriangle + counts[0] * kBytesPerVertex))
+    throw SceneError(where, fmt::format("mesh file {} ({} triangles) would need more than the memory limit of {} "
+                                        "(raise it with --max-memory)",
+                                        shown, triangles, size_in_words(limits.max_memory)));
 }
 
 }  // namespace
@@ -101,23 +121,30 @@ void compute_smooth_normals(MeshData& mesh) {
   }
 }
 
-std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& shown, bool smooth, SourceRef where) {
+std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& shown, bool smooth, SourceRef where,
+                                   const ObjLimits& limits) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
     throw SceneError(where, fmt::format("cannot open mesh file '{}': no such file", shown));
+  std::string text;
   {
-    std::ifstream in(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(where, fmt::format("cannot open mesh file '{}'", shown));
-    prescan(shown, in, where);
+    prescan(shown, in, where, limits);
+    in.clear();
+    in.seekg(0);
+    std::ostringstream all;
+    all << in.rdbuf();
+    text = std::move(all).str();
   }
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  config.mtl_search_path = fs::path(path).parent_path().string();
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  // From memory, with an empty material text: tinyobjloader then opens no `mtllib` file.
+  if (!reader.ParseFromString(text, std::string(), config)) {
     std::string err = reader.Error();
     while (!err.empty() && err.back() == '\n') err.pop_back();
     throw SceneError(where, fmt::format("malformed mesh file '{}': {}", shown, err));

@@ -20,6 +20,7 @@ struct RenderOptions {
   std::vector<std::string> aovs;          // any of "normal", "depth", "albedo"
   bool progress = false;                  // progress bar with ETA on stderr
   std::size_t max_pixels = 100'000'000;   // larger images are a RenderError
+  std::size_t max_memory = 0;             // bytes (--max-memory): the image and AOVs must fit; 0: no limit
 };
 
 struct RenderResult {

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "render/lights.hpp"
 #include "render/obj_loader.hpp"
 
 namespace rts::render {
@@ -171,7 +172,8 @@ void SceneBuilder::settings(ParamSet& ps) {
   s.height = ps.integer("height", s.height);
   require(ps, "height", s.height >= 1, ">= 1", s.height);
   s.samples = ps.integer("samples", s.samples);
-  require(ps, "samples", s.samples >= 1, ">= 1", s.samples);
+  require(ps, "samples", s.samples >= 1 && s.samples <= kMaxSamplesPerPixel,
+          fmt::format("from 1 to {}", kMaxSamplesPerPixel), s.samples);
   s.max_depth = ps.integer("max_depth", s.max_depth);
   require(ps, "max_depth", s.max_depth >= 0, ">= 0", s.max_depth);
   s.background = ps.color("background", s.background);
@@ -224,6 +226,7 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
     t.kind = TextureKind::Image;
     std::string file = ps.require_string("file");
     t.image_path = resolve_path(file, loc_of(ps, "file"));
+    check_readable(t.image_path, file, "image", loc_of(ps, "file"));
     t.mapping = ps.string("mapping", "uv");
     if (t.mapping != "uv" && t.mapping != "planar" && t.mapping != "spherical")
       throw SceneError(
@@ -382,11 +385,16 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       SourceRef where = loc_of(ps, "file");
       std::string file = ps.string("file", "");
       std::string path = resolve_path(file, where);
+      check_readable(path, file, "mesh file", where);
       obj_key = std::make_pair(cache_key(path), g.smooth);
-      if (auto it = obj_meshes_.find(*obj_key); it != obj_meshes_.end())
+      if (auto it = obj_meshes_.find(*obj_key); it != obj_meshes_.end()) {
         g.mesh = it->second;  // already loaded (and counted against the triangle limit): share it
-      else
-        mesh = load_obj(path, file, g.smooth, where);
+      } else {
+        ObjLimits limits;
+        limits.max_triangles = limits_.max_mesh_triangles - std::min(mesh_triangles_, limits_.max_mesh_triangles);
+        limits.max_memory = limits_.max_memory;
+        mesh = load_obj(path, file, g.smooth, where, limits);
+      }
     } else {
       if (!ps.has("vertices")) ps.fail_block("mesh needs property 'file' or 'vertices' and 'faces'");
       if (!ps.has("faces")) ps.fail_block("mesh needs property 'faces'");
@@ -463,6 +471,12 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     l.v = direction(ps, "v", ps.require_vec3("v"));
     l.samples = ps.integer("samples", l.samples);
     require(ps, "samples", l.samples >= 1, ">= 1", l.samples);
+    if (l.samples > kMaxAreaSamples) {
+      warnings_.push_back(SceneWarning{loc_of(ps, "samples"),
+                                       fmt::format("area_light samples {} is more than {}; {} are used",
+                                                   l.samples, kMaxAreaSamples, kMaxAreaSamples)});
+      l.samples = kMaxAreaSamples;
+    }
     l.disc = ps.boolean("disc", l.disc);
     attenuation();
     ps.check_unused(kAreaLightNames);
@@ -479,5 +493,12 @@ NodeId SceneBuilder::group(std::vector<Child> children, SourceRef loc) {
 }
 
 void SceneBuilder::place(const Child& instance) { scene_.roots.push_back(instance); }
+
+void SceneBuilder::check_readable(const std::string& path, const std::string& shown, std::string_view what,
+                                  SourceRef where) const {
+  if (!read_policy_.allows(path)) throw SceneError(where, read_policy_.refusal(shown, path));
+  if (std::string kind = non_regular_kind(path); !kind.empty())
+    throw SceneError(where, fmt::format("cannot read {} '{}': it is {}, not a file", what, shown, kind));
+}
 
 }  // namespace rts::render
