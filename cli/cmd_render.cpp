@@ -155,7 +155,7 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("scene", c->scene, "The scene file (.rts)")->required();
   cmd->add_option("-o,--output", c->output, "Output PNG (default: the scene's name with .png, here)")
       ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("the file name is empty") : ""; },
-                             "FILE"));
+                             ""));
   // Whole numbers in a stated range: "-1" or "99999999999999999999" are usage errors.
   add_whole_option(*cmd, "--threads", c->threads, 0, kMaxThreads, "Worker threads (default 0: all cores)", false);
   add_whole_option(*cmd, "--seed", c->seed, 0, kMaxSeed, "Random seed (overrides the scene's settings.seed)", false);

@@ -49,7 +49,7 @@ CLI::Option* add_whole_option(CLI::App& cmd, const std::string& names, uint64_t 
                                                  with_commas(hi), text));
         set(v);
       },
-      help);
+      fmt::format("{} ({} to {})", help, with_commas(lo), with_commas(hi)));
   *opt = o;
   o->type_name("N");
   return o;

@@ -49,6 +49,9 @@ void prescan(const std::string& shown, std::istream& in, SourceRef where, const 
   auto fail = [&](const std::string& msg) {
     throw SceneError(where, fmt::format("malformed mesh file {}:{}: {}", shown, line_no, msg));
   };
+  auto over = [&](const std::string& msg) {
+    throw SceneError(where, fmt::format("mesh file {}:{}: {}", shown, line_no, msg));
+  };
   while (std::getline(in, line)) {
     ++line_no;
     std::string_view s = trim(line);
@@ -89,12 +92,12 @@ void prescan(const std::string& shown, std::istream& in, SourceRef where, const 
       if (corners < 3) fail(fmt::format("face with {} corners (needs at least 3)", corners));
       triangles += static_cast<std::size_t>(corners - 2);
       if (triangles > limits.max_triangles)
-        fail(fmt::format("more than {} triangles, the limit left for meshes (raise it with --max-mesh-triangles)",
+        over(fmt::format("more than {} triangles, the limit left for meshes (raise it with --max-mesh-triangles)",
                          limits.max_triangles));
     }
     if ((line_no & 0xFFFFF) == 0 && !memory_fits(limits.max_memory, triangles * kBytesPerTriangle +
                                                                         counts[0] * kBytesPerVertex))
-      fail(fmt::format("the mesh would need more than the memory limit of {} (raise it with --max-memory)",
+      over(fmt::format("the mesh would need more than the memory limit of {} (raise it with --max-memory)",
                        size_in_words(limits.max_memory)));
   }
   if (!memory_fits(limits.max_memory, triangles * kBytesPerTriangle + counts[0] * kBytesPerVertex))

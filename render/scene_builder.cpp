@@ -1,6 +1,7 @@
 // SceneBuilder: validates block parameters and fills the SceneDesc.
 #include "render/scene_builder.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -130,6 +131,12 @@ std::string cache_key(const std::string& path) {
   fs::path p = fs::weakly_canonical(fs::path(path), ec);
   if (ec) p = fs::absolute(fs::path(path), ec).lexically_normal();
   return ec ? path : p.string();
+}
+
+bool is_obj_name(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj";
 }
 
 // The reference in property `name` (a shape's material, a material's texture), or null when
@@ -387,6 +394,12 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       std::string path = resolve_path(file, where);
       check_readable(path, file, "mesh file", where);
       obj_key = std::make_pair(cache_key(path), g.smooth);
+      // Errors quote lines of a malformed OBJ, so no other kind of file is read as one
+      // (`file = "/etc/shadow"` must not show its lines). Checked after links are resolved.
+      if (!is_obj_name(obj_key->first))
+        throw SceneError(where, fmt::format("cannot read mesh file '{}': mesh files must be Wavefront OBJ files named "
+                                            "*.obj",
+                                            file));
       if (auto it = obj_meshes_.find(*obj_key); it != obj_meshes_.end()) {
         g.mesh = it->second;  // already loaded (and counted against the triangle limit): share it
       } else {

@@ -67,6 +67,12 @@ if [[ $SANITIZED == 0 ]]; then
     "stack exhaustion is a located error"
 fi
 
+# The image and its AOVs are checked against --max-memory before they are allocated.
+expect_exit 3 "image past the memory limit" -- "$RTS" render "$TMP/ok.rts" -o "$TMP/big.png" --no-progress \
+  --width 20000 --height 5000 --aov normal,depth --max-memory 64M
+expect_grep "$TMP/err" "ok.rts:1:1: error: a 20000x5000 image and its AOVs needs [0-9.]+ GiB, past the memory limit of 64 MiB" \
+  "image memory error is located"
+
 # ---- groups multiplying instances (defect 6) ------------------------------------------------
 printf 'let g = group { sphere { radius = 1 } }\nfor i in 0 .. 40 {\n  g = group { g  g translate <1,0,0> }\n}\ng\n' \
   > "$TMP/group_bomb.rts"
@@ -92,6 +98,13 @@ printf 'mtllib ../../../../../../../../dev/zero\nmtllib /etc/passwd\nusemtl x\nv
 printf '%s\nmesh { file = "evil.obj" }\n' "$ok_scene" > "$TMP/scene/mtl.rts"
 expect_exit 0 "OBJ mtllib naming /dev/zero and /etc/passwd is never read (defect 7)" -- \
   "${T[@]}" "$RTS" render "$TMP/scene/mtl.rts" -o "$TMP/mtl.png" --no-progress
+# Mesh triangles are counted while the file is read, before its arrays are built.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\nf 1 2 4 3\n' > "$TMP/scene/quads.obj"
+printf '%s\nmesh { file = "quads.obj" }\n' "$ok_scene" > "$TMP/scene/tris.rts"
+expect_exit 1 "OBJ past --max-mesh-triangles" -- "$RTS" check "$TMP/scene/tris.rts" --max-mesh-triangles 3
+expect_grep "$TMP/err" "tris.rts:4:[0-9]+: error: mesh file quads.obj:7: more than 3 triangles.*--max-mesh-triangles" \
+  "the OBJ line that passes the limit is named"
+expect_exit 0 "OBJ within --max-mesh-triangles" -- "$RTS" check "$TMP/scene/tris.rts" --max-mesh-triangles 4
 mkfifo "$TMP/scene/pipe.png" "$TMP/scene/pipe.rts" "$TMP/scene/pipe.obj"
 printf '%s\nsphere { radius = 1 material = material { color = image_texture("pipe.png") } }\n' "$ok_scene" \
   > "$TMP/scene/fifo_tex.rts"
@@ -139,6 +152,11 @@ expect_grep "$TMP/err" "passwd.rts:1:1: error: reading '/etc/passwd' is not allo
 expect_exit 1 "include /etc/passwd with --allow-read /" -- "$RTS" check "$TMP/scene/passwd.rts" --allow-read /
 expect_grep "$TMP/err" "included files must be scene files named \*.rts or \*.inc" "refused as not a scene"
 expect_no_grep "$TMP/err" "root:" "no line of /etc/passwd is printed"
+printf 'v 1 2 secret\nf the password\n' > "$TMP/scene/notes.txt"
+printf '%s\nmesh { file = "notes.txt" }\n' "$ok_scene" > "$TMP/scene/mesh_txt.rts"
+expect_exit 1 "a mesh file that is not an OBJ" -- "$RTS" check "$TMP/scene/mesh_txt.rts"
+expect_grep "$TMP/err" "mesh files must be Wavefront OBJ files named \*.obj" "refused as not an OBJ"
+expect_no_grep "$TMP/err" "secret|password" "no line of it is printed"
 
 # ---- messages -------------------------------------------------------------------------------
 { printf 'let xs = ['; for i in $(seq 1 100000); do printf '%d, ' "$i"; done; printf 'oops ]\n'; } > "$TMP/long_line.rts"
