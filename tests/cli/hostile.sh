@@ -57,10 +57,10 @@ if [[ $SANITIZED == 0 ]]; then
   expect_no_grep "$TMP/err" "internal error" "no internal error"
 
   # ---- deep recursion when the stack it needs cannot be mapped (defect 2) ---------------------
-  # 60 nested ifs make each level use ~17 KB of stack: 20,000 levels need more than the
-  # ~200 MB stack that fits under this ulimit.
+  # 60 nested ifs make each level use ~17 KB of stack: 40,000 levels need far more than the
+  # ~200 MB stack that fits under this ulimit (about 700 MB).
   { printf 'macro f(d) { '; for i in $(seq 60); do printf 'if d > 0 { '; done; printf 'f(d - 1)'
-    for i in $(seq 60); do printf ' }'; done; printf ' }\nf(20000)\n'; } > "$TMP/deep.rts"
+    for i in $(seq 60); do printf ' }'; done; printf ' }\nf(40000)\n'; } > "$TMP/deep.rts"
   expect_exit 1 "deep recursion, stack cannot be mapped (defect 2)" -- "${T[@]}" bash -c \
     "ulimit -v 400000; exec \"\$0\" check \"\$1\" --max-recursion 100000" "$RTS" "$TMP/deep.rts"
   expect_grep "$TMP/err" "deep.rts:1:[0-9]+: error: (evaluation nested too deeply for its [0-9]+ MiB stack|out of memory)" \
