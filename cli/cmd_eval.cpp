@@ -9,12 +9,24 @@
 
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
+#include "cli/number_flags.hpp"
+#include "render/resource_limits.hpp"
 #include "parser/diagnostics.hpp"
 #include "render/source_ref.hpp"
 #include "runtime/evaluator.hpp"
 #include "runtime/scene_summary.hpp"
 
 namespace rts::cli {
+
+namespace {
+// Flag ranges (docs/reliability.md). Counts stop at 10^12: more would run for days anyway,
+// and every value in range is honoured, never wrapped into "unlimited".
+constexpr uint64_t kMaxCount = 1'000'000'000'000;
+constexpr uint64_t kMaxObjects = 1'000'000'000;
+// Deeper recursion than the 8 GiB evaluation stack can hold (64 KiB a level) is refused.
+constexpr uint64_t kMaxRecursion = 100'000;
+constexpr std::size_t kMinMemory = 64u << 20;
+}  // namespace
 
 void add_eval_options(CLI::App& cmd, EvalOptions& opts) {
   cmd.add_option("-I,--include-path", opts.include_paths,
@@ -31,15 +43,26 @@ void add_eval_options(CLI::App& cmd, EvalOptions& opts) {
          },
          "Replace the value of the first top-level `let NAME` of the main file (VALUE is an rts expression)")
       ->type_name("NAME=VALUE");
-  cmd.add_option("--max-iterations", opts.limits.max_iterations, "Loop iterations allowed, in total")
-      ->capture_default_str();
-  cmd.add_option("--max-recursion", opts.limits.max_recursion, "Macro call depth allowed")
-      ->capture_default_str()
-      ->check(CLI::Range(1u, 10'000'000u));
-  cmd.add_option("--max-objects", opts.limits.max_objects, "Object placements allowed, in total")
-      ->capture_default_str();
-  cmd.add_option("--max-mesh-triangles", opts.limits.max_mesh_triangles, "Mesh triangles allowed, in total")
-      ->capture_default_str();
+  // The CLI reads files as POV-Ray does: only under the scene's folder, -I and the current
+  // folder unless --allow-read widens it; memory is bounded by default.
+  opts.restrict_reads = true;
+  opts.limits.max_memory = render::default_max_memory();
+  cmd.add_option("--allow-read", opts.allow_read,
+                 "Also let the scene read files under DIR (meshes, textures, includes); '/' allows every file")
+      ->type_name("DIR")
+      ->check(CLI::ExistingDirectory);
+  add_whole_option(cmd, "--max-iterations", opts.limits.max_iterations, 1, kMaxCount, "Loop iterations allowed, in total");
+  add_whole_option(cmd, "--max-steps", opts.limits.max_steps, 1, kMaxCount,
+                   "Evaluation steps allowed: loop iterations, macro calls, list elements and string bytes built");
+  add_whole_option(cmd, "--max-recursion", opts.limits.max_recursion, 1, kMaxRecursion, "Macro call depth allowed");
+  add_whole_option(cmd, "--max-objects", opts.limits.max_objects, 1, kMaxObjects,
+                   "Objects allowed: placements, and objects in the world once groups are expanded");
+  add_whole_option(cmd, "--max-mesh-triangles", opts.limits.max_mesh_triangles, 1, kMaxObjects,
+                   "Mesh triangles allowed, in total (checked while a file loads)");
+  add_size_option(cmd, "--max-memory", opts.limits.max_memory, kMinMemory,
+                  "Memory the process may use, e.g. 8G (checked where lists, strings, meshes, groups and the image "
+                  "are made)")
+      ->default_str("half the RAM (" + render::size_in_words(opts.limits.max_memory) + " here)");
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <climits>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
 #include "cli/stats_report.hpp"
+#include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
 #include "render/image.hpp"
 #include "render/renderer.hpp"
@@ -25,6 +27,10 @@ namespace rts::cli {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr uint64_t kMaxThreads = 1024;
+constexpr uint64_t kMaxSeed = uint64_t(1) << 53;  // as settings.seed: every seed a double holds exactly
+constexpr uint64_t kMaxImageSide = 1'000'000;      // the pixel count has its own limit
 
 struct RenderCommand {
   std::string scene;
@@ -42,11 +48,19 @@ struct RenderCommand {
   EvalOptions eval;
 };
 
-void print_error(const render::SourceRef& where, const std::string& message) {
-  if (where.file && *where.file)
+// A render error (exit 3) is shown like a language error: located, with the source line and
+// a caret, when it points into a scene file.
+void print_error(const render::SourceRef& where, const std::string& message, const SourceManager& sources,
+                 DiagnosticSink& sink) {
+  if (where.file && *where.file) {
+    if (const SourceFile* f = sources.find(where.file)) {
+      sink.error(SourceLoc{f, where.line, where.col}, message);
+      return;
+    }
     std::cerr << fmt::format("{}:{}:{}: error: {}\n", where.file, where.line, where.col, message);
-  else
+  } else {
     std::cerr << "rts: error: " << message << "\n";
+  }
 }
 
 // <out>.normal.png beside OUT.png (the .png extension is replaced, other names get a suffix).
@@ -100,6 +114,12 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     scene = std::move(evaluated.scene);
     eval_seconds = evaluated.seconds;
     parse_seconds = evaluated.parse_seconds;
+    // A black image with no word of why is a trap (a library file rendered by mistake).
+    SourceLoc whole_file{sources.find(c.scene), 0, 0};
+    if (evaluated.world_shapes == 0)
+      sink.warning(whole_file, "the scene places no objects: the image shows only the background");
+    else if (evaluated.world_lights == 0)
+      sink.warning(whole_file, "the scene places no lights: objects show only their ambient light and emission");
   } catch (const LanguageError& e) {
     sink.report(e.diag);
     return kExitLanguageError;
@@ -107,7 +127,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     std::cerr << e.message << "\n";  // already "path: error: ..."
     return kExitLanguageError;
   } catch (const render::SceneError& e) {
-    print_error(e.where, e.what());
+    print_error(e.where, e.what(), sources, sink);
     return kExitLanguageError;
   }
 
@@ -126,6 +146,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   }
   opts.target_error = c.target_error;
   opts.time_limit = c.time_limit;
+  opts.max_memory = c.eval.limits.max_memory;
   opts.progress = !c.no_progress && isatty(STDERR_FILENO);
   opts.specialize = !c.no_specialize;
 
@@ -145,10 +166,10 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     print_sampling_warnings(out, result.stats);
     report_stats(c.stats, result.stats);
   } catch (const render::RenderError& e) {
-    print_error(e.where, e.what());
+    print_error(e.where, e.what(), sources, sink);
     return kExitRenderError;
   } catch (const std::bad_alloc&) {
-    print_error({}, "out of memory");
+    print_error({}, "out of memory (lower the image size, samples or scene, or check ulimit -v)", sources, sink);
     return kExitRenderError;
   }
   return kExitOk;
@@ -160,15 +181,16 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   auto c = std::make_shared<RenderCommand>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to a PNG image");
   cmd->add_option("scene", c->scene, "The scene file (.rts)")->required();
-  cmd->add_option("-o,--output", c->output, "Output PNG (default: the scene's name with .png, here)");
-  cmd->add_option("--threads", c->threads, "Worker threads (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", c->seed, "Random seed (overrides the scene's settings.seed)");
-  cmd->add_option("--width", c->width, "Image width in pixels")->check(CLI::PositiveNumber);
-  cmd->add_option("--height", c->height, "Image height in pixels")->check(CLI::PositiveNumber);
-  cmd->add_option("--samples", c->samples, "Samples per pixel")->check(CLI::PositiveNumber);
-  cmd->add_option("--max-depth", c->max_depth, "Reflection/refraction depth")
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("-o,--output", c->output, "Output PNG (default: the scene's name with .png, here)")
+      ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("the file name is empty") : ""; },
+                             ""));
+  // Whole numbers in a stated range: "-1" or "99999999999999999999" are usage errors.
+  add_whole_option(*cmd, "--threads", c->threads, 0, kMaxThreads, "Worker threads (default 0: all cores)", false);
+  add_whole_option(*cmd, "--seed", c->seed, 0, kMaxSeed, "Random seed (overrides the scene's settings.seed)", false);
+  add_whole_option(*cmd, "--width", c->width, 1, kMaxImageSide, "Image width in pixels", false);
+  add_whole_option(*cmd, "--height", c->height, 1, kMaxImageSide, "Image height in pixels", false);
+  add_whole_option(*cmd, "--samples", c->samples, 1, render::kMaxSamplesPerPixel, "Samples per pixel", false);
+  add_whole_option(*cmd, "--max-depth", c->max_depth, 0, INT_MAX, "Reflection/refraction depth", false);
   cmd->add_option("--aov", c->aovs, "Extra images: normal,depth,albedo,error (written as OUT.<name>.png)")
       ->delimiter(',')
       ->check(CLI::IsMember({"normal", "depth", "albedo", "error"}));

@@ -7,6 +7,10 @@
 namespace rts {
 namespace {
 
+// Source lines longer than this are shown as kExcerptContext bytes either side of the column.
+constexpr std::size_t kMaxExcerptBytes = 200;
+constexpr std::size_t kExcerptContext = 80;
+
 const char* severity_name(Severity s) {
   switch (s) {
     case Severity::Error: return "error";
@@ -32,10 +36,24 @@ void print(std::ostream& out, bool color, Severity sev, SourceLoc loc, const std
   out << sev_color << severity_name(sev) << ':' << reset << ' ' << message << '\n';
   if (!with_source || !loc.valid()) return;
   std::string_view text = loc.file->line_text(loc.line);
-  out << "    " << text << '\n' << "    ";
+  std::size_t upto = std::min<std::size_t>(loc.col > 0 ? loc.col - 1 : 0, text.size());
+  // A long line (a generated scene's 900 KB list) is shown as a window around the column.
+  const char* before = "";
+  const char* after = "";
+  if (text.size() > kMaxExcerptBytes) {
+    auto is_continuation = [&](std::size_t i) { return i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80; };
+    std::size_t begin = upto > kExcerptContext ? upto - kExcerptContext : 0;
+    while (begin > 0 && is_continuation(begin)) --begin;
+    std::size_t end = std::min(text.size(), begin + 2 * kExcerptContext);
+    while (end < text.size() && is_continuation(end)) ++end;
+    if (begin > 0) before = "...";
+    if (end < text.size()) after = "...";
+    upto -= begin;
+    text = text.substr(begin, end - begin);
+  }
+  out << "    " << before << text << after << '\n' << "    " << (*before ? "   " : "");
   // Copy tabs so the caret lines up whatever the terminal's tab width; count UTF-8
   // continuation bytes as no width so the caret sits under the right character.
-  std::size_t upto = std::min<std::size_t>(loc.col > 0 ? loc.col - 1 : 0, text.size());
   for (std::size_t i = 0; i < upto; ++i) {
     unsigned char c = static_cast<unsigned char>(text[i]);
     if (c == '\t') out << '\t';

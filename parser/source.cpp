@@ -109,4 +109,10 @@ const SourceFile* SourceManager::add(std::string path, std::string text) {
   return files_.back().get();
 }
 
+const SourceFile* SourceManager::find(std::string_view path) const {
+  for (const auto& f : files_)
+    if (f->path() == path) return f.get();
+  return nullptr;
+}
+
 }  // namespace rts

@@ -45,6 +45,8 @@ class SourceManager {
   const SourceFile* load(const std::string& path);
   // Registers in-memory text (tests, -D defines, stdin).
   const SourceFile* add(std::string path, std::string text);
+  // The file loaded or added under exactly this path, or null.
+  const SourceFile* find(std::string_view path) const;
 
  private:
   std::deque<std::unique_ptr<SourceFile>> files_;

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <tuple>
 #include <unordered_map>
@@ -15,6 +17,7 @@
 #include <tiny_obj_loader.h>
 
 #include "render/memory.hpp"
+#include "render/resource_limits.hpp"
 #include "render/source_ref.hpp"
 
 namespace rts::render {
@@ -44,6 +47,11 @@ struct CornerHash {
   }
 };
 
+// What the loaded mesh costs per triangle and per vertex, roughly (the loader's arrays, the
+// unified vertices and the BVH built later), to check the memory limit while reading.
+constexpr std::size_t kBytesPerTriangle = 64;
+constexpr std::size_t kBytesPerVertex = 48;
+
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
 
 // A number field as `std::istream >> double` accepts it (an optional '+', then a decimal),
@@ -65,7 +73,8 @@ bool parse_number(std::string_view s, double& out) {
 // tinyobjloader's own pass and the `std::map` of unified vertices were 5.5 s of an 8.5 s render.
 class ObjReader {
  public:
-  ObjReader(const std::string& shown, SourceRef where) : shown_(shown), where_(where) {}
+  ObjReader(const std::string& shown, SourceRef where, const ObjLimits& limits)
+      : shown_(shown), where_(where), limits_(limits) {}
 
   // False when the file has a face of more than four corners: the caller triangulates it
   // with tinyobjloader (ear clipping) instead; the file has been fully validated either way.
@@ -91,6 +100,7 @@ class ObjReader {
       have = end - pos;
       std::memmove(buf.data(), buf.data() + pos, have);
     }
+    check_limits();
     if (polygon_) return false;
     finish(mesh);
     return true;
@@ -104,8 +114,23 @@ class ObjReader {
     throw SceneError(where_, fmt::format("cannot read mesh file '{}'", shown_));
   }
 
+  [[noreturn]] void over(const std::string& msg) const {
+    throw SceneError(where_, fmt::format("mesh file {}:{}: {}", shown_, line_no_, msg));
+  }
+
+  // The triangle and memory limits, checked while reading, before anything big is built.
+  void check_limits() const {
+    if (triangles_ > limits_.max_triangles)
+      over(fmt::format("more than {} triangles, the limit left for meshes (raise it with --max-mesh-triangles)",
+                       limits_.max_triangles));
+    if (!memory_fits(limits_.max_memory, triangles_ * kBytesPerTriangle + positions_.size() / 3 * kBytesPerVertex))
+      over(fmt::format("the mesh would need more than the memory limit of {} (raise it with --max-memory)",
+                       size_in_words(limits_.max_memory)));
+  }
+
   void line(std::string_view s) {
     ++line_no_;
+    if ((line_no_ & 0xFFFF) == 0) check_limits();
     while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
     while (!s.empty() && (is_blank(s.back()) || s.back() == '\r')) s.remove_suffix(1);
     if (s.empty() || s[0] == '#') return;
@@ -179,6 +204,8 @@ class ObjReader {
       corners_.push_back(c);
     }
     if (corners_.size() < 3) fail(fmt::format("face with {} corners (needs at least 3)", corners_.size()));
+    triangles_ += corners_.size() - 2;
+    if (triangles_ > limits_.max_triangles) check_limits();
     if (polygon_) return;  // validating only: tinyobjloader triangulates this file
     if (corners_.size() == 3) {
       emit(corners_[0], corners_[1], corners_[2]);
@@ -268,6 +295,8 @@ class ObjReader {
   static constexpr uint32_t kNone = ~uint32_t(0);
   const std::string& shown_;
   SourceRef where_;
+  const ObjLimits& limits_;
+  std::size_t triangles_ = 0;
   unsigned line_no_ = 0;
   bool polygon_ = false;  // a face of 5+ corners was seen
   std::vector<float> positions_, uvs_, normals_;  // as the file lists them (uvs: 2 per entry)
@@ -280,13 +309,20 @@ class ObjReader {
 
 // tinyobjloader's path, for files with polygons of five or more corners (ear clipping).
 void load_with_tinyobj(const std::string& path, const std::string& shown, SourceRef where, MeshData& out) {
-  namespace fs = std::filesystem;
+  std::string text;
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(where, fmt::format("cannot open mesh file '{}'", shown));
+    std::ostringstream all;
+    all << in.rdbuf();
+    text = std::move(all).str();
+  }
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  config.mtl_search_path = fs::path(path).parent_path().string();
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  // From memory, with an empty material text: tinyobjloader then opens no `mtllib` file.
+  if (!reader.ParseFromString(text, std::string(), config)) {
     std::string err = reader.Error();
     while (!err.empty() && err.back() == '\n') err.pop_back();
     throw SceneError(where, fmt::format("malformed mesh file '{}': {}", shown, err));
@@ -346,7 +382,8 @@ void compute_smooth_normals(MeshData& mesh) {
   }
 }
 
-std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& shown, bool smooth, SourceRef where) {
+std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& shown, bool smooth, SourceRef where,
+                                   const ObjLimits& limits) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
@@ -355,7 +392,7 @@ std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& s
   if (!file) throw SceneError(where, fmt::format("cannot open mesh file '{}'", shown));
   auto mesh = std::make_shared<MeshData>();
   mesh->source = path;
-  bool done = ObjReader(shown, where).read(file.get(), *mesh);
+  bool done = ObjReader(shown, where, limits).read(file.get(), *mesh);
   file.reset();
   if (!done) load_with_tinyobj(path, shown, where, *mesh);
   if (mesh->indices.empty()) throw SceneError(where, fmt::format("mesh file '{}' has no faces", shown));

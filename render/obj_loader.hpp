@@ -3,6 +3,7 @@
 // when the file has none and smoothing is asked for.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -10,10 +11,19 @@
 
 namespace rts::render {
 
-// Loads `path` (already resolved). Throws SceneError at `where` when the file is missing or
-// malformed; the message names the OBJ as the scene wrote it (`shown`) and, where known, the
-// OBJ's own line ("bunny.obj:12: face vertex index 40 out of range").
-std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& shown, bool smooth, SourceRef where);
+// What one OBJ file may add, checked while it is read (before its arrays are built).
+struct ObjLimits {
+  std::size_t max_triangles = SIZE_MAX;  // what is left of --max-mesh-triangles
+  std::size_t max_memory = 0;            // --max-memory in bytes (0: no limit)
+};
+
+// Loads `path` (already resolved). Throws SceneError at `where` when the file is missing,
+// malformed or over the limits; the message names the OBJ as the scene wrote it (`shown`)
+// and, where known, the OBJ's own line ("bunny.obj:12: face vertex index 40 out of range").
+// `mtllib` lines are ignored and material files never opened: rts does not use OBJ
+// materials, and a material path could name any file (or a device that never ends).
+std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& shown, bool smooth, SourceRef where,
+                                   const ObjLimits& limits = {});
 
 // Computes area-weighted per-vertex normals from the triangles (for smooth shading).
 void compute_smooth_normals(MeshData& mesh);

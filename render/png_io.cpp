@@ -28,6 +28,8 @@
 #include <tbb/parallel_for.h>
 
 #include "render/image.hpp"
+#include "render/resource_limits.hpp"
+#include "render/temp_file_guard.hpp"
 
 namespace rts::render {
 
@@ -416,6 +418,7 @@ void write_png(const std::string& path, const Image& image, int bits, Encoding e
   }
 
   const std::string temp = temp_name_for(path);
+  TempFileGuard guard(temp);  // Ctrl-C or kill while writing removes the temp file
   PngIo io;
   io.file = open_temp(path, temp);
   const bool encoded = encode_png(io, rows.data(), image.width, image.height, bits, encoding);
@@ -439,6 +442,8 @@ Image read_png(const std::string& path, SourceRef where, Encoding encoding) {
   auto fail = [&](const std::string& why) -> RenderError {
     return RenderError(where, fmt::format("cannot read image '{}': {}", path, why));
   };
+  // A FIFO or device would block or never end: only regular files are read.
+  if (std::string kind = non_regular_kind(path); !kind.empty()) throw fail(fmt::format("it is {}, not a file", kind));
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (file == nullptr) throw fail(std::strerror(errno));
   FileCloser closer{file};

@@ -23,6 +23,7 @@
 #include "render/lights.hpp"
 #include "render/pixel_renderer.hpp"
 #include "render/progress.hpp"
+#include "render/resource_limits.hpp"
 #include "render/texture.hpp"
 #include "render/world.hpp"
 
@@ -51,7 +52,8 @@ ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o) {
                      o.seed.value_or(s.seed), o.sampler.value_or(s.sampler)};
   if (r.width < 1 || r.height < 1)
     throw RenderError(s.loc, fmt::format("image size {}x{} must be at least 1x1", r.width, r.height));
-  if (r.samples < 1) throw RenderError(s.loc, fmt::format("samples must be at least 1, got {}", r.samples));
+  if (r.samples < 1 || r.samples > kMaxSamplesPerPixel)
+    throw RenderError(s.loc, fmt::format("samples must be from 1 to {}, got {}", kMaxSamplesPerPixel, r.samples));
   if (!(o.target_error >= 0) || !std::isfinite(o.target_error))
     throw RenderError({}, fmt::format("target error must be a finite number >= 0, got {}", o.target_error));
   if (!(o.time_limit >= 0) || !std::isfinite(o.time_limit))
@@ -61,6 +63,15 @@ ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o) {
   if (pixels > o.max_pixels)
     throw RenderError(s.loc, fmt::format("image of {}x{} = {} pixels exceeds the limit of {} pixels",
                                          r.width, r.height, pixels, o.max_pixels));
+  // The color image, its per-pixel statistics, each AOV, and the rows packed for writing.
+  constexpr std::size_t kBytesPerPixel = 3 * sizeof(float) + 2 * sizeof(float) + 6;
+  constexpr std::size_t kBytesPerAovPixel = 3 * sizeof(float) + sizeof(float) + 1 + 6;
+  std::size_t bytes = pixels * (kBytesPerPixel + o.aovs.size() * kBytesPerAovPixel);
+  if (!memory_fits(o.max_memory, bytes))
+    throw RenderError(s.loc, fmt::format("a {}x{} image{} needs {}, past the memory limit of {} (raise it with "
+                                         "--max-memory)",
+                                         r.width, r.height, o.aovs.empty() ? "" : " and its AOVs",
+                                         size_in_words(bytes), size_in_words(o.max_memory)));
   return r;
 }
 

@@ -28,6 +28,7 @@ struct RenderOptions {
   bool progress = false;                  // progress bar with ETA on stderr
   bool specialize = true;                 // false: the generic path (--no-specialize)
   std::size_t max_pixels = 100'000'000;   // larger images are a RenderError
+  std::size_t max_memory = 0;             // bytes (--max-memory): the image and AOVs must fit; 0: no limit
 };
 
 struct RenderResult {

@@ -141,6 +141,10 @@ struct CameraDesc {
   SourceRef loc;
 };
 
+// Samples per pixel allowed (settings and --samples): 65536 on a 16x16 image is already
+// minutes; beyond it a typo (an extra zero or three) would run for ever.
+inline constexpr int kMaxSamplesPerPixel = 65536;
+
 struct Settings {
   int width = 640;
   int height = 480;

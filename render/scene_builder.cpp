@@ -1,6 +1,7 @@
 // SceneBuilder: validates block parameters and fills the SceneDesc.
 #include "render/scene_builder.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "render/aabb.hpp"
+#include "render/lights.hpp"
 #include "render/obj_loader.hpp"
 
 namespace rts::render {
@@ -134,6 +136,12 @@ std::string cache_key(const std::string& path) {
   return ec ? path : p.string();
 }
 
+bool is_obj_name(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj";
+}
+
 // The reference in property `name` (a shape's material, a material's texture), or null when
 // it is absent: "property 'material' of sphere expects a material, got a number".
 template <typename Ref>
@@ -174,7 +182,8 @@ void SceneBuilder::settings(ParamSet& ps) {
   s.height = ps.integer("height", s.height);
   require(ps, "height", s.height >= 1, ">= 1", s.height);
   s.samples = ps.integer("samples", s.samples);
-  require(ps, "samples", s.samples >= 1, ">= 1", s.samples);
+  require(ps, "samples", s.samples >= 1 && s.samples <= kMaxSamplesPerPixel,
+          fmt::format("from 1 to {}", kMaxSamplesPerPixel), s.samples);
   s.max_depth = ps.integer("max_depth", s.max_depth);
   require(ps, "max_depth", s.max_depth >= 0, ">= 0", s.max_depth);
   s.background = ps.color("background", s.background);
@@ -233,6 +242,7 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
     t.kind = TextureKind::Image;
     std::string file = ps.require_string("file");
     t.image_path = resolve_path(file, loc_of(ps, "file"));
+    check_readable(t.image_path, file, "image", loc_of(ps, "file"));
     t.mapping = ps.string("mapping", "uv");
     if (t.mapping != "uv" && t.mapping != "planar" && t.mapping != "spherical")
       throw SceneError(
@@ -392,11 +402,22 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       SourceRef where = loc_of(ps, "file");
       std::string file = ps.string("file", "");
       std::string path = resolve_path(file, where);
+      check_readable(path, file, "mesh file", where);
       obj_key = std::make_pair(cache_key(path), g.smooth);
-      if (auto it = obj_meshes_.find(*obj_key); it != obj_meshes_.end())
+      // Errors quote lines of a malformed OBJ, so no other kind of file is read as one
+      // (`file = "/etc/shadow"` must not show its lines). Checked after links are resolved.
+      if (!is_obj_name(obj_key->first))
+        throw SceneError(where, fmt::format("cannot read mesh file '{}': mesh files must be Wavefront OBJ files named "
+                                            "*.obj",
+                                            file));
+      if (auto it = obj_meshes_.find(*obj_key); it != obj_meshes_.end()) {
         g.mesh = it->second;  // already loaded (and counted against the triangle limit): share it
-      else
-        mesh = load_obj(path, file, g.smooth, where);
+      } else {
+        ObjLimits limits;
+        limits.max_triangles = limits_.max_mesh_triangles - std::min(mesh_triangles_, limits_.max_mesh_triangles);
+        limits.max_memory = limits_.max_memory;
+        mesh = load_obj(path, file, g.smooth, where, limits);
+      }
     } else {
       if (!ps.has("vertices")) ps.fail_block("mesh needs property 'file' or 'vertices' and 'faces'");
       if (!ps.has("faces")) ps.fail_block("mesh needs property 'faces'");
@@ -477,6 +498,12 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     l.v = direction(ps, "v", ps.require_vec3("v"));
     l.samples = ps.integer("samples", l.samples);
     require(ps, "samples", l.samples >= 1, ">= 1", l.samples);
+    if (l.samples > kMaxAreaSamples) {
+      warnings_.push_back(SceneWarning{loc_of(ps, "samples"),
+                                       fmt::format("area_light samples {} is more than {}; {} are used",
+                                                   l.samples, kMaxAreaSamples, kMaxAreaSamples)});
+      l.samples = kMaxAreaSamples;
+    }
     l.disc = ps.boolean("disc", l.disc);
     attenuation();
     ps.check_unused(kAreaLightNames);
@@ -493,5 +520,12 @@ NodeId SceneBuilder::group(std::vector<Child> children, SourceRef loc) {
 }
 
 void SceneBuilder::place(const Child& instance) { scene_.roots.push_back(instance); }
+
+void SceneBuilder::check_readable(const std::string& path, const std::string& shown, std::string_view what,
+                                  SourceRef where) const {
+  if (!read_policy_.allows(path)) throw SceneError(where, read_policy_.refusal(shown, path));
+  if (std::string kind = non_regular_kind(path); !kind.empty())
+    throw SceneError(where, fmt::format("cannot read {} '{}': it is {}, not a file", what, shown, kind));
+}
 
 }  // namespace rts::render

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/params.hpp"
+#include "render/resource_limits.hpp"
 #include "render/scene.hpp"
 
 namespace rts::render {
@@ -19,6 +20,13 @@ enum class BlockCategory { Settings, Camera, Material, Texture, Shape, Light, Gr
 
 struct BuilderLimits {
   std::size_t max_mesh_triangles = 50'000'000;  // OBJ / inline meshes, in total
+  std::size_t max_memory = 0;                   // bytes the process may hold (0: no limit)
+};
+
+// Something valid but probably not what the scene meant (a clamped value), located.
+struct SceneWarning {
+  SourceRef where;
+  std::string message;
 };
 
 class SceneBuilder {
@@ -40,12 +48,23 @@ class SceneBuilder {
   NodeId group(std::vector<Child> children, SourceRef loc);
   void place(const Child& instance);                          // into the world
 
+  // Files (meshes, image textures) outside the policy's folders are refused (SceneError).
+  void set_read_policy(ReadPolicy policy) { read_policy_ = std::move(policy); }
+  // Warnings since the last call, oldest first.
+  std::vector<SceneWarning> take_warnings() { return std::exchange(warnings_, {}); }
+
   std::size_t object_count() const { return scene_.shapes.size(); }
   const SceneDesc& scene() const { return scene_; }
   SceneDesc finish() { return std::move(scene_); }
 
  private:
+  // Checks that the scene may read `path` (as the scene wrote it: `shown`) and that it is a
+  // regular file, not a FIFO or device that would block or never end.
+  void check_readable(const std::string& path, const std::string& shown, std::string_view what, SourceRef where) const;
+
   BuilderLimits limits_;
+  ReadPolicy read_policy_;
+  std::vector<SceneWarning> warnings_;
   SceneDesc scene_;
   std::size_t mesh_triangles_ = 0;
   // OBJ files already loaded, by (absolute resolved path, smooth): every `mesh { file }` naming

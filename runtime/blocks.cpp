@@ -20,6 +20,13 @@ struct Restore {
   ~Restore() { ref = saved; }
 };
 
+// Object counts stop growing here (no overflow however groups multiply).
+constexpr uint64_t kSaturatedCount = uint64_t(1) << 62;
+// Placing a group of this many objects or more checks the memory budget first.
+constexpr uint64_t kObjectsPerMemoryCheck = 1 << 16;
+// What the renderer spends per object in the world (instance record, BVH share), roughly.
+constexpr std::size_t kBytesPerInstance = 256;
+
 void set_or_add(std::vector<Property>& props, Property p) {
   for (Property& q : props)
     if (q.name == p.name) {
@@ -38,6 +45,7 @@ void Interpreter::collect_properties(const ast::BlockBody& body, std::vector<Pro
   loop_depth_ = 0;    // `break` cannot leave a block
   in_macro_ = false;  // nor can `return`
   placement_allowed_ = allow_placement;
+  check_stack(body.items.empty() ? current_loc_ : body.items.front().loc);
   push_scope();
   for (const ast::BlockItem& item : body.items) {
     if (item.property) {
@@ -70,9 +78,24 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
       if (!props.empty())
         fail(props.front().loc,
              fmt::format("unknown property '{}' for group (a group takes no properties)", *props.front().name));
+      // What the group expands to, checked now: groups of groups double at every level, and
+      // 40 levels are 2^40 objects, which flattening would try to build.
+      ObjectCount count;
+      for (const render::Child& c : children) {
+        ObjectCount n = node_count(c.node);
+        count.shapes = std::min(count.shapes + n.shapes, kSaturatedCount);
+        count.lights = std::min(count.lights + n.lights, kSaturatedCount);
+      }
+      if (count.total() > options_.limits.max_objects)
+        fail(e.loc, fmt::format("this group expands to {} objects, more than the limit of {} (groups inside groups "
+                                "multiply; raise the limit with --max-objects)",
+                                count.total() >= kSaturatedCount ? std::string("billions of")
+                                                                  : std::to_string(count.total()),
+                                options_.limits.max_objects));
       Value v;
       v.type = Type::Object;
       v.id = builder_.group(std::move(children), ref(e.loc));
+      record_node(v.id, count);
       return v;
     }
     case render::BlockCategory::Material:
@@ -124,8 +147,13 @@ Value Interpreter::define_object(const std::string& kind, SourceLoc loc, const s
   render::ParamSet ps = to_params(kind, loc, props);
   Value v;
   v.type = Type::Object;
-  v.id = render::SceneBuilder::category(kind) == render::BlockCategory::Shape ? builder_.shape(kind, ps)
-                                                                              : builder_.light(kind, ps);
+  const bool shape = render::SceneBuilder::category(kind) == render::BlockCategory::Shape;
+  v.id = shape ? builder_.shape(kind, ps) : builder_.light(kind, ps);
+  record_node(v.id, shape ? ObjectCount{1, 0} : ObjectCount{0, 1});
+  for (const render::SceneWarning& w : builder_.take_warnings()) {
+    auto it = files_by_name_.find(w.where.file);
+    warnings_.warning(it != files_by_name_.end() ? SourceLoc{it->second, w.where.line, w.where.col} : loc, w.message);
+  }
   return v;
 }
 
@@ -348,10 +376,25 @@ void Interpreter::place(const Value& object, SourceLoc loc) {
     fail(loc,
          fmt::format("more than {} objects placed (raise the limit with --max-objects)", options_.limits.max_objects));
   render::Child c{realize_object(object), object_transform(object), ref(loc)};
-  if (target_)
+  if (target_) {
     target_->push_back(c);
-  else
-    builder_.place(c);
+    return;
+  }
+  ObjectCount n = node_count(c.node);
+  world_objects_.shapes = std::min(world_objects_.shapes + n.shapes, kSaturatedCount);
+  world_objects_.lights = std::min(world_objects_.lights + n.lights, kSaturatedCount);
+  if (world_objects_.total() > options_.limits.max_objects)
+    fail(loc, fmt::format("the scene holds more than {} objects once its groups are expanded (raise the limit with "
+                          "--max-objects)",
+                          options_.limits.max_objects));
+  // Every object in the world costs the renderer an instance record and BVH nodes.
+  if (n.total() >= kObjectsPerMemoryCheck) check_memory(n.total() * kBytesPerInstance, loc, "this group's objects");
+  builder_.place(c);
+}
+
+void Interpreter::record_node(uint32_t id, ObjectCount count) {
+  if (node_counts_.size() <= id) node_counts_.resize(std::size_t(id) + 1);
+  node_counts_[id] = count;
 }
 
 }  // namespace rts::runtime

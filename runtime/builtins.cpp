@@ -140,7 +140,11 @@ Value len(BuiltinCall& c) {
   bad_arg(c, 0, "a list, a string or a range");
 }
 
-Value str_(BuiltinCall& c) { return Value::string(to_text(c.args[0])); }
+Value str_(BuiltinCall& c) {
+  std::string text = to_text(c.args[0]);
+  c.in.spend(text.size(), c.call.loc, "string bytes built");
+  return Value::string(std::move(text));
+}
 
 Value format(BuiltinCall& c) {
   const std::string& f = str(c, 0);
@@ -166,6 +170,7 @@ Value format(BuiltinCall& c) {
   if (next != c.argc)
     c.in.fail(arg_loc(c, next),
               fmt::format("format string has {} '{{}}' but {} values were given", next - 1, c.argc - 1));
+  c.in.spend(out.size(), c.call.loc, "string bytes built");
   return Value::string(std::move(out));
 }
 

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <exception>
 #include <functional>
+#include <utility>
 
 #include "runtime/interpreter.hpp"
 
@@ -21,34 +22,60 @@ namespace {
 constexpr std::size_t kMinStackBytes = 256u << 20;
 constexpr std::size_t kStackBytesPerMacroLevel = 64u << 10;
 constexpr std::size_t kMaxStackBytes = std::size_t(8) << 30;
+// Where address space is limited (ulimit -v), the request is halved down to this.
+constexpr std::size_t kSmallestStackBytes = 16u << 20;
+// Evaluation fails cleanly (a located error) with this much stack still free: enough for the
+// frames between two checks (one statement's expressions, a builtin, formatting the error).
+constexpr std::size_t kStackReserveBytes = 4u << 20;
 
-void run_with_big_stack(std::size_t stack_bytes, const std::function<void()>& fn) {
+// The lowest address the calling thread's stack may use before the reserve, and its size.
+std::pair<std::uintptr_t, std::size_t> stack_floor_of_this_thread() {
+  pthread_attr_t attr;
+  void* addr = nullptr;
+  std::size_t size = 0;
+  if (pthread_getattr_np(pthread_self(), &attr) != 0) return {0, 0};
+  pthread_attr_getstack(&attr, &addr, &size);
+  pthread_attr_destroy(&attr);
+  if (!addr || size <= 2 * kStackReserveBytes) return {0, size};
+  return {reinterpret_cast<std::uintptr_t>(addr) + kStackReserveBytes, size};
+}
+
+using StackFn = std::function<void(std::uintptr_t floor, std::size_t bytes)>;
+
+void run_with_big_stack(std::size_t stack_bytes, const StackFn& fn) {
   struct Job {
-    const std::function<void()>* fn;
+    const StackFn* fn;
     std::exception_ptr error;
   } job{&fn, nullptr};
   auto start = [&](std::size_t bytes, pthread_t& thread) {
     pthread_attr_t attr;
     pthread_attr_init(&attr);
-    bool ok = pthread_attr_setstacksize(&attr, bytes) == 0 && pthread_create(
-                                                                  &thread, &attr,
-                                                                  [](void* p) -> void* {
-                                                                    auto* j = static_cast<Job*>(p);
-                                                                    try {
-                                                                      (*j->fn)();
-                                                                    } catch (...) {
-                                                                      j->error = std::current_exception();
-                                                                    }
-                                                                    return nullptr;
-                                                                  },
-                                                                  &job) == 0;
+    bool ok = pthread_attr_setstacksize(&attr, bytes) == 0 &&
+              pthread_create(
+                  &thread, &attr,
+                  [](void* p) -> void* {
+                    auto* j = static_cast<Job*>(p);
+                    try {
+                      auto [floor, size] = stack_floor_of_this_thread();
+                      (*j->fn)(floor, size);
+                    } catch (...) {
+                      j->error = std::current_exception();
+                    }
+                    return nullptr;
+                  },
+                  &job) == 0;
     pthread_attr_destroy(&attr);
     return ok;
   };
   pthread_t thread;
-  // A huge request can fail where address space is limited (ulimit -v): fall back to less.
-  if (!start(stack_bytes, thread) && !start(kMinStackBytes, thread)) {
-    fn();  // no thread available: run here, with the default stack
+  // A huge request can fail where address space is limited (ulimit -v): ask for less, and
+  // let the stack check end a recursion the smaller stack cannot hold.
+  bool started = false;
+  for (std::size_t bytes = stack_bytes; !started && bytes >= kSmallestStackBytes; bytes /= 2)
+    started = start(bytes, thread);
+  if (!started) {
+    auto [floor, size] = stack_floor_of_this_thread();
+    fn(floor, size);  // no thread available: run here, with this thread's stack
     return;
   }
   pthread_join(thread, nullptr);
@@ -77,9 +104,12 @@ EvalResult evaluate_source(SourceManager& sources, const SourceFile& file, const
   std::size_t stack =
       std::clamp<std::size_t>(kMinStackBytes + std::size_t(options.limits.max_recursion) * kStackBytesPerMacroLevel,
                               kMinStackBytes, kMaxStackBytes);
-  run_with_big_stack(stack, [&] {
+  run_with_big_stack(stack, [&](std::uintptr_t floor, std::size_t bytes) {
     runtime::Interpreter interp(sources, options, warnings);
+    interp.set_stack_floor(floor, bytes);
     interp.run(file);
+    result.world_shapes = interp.world_shapes();
+    result.world_lights = interp.world_lights();
     result.scene = interp.finish();
     result.parse_seconds = interp.parse_seconds();
   });

@@ -28,12 +28,18 @@ struct Define {
   std::string name, value;
 };
 
-// Limits no sensible scene reaches; each has a command-line flag to raise it.
+// Limits no sensible scene reaches; each has a command-line flag to raise it
+// (docs/reliability.md lists them).
 struct EvalLimits {
   uint64_t max_iterations = 10'000'000;         // --max-iterations: loop iterations, in total
+  // --max-steps: loop iterations + macro calls + list elements and string bytes built.
+  uint64_t max_steps = 100'000'000;
   unsigned max_recursion = 1000;                // --max-recursion: macro call depth
-  std::size_t max_objects = 10'000'000;         // --max-objects: object placements, in total
+  // --max-objects: object placements, and objects in the world once groups are expanded.
+  std::size_t max_objects = 10'000'000;
   std::size_t max_mesh_triangles = 50'000'000;  // --max-mesh-triangles: OBJ + inline meshes
+  // --max-memory: bytes the process may hold (checked where big values are made); 0: none.
+  std::size_t max_memory = 0;
 };
 
 struct EvalOptions {
@@ -41,12 +47,18 @@ struct EvalOptions {
   std::vector<Define> defines;             // -D
   EvalLimits limits;
   bool warn_unused = false;                // `rts check`: warn about unused declarations
+  // Folders a scene may read from besides its own, the -I folders and the current folder
+  // (--allow-read; "/" lifts the restriction). restrict_reads = false: read anything (tests).
+  std::vector<std::string> allow_read;
+  bool restrict_reads = false;
 };
 
 struct EvalResult {
   render::SceneDesc scene;
   double seconds = 0.0;  // wall-clock time of parsing + evaluation
   double parse_seconds = 0.0;  // the parsing part of `seconds` (every file, included ones too)
+  // Shapes and lights in the world once groups are expanded (for "renders nothing" warnings).
+  uint64_t world_shapes = 0, world_lights = 0;
 };
 
 // Parses and evaluates the scene file at `path` (loaded through `sources`, which must outlive

@@ -17,6 +17,17 @@ namespace fs = std::filesystem;
 namespace {
 // Builtin calls with at most this many arguments keep them on the C++ stack.
 constexpr std::size_t kInlineArgs = 8;
+// The resident size is read (a small /proc read) once per this many evaluation steps, so
+// that memory growth no single check sees (many small values) is still bounded.
+constexpr uint64_t kStepsPerMemoryCheck = 1 << 16;
+// Growing a list or string by less than this is not worth a memory check of its own.
+constexpr std::size_t kBigAllocationBytes = 1 << 20;
+// Included files must be named like scenes: rts never shows excerpts of other files (a
+// mistyped `include "/etc/shadow"` would otherwise print its first line in a syntax error).
+bool is_scene_file_name(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  return ext == ".rts" || ext == ".inc";
+}
 }  // namespace
 
 Interpreter::Interpreter(SourceManager& sources, const EvalOptions& options, DiagnosticSink& warnings)
@@ -68,6 +79,17 @@ LanguageError Interpreter::from_scene_error(const render::SceneError& e) const {
 // ---------------------------------------------------------------------------------------
 
 void Interpreter::run(const SourceFile& main) {
+  if (options_.restrict_reads) {
+    std::vector<std::string> roots;
+    std::string main_dir = fs::path(main.path()).parent_path().string();
+    roots.push_back(main_dir.empty() ? "." : main_dir);
+    roots.insert(roots.end(), options_.include_paths.begin(), options_.include_paths.end());
+    roots.push_back(".");
+    roots.insert(roots.end(), options_.allow_read.begin(), options_.allow_read.end());
+    read_policy_ = render::ReadPolicy(roots);
+    builder_.set_read_policy(read_policy_);
+  }
+  next_memory_check_ = options_.limits.max_memory ? kStepsPerMemoryCheck : UINT64_MAX;
   try {
     files_by_name_[main.path().c_str()] = &main;
     programs_.push_back(timed_parse(main));
@@ -97,6 +119,14 @@ void Interpreter::run(const SourceFile& main) {
     throw;
   } catch (const render::SceneError& e) {
     throw from_scene_error(e);
+  } catch (const std::bad_alloc&) {
+    // The machine (or a ulimit) refused memory before --max-memory was reached.
+    Diagnostic d;
+    d.loc = current_loc_;
+    d.message = "out of memory: the system refused more memory while running this statement "
+                "(lower what the scene builds, or check ulimit -v)";
+    add_notes(d);
+    throw LanguageError(std::move(d));
   }
   if (options_.warn_unused) warn_unused(main);
   for (const DefineExpr& d : defines_)
@@ -141,11 +171,15 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
   }
   std::error_code ec;
   const fs::path* found = nullptr;
-  for (const fs::path& c : candidates)
+  for (const fs::path& c : candidates) {
     if (fs::is_regular_file(c, ec)) {
       found = &c;
       break;
     }
+    // A directory, FIFO or device of that name is named as such (reading a FIFO would block).
+    if (std::string kind = render::non_regular_kind(c.string()); !kind.empty())
+      fail(s.loc, fmt::format("cannot include '{}': '{}' is {}, not a scene file", s.path, c.string(), kind));
+  }
   if (!found) {
     std::string where = "next to this file";
     if (!options_.include_paths.empty()) {
@@ -156,6 +190,12 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
     fail(s.loc, fmt::format("cannot find include file '{}' {}", s.path, where));
   }
   std::string canonical = fs::weakly_canonical(*found, ec).string();
+  if (!read_policy_.allows(found->string())) fail(s.loc, read_policy_.refusal(s.path, found->string()));
+  if (!is_scene_file_name(canonical))
+    fail(s.loc, fmt::format("cannot include '{}': included files must be scene files named *.rts or *.inc{}", s.path,
+                            canonical != found->lexically_normal().string()
+                                ? fmt::format(" (it leads to '{}')", canonical)
+                                : ""));
   contexts_.push_back(Context{Context::Include, s.loc, nullptr});
   for (const std::string& open : include_chain_)
     if (open == canonical) {
@@ -309,6 +349,7 @@ Flow Interpreter::exec_list(const ast::StmtList& stmts) {
 }
 
 Flow Interpreter::exec_body(const ast::Body& body) {
+  check_stack(body.stmts.empty() ? current_loc_ : body.stmts.front()->loc);
   push_scope();
   Flow f = exec_list(body.stmts);
   pop_scope();
@@ -316,6 +357,7 @@ Flow Interpreter::exec_body(const ast::Body& body) {
 }
 
 Flow Interpreter::exec(const ast::Stmt& s) {
+  current_loc_ = s.loc;
   switch (s.kind) {
     case ast::StmtKind::Let:
       exec_let(static_cast<const ast::LetStmt&>(s));
@@ -375,7 +417,81 @@ Flow Interpreter::exec(const ast::Stmt& s) {
 
 void Interpreter::exec_let(const ast::LetStmt& s) { declare(s.name, eval(*s.value), s.name_loc); }
 
+bool Interpreter::exec_append(const ast::AssignStmt& s) {
+  const ast::Expr* rhs = nullptr;
+  if (s.op == ast::AssignOp::Add) {
+    rhs = s.value.get();
+  } else if (s.op == ast::AssignOp::Set && s.value->kind == ast::ExprKind::Binary) {
+    const auto& bin = static_cast<const ast::BinaryExpr&>(*s.value);
+    if (bin.op == ast::BinaryOp::Add && bin.lhs->kind == ast::ExprKind::Name &&
+        static_cast<const ast::NameExpr&>(*bin.lhs).name == s.name)
+      rhs = bin.rhs.get();
+  }
+  if (!rhs) return false;
+  Binding* b = lookup(s.name);
+  if (!b || (b->value.type != Type::List && b->value.type != Type::String)) return false;
+  // The left operand is taken first, as `a + b` always does; evaluating the right one may
+  // rebind the variable (a macro assigning it), in which case `old` is still the value.
+  Value old = b->value;
+  Value v = eval(*rhs);
+  SourceLoc loc = s.op == ast::AssignOp::Add ? s.loc : static_cast<const ast::BinaryExpr&>(*s.value).op_loc;
+  if (v.type != old.type) {
+    Value r = binary_op(ast::BinaryOp::Add, old, v, loc);  // the usual type error
+    lookup(s.name)->value = std::move(r);
+    return true;
+  }
+  b = lookup(s.name);  // bindings may have moved while evaluating the right operand
+  if (b->value.ref == old.ref) b->value = Value::none();  // `old` now holds the only reference (if no one else does)
+  Value r = concat(std::move(old), v, loc);
+  lookup(s.name)->value = std::move(r);
+  return true;
+}
+
+Value Interpreter::concat(Value a, const Value& b, SourceLoc loc) {
+  const bool unique = a.ref.use_count() == 1;
+  if (a.type == Type::String) {
+    const std::string& tail = as_string(b);
+    const std::string& head = as_string(a);
+    spend(unique ? tail.size() : head.size() + tail.size(), loc, "string bytes built");
+    if (!unique || head.size() + tail.size() > head.capacity()) {
+      std::size_t bytes = unique ? std::max(2 * head.capacity(), head.size() + tail.size()) : head.size() + tail.size();
+      if (bytes >= kBigAllocationBytes) check_memory(bytes, loc, "this string");
+    }
+    if (!unique) return Value::string(head + tail);
+    static_cast<StringValue&>(*a.ref).text += tail;  // b may be a itself: += copes with that
+    return a;
+  }
+  const std::vector<Value>& head = as_list(a);
+  const std::vector<Value>& tail = as_list(b);
+  const std::size_t n = head.size() + tail.size();
+  spend(unique ? tail.size() : n, loc, "list elements built");
+  if (!unique || n > head.capacity()) {
+    std::size_t count = unique ? std::max(2 * head.capacity(), n) : n;
+    if (count * sizeof(Value) >= kBigAllocationBytes) check_memory(count * sizeof(Value), loc, "this list");
+  }
+  if (!unique) {
+    std::vector<Value> items;
+    items.reserve(n);
+    items.insert(items.end(), head.begin(), head.end());
+    items.insert(items.end(), tail.begin(), tail.end());
+    Value list = Value::list(std::move(items));
+    check_nesting(list, loc);
+    return list;
+  }
+  auto& list = static_cast<ListValue&>(*a.ref);
+  if (a.ref == b.ref) {  // xs + xs: inserting a range of a vector into itself is undefined
+    std::vector<Value> copy = tail;
+    list.items.insert(list.items.end(), copy.begin(), copy.end());
+  } else {
+    list.items.insert(list.items.end(), tail.begin(), tail.end());
+    list.depth = std::max(list.depth, nesting_depth(b));
+    check_nesting(a, loc);
+  }
+  return a;
+}
+
 void Interpreter::exec_assign(const ast::AssignStmt& s) {
+  if (exec_append(s)) return;
   Value v = eval(*s.value);
   Binding* b = lookup(s.name);
   if (!b) {
@@ -414,6 +530,33 @@ void Interpreter::count_iteration(SourceLoc loc) {
   if (++iterations_ > options_.limits.max_iterations)
     fail(loc, fmt::format("loops ran more than {} iterations in total (raise the limit with --max-iterations)",
                           options_.limits.max_iterations));
+  spend(1, loc, "loop iterations");
+}
+
+void Interpreter::check_budgets(SourceLoc loc, const char* what) {
+  if (steps_ > options_.limits.max_steps)
+    fail(loc, fmt::format("evaluation ran more than {} steps (loop iterations, macro calls and list elements and "
+                          "string bytes built); it ran away here, in {} (raise the limit with --max-steps)",
+                          options_.limits.max_steps, what));
+  next_memory_check_ = steps_ + kStepsPerMemoryCheck;
+  check_memory(0, loc, what);
+}
+
+void Interpreter::check_memory(std::size_t bytes, SourceLoc loc, const char* what) {
+  const std::size_t max = options_.limits.max_memory;
+  if (render::memory_fits(max, bytes)) return;
+  if (bytes > 0)
+    fail(loc, fmt::format("{} would need {} more memory, past the memory limit of {} (raise it with --max-memory)",
+                          what, render::size_in_words(bytes), render::size_in_words(max)));
+  fail(loc, fmt::format("the scene uses more than the memory limit of {} (it was building {} here; raise the limit "
+                        "with --max-memory)",
+                        render::size_in_words(max), what));
+}
+
+void Interpreter::stack_exhausted(SourceLoc loc) {
+  fail(loc, fmt::format("evaluation nested too deeply for its {} stack at macro depth {} (the stack could not be made "
+                        "larger: lower --max-recursion or the nesting of the scene)",
+                        render::size_in_words(stack_bytes_), macro_depth_));
 }
 
 Flow Interpreter::exec_for(const ast::ForStmt& s) {
@@ -498,6 +641,7 @@ Value Interpreter::eval(const ast::Expr& e) {
     }
     case ast::ExprKind::List: {
       const auto& le = static_cast<const ast::ListExpr&>(e);
+      spend(le.elements.size(), e.loc, "list elements built");
       std::vector<Value> items;
       items.reserve(le.elements.size());
       for (const ast::ExprPtr& x : le.elements) items.push_back(eval(*x));
@@ -553,6 +697,8 @@ Value Interpreter::eval_binary(const ast::BinaryExpr& e) {
   }
   Value a = eval(*e.lhs);
   Value b = eval(*e.rhs);
+  if (e.op == ast::BinaryOp::Add && a.type == b.type && (a.type == Type::List || a.type == Type::String))
+    return concat(std::move(a), b, e.op_loc);
   return binary_op(e.op, a, b, e.op_loc);
 }
 
@@ -704,6 +850,10 @@ Value Interpreter::call_macro(const ast::MacroStmt& m, const ast::CallExpr& call
   if (macro_depth_ >= options_.limits.max_recursion)
     fail(call.loc, fmt::format("macro calls nested deeper than {} (raise the limit with --max-recursion)",
                                options_.limits.max_recursion));
+  check_stack(call.loc);
+  // A macro call is a step (a recursion that doubles, f(d-1) f(d-1), never nests deep).
+  if (++steps_ > options_.limits.max_steps || steps_ >= next_memory_check_)
+    check_budgets(call.loc, fmt::format("calls to macro '{}'", *m.name).c_str());
 
   contexts_.push_back(Context{Context::Macro, call.loc, m.name});
   const std::size_t saved_base = frame_base_;

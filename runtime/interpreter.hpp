@@ -23,6 +23,7 @@
 #include "parser/ast.hpp"
 #include "parser/diagnostics.hpp"
 #include "parser/source.hpp"
+#include "render/resource_limits.hpp"
 #include "render/scene_builder.hpp"
 #include "runtime/evaluator.hpp"
 #include "runtime/value.hpp"
@@ -82,6 +83,21 @@ class Interpreter {
   void add_notes(Diagnostic& d) const;
   // Converts a builder SceneError into a located LanguageError.
   LanguageError from_scene_error(const render::SceneError& e) const;
+  // Counts `n` evaluation steps of kind `what` ("macro calls", "list elements built"...)
+  // against --max-steps, and now and then the process's memory against --max-memory.
+  void spend(uint64_t n, SourceLoc loc, const char* what) {
+    steps_ += n;
+    if (steps_ > options_.limits.max_steps || steps_ >= next_memory_check_) check_budgets(loc, what);
+  }
+  // Fails (located) unless `bytes` more fit under --max-memory; `what` names the value.
+  void check_memory(std::size_t bytes, SourceLoc loc, const char* what);
+  // The lowest stack address evaluation may reach before failing cleanly (0: unchecked).
+  void set_stack_floor(std::uintptr_t floor, std::size_t stack_bytes) {
+    stack_floor_ = floor;
+    stack_bytes_ = stack_bytes;
+  }
+  uint64_t world_shapes() const { return world_objects_.shapes; }
+  uint64_t world_lights() const { return world_objects_.lights; }
 
  private:
   // statements (interpreter.cpp)
@@ -99,6 +115,19 @@ class Interpreter {
   // Warns about each material, texture, object and macro declared at the top level of the
   // main file and never named again (options_.warn_unused).
   void warn_unused(const SourceFile& main);
+  void check_budgets(SourceLoc loc, const char* what);
+  void check_stack(SourceLoc loc) {
+    if (stack_floor_ && reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0)) < stack_floor_)
+      stack_exhausted(loc);
+  }
+  [[noreturn]] void stack_exhausted(SourceLoc loc);
+  // `xs = xs + e` and `xs += e` on a list or string: appends in place when the variable
+  // holds the only reference. Returns false when the statement is not of that form.
+  bool exec_append(const ast::AssignStmt& s);
+  // a + b for two lists or two strings, counted against the step and memory budgets;
+  // appends in place when `a` holds the only reference to its list or string.
+  Value concat(Value a, const Value& b, SourceLoc loc);
+  const render::ReadPolicy& read_policy() const { return read_policy_; }
 
   // scopes
   void push_scope() { scopes_.push_back(bindings_.size()); }
@@ -141,6 +170,15 @@ class Interpreter {
   render::ParamSet to_params(const std::string& kind, SourceLoc loc, const std::vector<Property>& props);
   render::ParamValue to_param(const Property& p, const std::string& kind);
   void place(const Value& object, SourceLoc loc);
+  // Shapes and lights a node stands for once groups are expanded (1 for a shape or light).
+  struct ObjectCount {
+    uint64_t shapes = 0, lights = 0;
+    uint64_t total() const { return shapes + lights; }
+  };
+  void record_node(uint32_t id, ObjectCount count);
+  ObjectCount node_count(uint32_t id) const {
+    return id < node_counts_.size() ? node_counts_[id] : ObjectCount{};
+  }
 
   SourceManager& sources_;
   const EvalOptions& options_;
@@ -159,6 +197,14 @@ class Interpreter {
   double parse_seconds_ = 0.0;
   uint64_t iterations_ = 0;
   std::size_t placements_ = 0;
+  uint64_t steps_ = 0;
+  uint64_t next_memory_check_ = 0;
+  SourceLoc current_loc_;  // the statement running now (for out-of-memory errors)
+  std::uintptr_t stack_floor_ = 0;
+  std::size_t stack_bytes_ = 0;
+  std::vector<ObjectCount> node_counts_;  // by NodeId
+  ObjectCount world_objects_;             // placed in the world, groups expanded
+  render::ReadPolicy read_policy_;
 
   // Placement target: the world (null), a group's children, or "nowhere" (inside a
   // non-group block, where placing an object is an error).
