@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "render/sampler.hpp"
+#include "render/tolerances.hpp"
 
 namespace rts::render {
 namespace {
@@ -30,6 +31,8 @@ void PixelRenderer::render(int x, int y, Frame& frame, RayCounters& counters) co
       ++counters.nan_samples;  // never let one bad sample poison the pixel
       c = Rgb(0.0);
     }
+    // Saturated (sums over bounces may pass kMaxRadiance) so the float image stays finite.
+    c = glm::min(c, Rgb(tol::kMaxRadiance));
     sum += c;
     double lum = kLumR * c.x + kLumG * c.y + kLumB * c.z;
     double delta = lum - mean;

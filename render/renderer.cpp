@@ -20,6 +20,7 @@
 #include "render/pixel_renderer.hpp"
 #include "render/progress.hpp"
 #include "render/texture.hpp"
+#include "render/tolerances.hpp"
 #include "render/world.hpp"
 
 namespace rts::render {
@@ -39,7 +40,7 @@ struct ResolvedSettings {
   uint64_t seed;
 };
 
-ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o) {
+ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o, std::vector<Warning>& warnings) {
   const Settings& s = scene.settings;
   ResolvedSettings r{o.width.value_or(s.width), o.height.value_or(s.height),
                      o.samples.value_or(s.samples), o.max_depth.value_or(s.max_depth),
@@ -48,6 +49,14 @@ ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o) {
     throw RenderError(s.loc, fmt::format("image size {}x{} must be at least 1x1", r.width, r.height));
   if (r.samples < 1) throw RenderError(s.loc, fmt::format("samples must be at least 1, got {}", r.samples));
   if (r.max_depth < 0) throw RenderError(s.loc, fmt::format("max_depth must be at least 0, got {}", r.max_depth));
+  if (r.max_depth > tol::kMaxDepth) {
+    // The bounce loop is iterative, so this bounds time, not memory: between two perfect
+    // mirrors every level is one more ray for each pixel that sees them.
+    warnings.push_back({o.max_depth ? SourceRef{} : s.loc,
+                        fmt::format("max_depth {} is capped at {} (deeper bounces only add render time)",
+                                    r.max_depth, tol::kMaxDepth)});
+    r.max_depth = tol::kMaxDepth;
+  }
   std::size_t pixels = static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
   if (pixels > o.max_pixels)
     throw RenderError(s.loc, fmt::format("image of {}x{} = {} pixels exceeds the limit of {} pixels",
@@ -81,8 +90,8 @@ Prepared prepare(const SceneDesc& scene) {
 
 RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   auto build_start = Clock::now();
-  ResolvedSettings rs = resolve(scene, options);
   RenderResult result;
+  ResolvedSettings rs = resolve(scene, options, result.warnings);
   Frame frame;
   allocate_frame(result, rs.width, rs.height, parse_aovs(options.aovs), scene.settings.loc, frame);
 
