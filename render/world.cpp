@@ -158,6 +158,10 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
   if (inst.kind == PrimKind::Mesh) {
     return meshes_[inst.index]->occluded(object_ray(inst, world_ray), ray_t);
   }
+  if (inst.kind == PrimKind::Sphere) {  // the root alone: no hit point, normal or error bound
+    double t;
+    return sphere_root(spheres_[inst.index], object_ray(inst, world_ray), ray_t, t);
+  }
   SurfaceHit scratch;
   return intersect_instance(inst, world_ray, ray_t, scratch);
 }
@@ -171,7 +175,7 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   // (speckles). Hits within `tie` of the closest count as the same distance and the lower
   // instance index wins: one surface shows, the same for every ray and thread.
   const double tie_scale =
-      tol::kCoincidentRelative * max_abs_component(ray.origin) / glm::length(ray.direction);
+      tol::kCoincidentRelative * max_abs_component(ray.origin) / max_abs_component(ray.direction);
   // Instance i hit within t_range: keep it as the closest so far and end the range there.
   auto closer = [&](uint32_t i, Interval& t_range) {
     if (transmissive_only && !instances_[i].transmissive) return false;
