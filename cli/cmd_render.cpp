@@ -63,6 +63,15 @@ void print_error(const render::SourceRef& where, const std::string& message, con
   }
 }
 
+void print_warnings(const std::vector<render::Warning>& warnings) {
+  for (const render::Warning& w : warnings) {
+    if (w.where.file && *w.where.file)
+      std::cerr << fmt::format("{}:{}:{}: warning: {}\n", w.where.file, w.where.line, w.where.col, w.message);
+    else
+      std::cerr << "rts: warning: " << w.message << "\n";
+  }
+}
+
 // <out>.normal.png beside OUT.png (the .png extension is replaced, other names get a suffix).
 std::string aov_path(const std::string& out, const std::string& name) {
   fs::path p(out);
@@ -152,7 +161,9 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
 
   try {
     check_output_writable(out);
+    print_warnings(scene.warnings);
     render::RenderResult result = render::render(scene, opts);
+    print_warnings(result.warnings);
     result.stats.eval_seconds = eval_seconds;
     result.stats.parse_seconds = parse_seconds;
     auto write_start = std::chrono::steady_clock::now();

@@ -293,13 +293,9 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   Rgb kr = to_rgb(m.reflect), kt = to_rgb(m.transmit);
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Vec3 refracted(0.0);
-  MediumStack refracted_media = pr.media;
+  Interface f;
   if (!is_black(kt)) {
-    Interface f = interface(pr.media, hit.instance, m, entering);
-    if (entering)
-      refracted_media.enter(hit.instance, f.n_to);
-    else
-      refracted_media.leave(hit.instance);
+    f = interface(pr.media, hit.instance, m, entering);
     // With fresnel, the interface splits one budget, max(reflect, transmit) per channel,
     // between the two directions: a fraction F reflects, 1 - F (filtered by `transmit`)
     // passes, so kr + kt never exceeds the larger weight (1 for clear glass, whatever
@@ -328,7 +324,12 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   if (max_channel(kt * pr.weight) > tol::kMinPathWeight) {
     ++path.counters.refraction;
     Ray r{offset_ray_origin(hit.point, ng, refracted, hit.error), refracted};
-    pending.push_back(PendingRay{r, saturate(pr.weight * kt), pr.depth + 1, refracted_media});
+    pending.push_back(PendingRay{r, saturate(pr.weight * kt), pr.depth + 1, pr.media});
+    // The refracted ray is inside the object now, or has left it.
+    if (entering)
+      pending.back().media.enter(hit.instance, f.n_to);
+    else
+      pending.back().media.leave(hit.instance);
   }
   if (max_channel(kr * pr.weight) > tol::kMinPathWeight) {
     Vec3 mirror = incident + 2.0 * cos_i * n;

@@ -42,7 +42,8 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     l.inv_strata = 1.0 / (l.strata_side > 0 ? l.strata_side : l.samples);
     l.constant_attenuation = d.attenuation.y == 0.0 && d.attenuation.z == 0.0;
     l.sample_power = l.power / static_cast<double>(l.samples);
-    if (l.constant_attenuation) l.sample_power *= attenuation_factor(l.attenuation, 0.0);
+    if (l.constant_attenuation)
+      l.sample_power = glm::min(l.sample_power * attenuation_factor(l.attenuation, 0.0), Rgb(tol::kMaxRadiance));
     l.shadows = d.shadows;
     out.push_back(l);
   }

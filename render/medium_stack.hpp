@@ -19,7 +19,10 @@ class MediumStack {
   // The absolute index of `instance` if the path is inside it.
   bool find(uint32_t instance, double& ior) const {
     for (int i = size_ - 1; i >= 0; --i)
-      if (entries_[i].instance == instance) return ior = entries_[i].ior, true;
+      if (entries_[i].instance == instance) {
+        ior = entries_[i].ior;
+        return true;
+      }
     return false;
   }
 
@@ -38,7 +41,7 @@ class MediumStack {
   // Deeper nesting than the stack holds is not tracked: the path keeps the ratio of the
   // innermost media it does track (documented in docs/rendering.md).
   void enter(uint32_t instance, double ior) {
-    if (size_ < tol::kMaxNestedMedia) entries_[size_++] = Entry{instance, ior};
+    if (size_ < tol::kMaxNestedMedia) entries_[size_++] = Entry{instance, static_cast<float>(ior)};
   }
 
   void leave(uint32_t instance) {
@@ -53,9 +56,11 @@ class MediumStack {
   int size() const { return size_; }
 
  private:
+  // Float indices keep a pending ray small (it is copied on every bounce); 1e-7 relative is
+  // far below any index a scene states.
   struct Entry {
     uint32_t instance;
-    double ior;
+    float ior;
   };
   std::array<Entry, tol::kMaxNestedMedia> entries_{};
   int size_ = 0;

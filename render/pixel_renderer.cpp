@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "render/sampler.hpp"
+#include "render/tolerances.hpp"
+
 namespace rts::render {
 namespace {
 
@@ -44,6 +47,8 @@ void PixelRenderer::add_samples(int x, int y, uint32_t count, PixelAccum& acc, R
       ++counters.nan_samples;  // never let one bad sample poison the pixel
       c = Rgb(0.0);
     }
+    // Saturated (sums over bounces may pass kMaxRadiance) so the float image stays finite.
+    c = glm::min(c, Rgb(tol::kMaxRadiance));
     acc.sum[batch][0] += c.x;
     acc.sum[batch][1] += c.y;
     acc.sum[batch][2] += c.z;

@@ -25,6 +25,7 @@
 #include "render/progress.hpp"
 #include "render/resource_limits.hpp"
 #include "render/texture.hpp"
+#include "render/tolerances.hpp"
 #include "render/world.hpp"
 
 namespace rts::render {
@@ -45,7 +46,7 @@ struct ResolvedSettings {
   SamplerKind sampler;
 };
 
-ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o) {
+ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o, std::vector<Warning>& warnings) {
   const Settings& s = scene.settings;
   ResolvedSettings r{o.width.value_or(s.width), o.height.value_or(s.height),
                      o.samples.value_or(s.samples), o.max_depth.value_or(s.max_depth),
@@ -59,6 +60,14 @@ ResolvedSettings resolve(const SceneDesc& scene, const RenderOptions& o) {
   if (!(o.time_limit >= 0) || !std::isfinite(o.time_limit))
     throw RenderError({}, fmt::format("time limit must be a finite number of seconds >= 0, got {}", o.time_limit));
   if (r.max_depth < 0) throw RenderError(s.loc, fmt::format("max_depth must be at least 0, got {}", r.max_depth));
+  if (r.max_depth > tol::kMaxDepth) {
+    // The bounce loop is iterative, so this bounds time, not memory: between two perfect
+    // mirrors every level is one more ray for each pixel that sees them.
+    warnings.push_back({o.max_depth ? SourceRef{} : s.loc,
+                        fmt::format("max_depth {} is capped at {} (deeper bounces only add render time)",
+                                    r.max_depth, tol::kMaxDepth)});
+    r.max_depth = tol::kMaxDepth;
+  }
   std::size_t pixels = static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
   if (pixels > o.max_pixels)
     throw RenderError(s.loc, fmt::format("image of {}x{} = {} pixels exceeds the limit of {} pixels",
@@ -188,8 +197,8 @@ std::vector<double> channel_mean_variance(const std::vector<PixelEstimate>& est)
 
 RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   auto build_start = Clock::now();
-  ResolvedSettings rs = resolve(scene, options);
   RenderResult result;
+  ResolvedSettings rs = resolve(scene, options, result.warnings);
   Frame frame;
   allocate_frame(result, rs.width, rs.height, parse_aovs(options.aovs), scene.settings.loc, frame);
 

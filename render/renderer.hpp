@@ -35,6 +35,7 @@ struct RenderResult {
   Image color;                            // linear RGB
   std::map<std::string, Image> aovs;      // name → image (already display-ready values)
   RenderStats stats;
+  std::vector<Warning> warnings;          // settings adjusted to render (max_depth capped)
 };
 
 // Throws RenderError (located where possible) for unreadable textures, oversize images...

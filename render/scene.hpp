@@ -188,6 +188,7 @@ struct SceneDesc {
   std::vector<GroupDesc> groups;
   std::vector<Node> nodes;
   std::vector<Child> roots;        // instances placed in the world
+  std::vector<Warning> warnings;   // from building: what is skipped (not part of dump())
 
   // A deterministic, human-readable dump (`rts eval`); golden tests compare it.
   void dump(std::ostream& out) const;

@@ -11,6 +11,7 @@
 #include "render/aabb.hpp"
 #include "render/lights.hpp"
 #include "render/obj_loader.hpp"
+#include "render/tolerances.hpp"
 
 namespace rts::render {
 
@@ -321,6 +322,41 @@ std::vector<Vec3> vector_list(ParamSet& ps, std::string_view name) {
                    fmt::format("property '{}' of mesh expects a list of vectors, got a {}", name, param_type_name(*v)));
 }
 
+// Zero area by the renderer's own test (the angle between the edges below
+// tol::kTriangleDeterminant): such triangles are never hit.
+bool degenerate_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  Vec3 e1 = b - a, e2 = c - a;
+  Vec3 n = glm::cross(e1, e2);
+  double k = tol::kTriangleDeterminant;
+  return !(glm::dot(n, n) > k * k * glm::dot(e1, e1) * glm::dot(e2, e2));
+}
+
+// One warning per mesh: how many faces are skipped and how many vertex normals cannot be
+// used (zero length or NaN: the face normal shades there instead).
+void warn_degenerate(const MeshData& mesh, SourceRef where, std::vector<Warning>& warnings) {
+  std::size_t faces = mesh.indices.size() / 3, skipped = 0, first = 0;
+  for (std::size_t f = 0; f < faces; ++f) {
+    const uint32_t* i = &mesh.indices[f * 3];
+    if (i[0] >= mesh.positions.size() || i[1] >= mesh.positions.size() || i[2] >= mesh.positions.size()) continue;
+    if (degenerate_triangle(Vec3(mesh.positions[i[0]]), Vec3(mesh.positions[i[1]]), Vec3(mesh.positions[i[2]])) &&
+        skipped++ == 0)
+      first = f;
+  }
+  if (skipped > 0)
+    warnings.push_back({where, fmt::format("mesh: {} of {} faces have zero area (collinear or repeated vertices; "
+                                           "first: face {}): they are skipped",
+                                           skipped, faces, first)});
+  std::size_t bad_normals = 0;
+  for (const glm::vec3& n : mesh.normals) {
+    float len2 = glm::dot(n, n);
+    if (!(len2 > 0.0f) || !std::isfinite(len2)) ++bad_normals;
+  }
+  if (bad_normals > 0)
+    warnings.push_back({where, fmt::format("mesh: {} of {} vertex normals are zero or not finite: the face normal "
+                                           "is used there",
+                                           bad_normals, mesh.normals.size())});
+}
+
 }  // namespace
 
 NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
@@ -352,6 +388,8 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       g.n1 = ps.vec3("n1", Vec3(0.0));
       g.n2 = ps.vec3("n2", Vec3(0.0));
     }
+    if (degenerate_triangle(g.v0, g.v1, g.v2))
+      scene_.warnings.push_back({ps.loc(), "triangle has zero area (collinear or repeated vertices): it is skipped"});
     s.geometry = g;
     ps.check_unused(kTriangleNames);
   } else if (kind == "box") {
@@ -439,6 +477,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
         for (int k = 0; k < 3; ++k) mesh->indices.push_back(mesh_index(ps, f[k], vertices.size()));
       if (normals.empty() && g.smooth) compute_smooth_normals(*mesh);
     }
+    if (mesh) warn_degenerate(*mesh, ps.loc(), scene_.warnings);
     if (mesh) {  // newly built or loaded
       mesh_triangles_ += mesh->indices.size() / 3;
       if (mesh_triangles_ > limits_.max_mesh_triangles)

@@ -15,6 +15,13 @@ struct SourceRef {
   uint32_t col = 0;
 };
 
+// Something the scene asked for that is skipped or changed rather than refused (a zero-area
+// triangle, NaN normals, max_depth above the cap): shown as "file:line:col: warning: ...".
+struct Warning {
+  SourceRef where;
+  std::string message;
+};
+
 // A scene that cannot be built: unknown/missing/mistyped property, unreadable mesh file...
 // `where` is the most precise location known (the property, else the block).
 struct SceneError : std::runtime_error {

@@ -25,6 +25,13 @@ inline constexpr double kParallelCosine = 1e-14;
 // degenerate (zero area): they are never hit, so they can never produce NaN normals.
 inline constexpr double kTriangleDeterminant = 1e-14;
 
+// Two hits whose t differ by less than this (relative to t and to the ray origin's distance
+// from the world origin, over |d|) are treated as coincident surfaces: the lower instance
+// index wins (World::intersect). Rounding of t is ~1e-16 of those scales, divided by the
+// cosine of incidence; 1e-12 covers incidence down to ~1e-3 and is far below any gap a scene
+// can mean (a box 1e-9 above a plane seen from 5 units differs by 4e-10 relative).
+inline constexpr double kCoincidentRelative = 1e-12;
+
 // Camera `up` counts as parallel to the view direction when |up x forward| is below this
 // fraction of |up|: the image would have no defined "up".
 inline constexpr double kParallelVectors = 1e-12;

@@ -160,6 +160,10 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
   if (inst.kind == PrimKind::Mesh) {
     return meshes_[inst.index]->occluded(object_ray(inst, world_ray), ray_t);
   }
+  if (inst.kind == PrimKind::Sphere) {  // the root alone: no hit point, normal or error bound
+    double t;
+    return sphere_root(spheres_[inst.index], object_ray(inst, world_ray), ray_t, t);
+  }
   SurfaceHit scratch;
   return intersect_instance(inst, world_ray, ray_t, scratch);
 }
@@ -167,14 +171,27 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
 bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only) const {
   SurfaceHit best;
   uint32_t best_instance = 0;
+  bool have_best = false;
+  // Coincident surfaces (coplanar overlapping triangles, a box face on a plane) compute t's
+  // that differ only by rounding, so "closest" would pick one or the other pixel by pixel
+  // (speckles). Hits within `tie` of the closest count as the same distance and the lower
+  // instance index wins: one surface shows, the same for every ray and thread.
+  const double tie_scale =
+      tol::kCoincidentRelative * max_abs_component(ray.origin) / max_abs_component(ray.direction);
   // Instance i hit within t_range: keep it as the closest so far and end the range there.
   auto closer = [&](uint32_t i, Interval& t_range) {
     if (transmissive_only && !instances_[i].transmissive) return false;
     SurfaceHit h;
     if (!intersect_instance(instances_[i], ray, t_range, h)) return false;
-    t_range.max = h.t;
+    if (have_best) {
+      double tie = tie_scale + tol::kCoincidentRelative * best.t;
+      bool tied = std::abs(h.t - best.t) <= tie;
+      if (tied ? i > best_instance : h.t > best.t) return false;
+    }
     best = h;
     best_instance = i;
+    have_best = true;
+    t_range.max = h.t + tie_scale + tol::kCoincidentRelative * h.t;  // a tie may still follow
     return true;
   };
   bool found = false;

@@ -26,27 +26,33 @@ inline glm::dvec2 sphere_uv(const Vec3& unit_normal) {
 // the distance between the centre and the ray's closest point, not from b^2 - 4ac, which
 // cancels to nothing for a small sphere far away (r = 1e-3 at 1e4: b^2 ~ 1e16 against a
 // difference of ~1e-6); the roots come from q = b + sign(b) sqrt(...) (no cancellation).
-inline bool intersect(const Sphere& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+// The nearest root inside ray_t (shadow rays need no more than this).
+inline bool sphere_root(const Sphere& s, const Ray& ray, const Interval& ray_t, double& t) {
   if (!(s.radius > 0.0)) return false;  // zero/negative radius: nothing to hit
   Vec3 f = ray.origin - s.center;
   double a = glm::dot(ray.direction, ray.direction);
   if (!(a > 0.0)) return false;
   double b = -glm::dot(f, ray.direction);               // -b/2 of the textbook form
   Vec3 closest = f + (b / a) * ray.direction;           // centre → the ray's closest point
-  double l = glm::length(closest);
-  double disc = a * ((s.radius - l) * (s.radius + l));  // a * (r^2 - |closest|^2)
-  if (disc < 0.0) return false;
+  double disc = a * (s.radius * s.radius - glm::dot(closest, closest));
+  if (disc < 0.0) return false;  // most tests end here, without a square root
   // c as (|f|-r)(|f|+r) keeps precision for rays starting on the surface.
   double len = glm::length(f);
   double c = (len - s.radius) * (len + s.radius);
   double q = b + std::copysign(std::sqrt(disc), b);
   double t0 = q / a, t1 = q != 0.0 ? c / q : t0;
   if (t0 > t1) std::swap(t0, t1);
-  double t = t0;
+  t = t0;
   if (!ray_t.surrounds(t)) {
     t = t1;
     if (!ray_t.surrounds(t)) return false;
   }
+  return true;
+}
+
+inline bool intersect(const Sphere& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  double t;
+  if (!sphere_root(s, ray, ray_t, t)) return false;
   hit.t = t;
   // Re-project the point onto the sphere (pbrt-v4): its error is then relative to the centre
   // and radius only, not to how far the ray travelled.

@@ -1,0 +1,2 @@
+#declare Place = transform { scale 1e-6 }
+#include "sweep.inc"

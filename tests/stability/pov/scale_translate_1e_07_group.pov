@@ -1,0 +1,2 @@
+#declare Place = transform { translate <1e7, 1e7, -1e7> }
+#include "sweep.inc"

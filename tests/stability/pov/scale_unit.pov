@@ -1,0 +1,2 @@
+#declare Place = transform { scale 1 }
+#include "sweep.inc"
