@@ -105,6 +105,9 @@ void print_sampling_warnings(const std::string& out, const render::RenderStats& 
   if (e.stopped_by_time)
     std::cerr << fmt::format("rts: warning: {}: the time limit of {}s ran out; wrote the image with {:.1f} "
                              "samples per pixel on average\n", out, e.time_limit, e.mean_spp);
+  else if (e.target_error > 0 && !e.known)
+    std::cerr << fmt::format("rts: warning: {}: --target-error needs at least 2 samples per pixel as the cap "
+                             "(--samples); rendered 1 sample per pixel\n", out);
   else if (e.target_error > 0 && !e.target_reached && e.known)
     std::cerr << fmt::format("rts: warning: {}: estimated error {:.3g} did not reach the target {} within "
                              "{} samples per pixel (raise --samples)\n", out, e.rmse, e.target_error, st.samples);

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Every example scene parses, evaluates and renders (at a thumbnail size, so the suite stays
-# fast); the include-only file materials.rts is evaluated through showcase.rts.
+# fast), the convergence scenes included; the include-only file materials.rts is evaluated
+# through showcase.rts.
 source "$(dirname "$0")/lib.sh"
 
-for scene in "$SRC"/examples/*.rts; do
+for scene in "$SRC"/examples/*.rts "$SRC"/examples/convergence/*.rts; do
   name=$(basename "$scene" .rts)
   expect_exit 0 "parse $name" -- "$RTS" parse --quiet "$scene"
   expect_exit 0 "check $name" -- "$RTS" check "$scene"
