@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "render/shading.hpp"
 #include "render/tolerances.hpp"
 
 namespace rts::render {
@@ -46,7 +47,16 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
                        int max_depth)
     : world_(world), lights_(lights), materials_(materials), textures_(textures),
       background_(to_rgb(settings.background)), ambient_light_(to_rgb(settings.ambient_light)),
-      max_depth_(max_depth) {}
+      max_depth_(max_depth) {
+  if (settings.environment < textures.size()) {
+    environment_ = &textures[settings.environment];
+    environment_ambient_ = settings.environment_ambient;
+  }
+}
+
+Rgb Integrator::background(const Vec3& direction) const {
+  return environment_ ? to_rgb(environment_->eval_direction(direction)) : background_;
+}
 
 const MaterialDesc& Integrator::material(uint32_t instance) const {
   MaterialId id = world_.instance(instance).material;
@@ -97,7 +107,8 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
     WorldHit hit;
     if (!world_.intersect(ray, range, hit, /*transmissive_only=*/true)) return t;
-    Rgb kt = to_rgb(material(hit.instance).transmit);
+    MaterialDesc scratch;
+    Rgb kt = to_rgb(shading_material(material(hit.instance), world_, hit, textures_, scratch).transmit);
     t *= glm::clamp(kt, 0.0, 1.0);
     if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
     range.min = hit.t + tol::kRayOffsetAbsolute +
@@ -146,8 +157,9 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
 
 Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& path) const {
   WorldHit hit;
-  if (!world_.intersect(ray, Interval::positive(), hit)) return background_;
-  const MaterialDesc& m = material(hit.instance);
+  if (!world_.intersect(ray, Interval::positive(), hit)) return background(ray.direction);
+  MaterialDesc scratch;
+  const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
   double dir_len = glm::length(ray.direction);
   Vec3 incident = ray.direction / dir_len;
   double travelled = hit.t * dir_len;
@@ -160,11 +172,13 @@ Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& pat
   bool entering = glm::dot(ng, incident) < 0.0;
   if (!entering) ng = -ng;
   if (glm::dot(n, ng) < 0.0) n = -n;
+  n = detail_normal(m, world_, hit, n, textures_);
   Vec3 view = -incident;
   Rgb base = albedo(m, hit);
-  Rgb color = to_rgb(m.emission) + m.ambient * base * ambient_light_;
+  Rgb ambient = environment_ambient_ ? ambient_light_ * background(n) : ambient_light_;
+  Rgb color = to_rgb(m.emission) + m.ambient * base * ambient;
   Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, travelled);
-  color += direct_light(hit, m, base, n, front_origin, view, path);
+  color += direct_light(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, path);
 
   if (depth >= max_depth_) return color;
 

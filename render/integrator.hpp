@@ -43,6 +43,8 @@ class Integrator {
   Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const;
   const MaterialDesc& material(uint32_t instance) const;
   Rgb albedo(const MaterialDesc& m, const WorldHit& hit) const;
+  // What a ray that leaves the scene sees: the environment map, else the background color.
+  Rgb background(const Vec3& direction) const;
 
   const World& world_;
   const std::vector<CompiledLight>& lights_;
@@ -50,6 +52,8 @@ class Integrator {
   const std::vector<CompiledTexture>& textures_;
   MaterialDesc default_material_;
   Rgb background_, ambient_light_;
+  const CompiledTexture* environment_ = nullptr;   // settings.environment, if any
+  bool environment_ambient_ = false;
   int max_depth_;
 };
 

@@ -20,6 +20,9 @@ class MeshAccel {
   // Closest hit in object space; `smooth` interpolates the mesh's vertex normals if it has them.
   bool intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const;
   bool occluded(const Ray& ray, Interval ray_t) const;
+  // Per-vertex material values of triangle `tri` at barycentrics (b1, b2); false when the
+  // mesh has none.
+  bool vertex_material(uint32_t tri, glm::dvec2 bary, VertexMaterial& out) const;
 
  private:
   void triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const;  // by triangle index

@@ -34,7 +34,9 @@ bool parse_index(std::string_view s, long& out) {
 
 // tinyobjloader skips or clamps bad data silently, so check what it cannot report with a line:
 // unparsable vertex coordinates and face indices that point outside the arrays so far.
-void prescan(const std::string& shown, std::istream& in, SourceRef where) {
+// Returns whether any vertex carries a color (`v x y z r g b`, a common OBJ extension).
+bool prescan(const std::string& shown, std::istream& in, SourceRef where) {
+  bool colors = false;
   std::size_t counts[3] = {0, 0, 0};  // v, vt, vn
   std::string line;
   unsigned line_no = 0;
@@ -55,6 +57,7 @@ void prescan(const std::string& shown, std::istream& in, SourceRef where) {
       while (fields >> x) ++n;
       int need = tag == "vt" ? 1 : 3;
       if (n < need || !fields.eof()) fail(fmt::format("malformed '{}' line: '{}'", tag, s));
+      if (tag == "v" && n >= 6) colors = true;
       ++counts[tag == "v" ? 0 : tag == "vt" ? 1 : 2];
     } else if (tag == "f") {
       int corners = 0;
@@ -81,6 +84,7 @@ void prescan(const std::string& shown, std::istream& in, SourceRef where) {
       if (corners < 3) fail(fmt::format("face with {} corners (needs at least 3)", corners));
     }
   }
+  return colors;
 }
 
 }  // namespace
@@ -106,15 +110,16 @@ std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& s
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
     throw SceneError(where, fmt::format("cannot open mesh file '{}': no such file", shown));
+  bool has_colors = false;
   {
     std::ifstream in(path);
     if (!in) throw SceneError(where, fmt::format("cannot open mesh file '{}'", shown));
-    prescan(shown, in, where);
+    has_colors = prescan(shown, in, where);
   }
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
-  config.vertex_color = false;
+  config.vertex_color = has_colors;  // vertices without a color get white
   config.mtl_search_path = fs::path(path).parent_path().string();
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config)) {
@@ -140,6 +145,12 @@ std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& s
         if (idx.vertex_index < 0 || v + 2 >= attrib.vertices.size())
           throw SceneError(where, fmt::format("malformed mesh file '{}': vertex index out of range", shown));
         mesh->positions.emplace_back(attrib.vertices[v], attrib.vertices[v + 1], attrib.vertices[v + 2]);
+        if (has_colors) {
+          if (v + 2 < attrib.colors.size())
+            mesh->colors.emplace_back(attrib.colors[v], attrib.colors[v + 1], attrib.colors[v + 2]);
+          else
+            mesh->colors.emplace_back(1.0f);
+        }
         if (has_normals) {
           std::size_t n = static_cast<std::size_t>(idx.normal_index) * 3;
           if (idx.normal_index >= 0 && n + 2 < attrib.normals.size())

@@ -14,6 +14,20 @@ struct SurfaceHit {
   Vec3 shading_normal{0, 1, 0};  // interpolated normal (== normal unless smooth)
   glm::dvec2 uv{0.0};
   bool has_uv = false;
+  // Object-space derivatives of the point along u and v (zero when unknown), for bump and
+  // normal maps' tangent frame.
+  Vec3 dpdu{0.0}, dpdv{0.0};
+  // Triangles of meshes: the triangle index and barycentrics (b1, b2) of vertices 1 and 2, for
+  // per-vertex materials.
+  uint32_t triangle = 0;
+  glm::dvec2 bary{0.0};
+};
+
+// Per-vertex material values interpolated at a hit (each only when the mesh has it).
+struct VertexMaterial {
+  bool has_color = false, has_diffuse = false, has_specular = false, has_shininess = false;
+  Color color;
+  double diffuse = 0, specular = 0, shininess = 0;
 };
 
 }  // namespace rts::render

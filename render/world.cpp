@@ -9,6 +9,7 @@
 #include "render/shapes/cylinder.hpp"
 #include "render/shapes/disc.hpp"
 #include "render/shapes/plane.hpp"
+#include "render/shapes/quad.hpp"
 #include "render/shapes/sphere.hpp"
 #include "render/shapes/triangle.hpp"
 #include "render/tolerances.hpp"
@@ -40,6 +41,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
       InstanceTransform xf;
       xf.to_object = glm::inverse(fs.to_world);
       xf.normal_to_world = glm::transpose(glm::dmat3(xf.to_object));
+      xf.vector_to_world = glm::dmat3(fs.to_world);
       inst.transform = static_cast<uint32_t>(transforms_.size());
       transforms_.push_back(xf);
     }
@@ -68,6 +70,9 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
             object_bounds = bounds(g);
           } else if constexpr (std::is_same_v<T, Disc>) {
             inst.kind = PrimKind::Disc; inst.index = discs_.size(); discs_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Quad>) {
+            inst.kind = PrimKind::Quad; inst.index = quads_.size(); quads_.push_back(g);
             object_bounds = bounds(g);
           } else if constexpr (std::is_same_v<T, MeshRef>) {
             if (g.mesh >= scene.meshes.size() || !scene.meshes[g.mesh])
@@ -99,7 +104,8 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
 namespace {
 bool same_mesh_data(const MeshData& a, const MeshData& b) {
   return a.source == b.source && a.indices == b.indices && a.positions == b.positions &&
-         a.normals == b.normals && a.uvs == b.uvs;
+         a.normals == b.normals && a.uvs == b.uvs && a.colors == b.colors &&
+         a.diffuse == b.diffuse && a.specular == b.specular && a.shininess == b.shininess;
 }
 }  // namespace
 
@@ -140,6 +146,7 @@ bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const
     case PrimKind::Cone: return render::intersect(cones_[inst.index], ray, ray_t, hit);
     case PrimKind::Disc: return render::intersect(discs_[inst.index], ray, ray_t, hit);
     case PrimKind::Mesh: return meshes_[inst.index]->intersect(ray, ray_t, hit, inst.smooth);
+    case PrimKind::Quad: return render::intersect(quads_[inst.index], ray, ray_t, hit);
   }
   return false;
 }
@@ -178,15 +185,29 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
   // texture asks for them.
   hit.has_uv = best.has_uv || inst.kind == PrimKind::Sphere;
+  hit.triangle = best.triangle;
+  hit.bary = best.bary;
   if (inst.transform == kNoId) {
     hit.normal = glm::normalize(best.normal);
     hit.shading_normal = glm::normalize(best.shading_normal);
+    hit.dpdu = best.dpdu;
+    hit.dpdv = best.dpdv;
   } else {
-    const glm::dmat3& nm = transforms_[inst.transform].normal_to_world;
+    const InstanceTransform& xf = transforms_[inst.transform];
+    const glm::dmat3& nm = xf.normal_to_world;
     hit.normal = glm::normalize(nm * best.normal);
     hit.shading_normal = glm::normalize(nm * best.shading_normal);
+    // Tangents transform as vectors, unlike normals.
+    hit.dpdu = xf.vector_to_world * best.dpdu;
+    hit.dpdv = xf.vector_to_world * best.dpdv;
   }
   return true;
+}
+
+bool World::vertex_material(const WorldHit& hit, VertexMaterial& out) const {
+  const Instance& inst = instances_[hit.instance];
+  if (inst.kind != PrimKind::Mesh) return false;
+  return meshes_[inst.index]->vertex_material(hit.triangle, hit.bary, out);
 }
 
 glm::dvec2 World::surface_uv(const WorldHit& hit) const {

@@ -14,7 +14,7 @@
 
 namespace rts::render {
 
-enum class PrimKind : uint8_t { Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh };
+enum class PrimKind : uint8_t { Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad };
 
 // 16 bytes, so the instances a BVH leaf points at share cache lines; transforms live apart
 // (only transformed instances have one).
@@ -30,6 +30,7 @@ struct Instance {
 struct InstanceTransform {
   Mat4 to_object{1.0};              // world → object
   glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
+  glm::dmat3 vector_to_world{1.0};  // the object → world linear part (tangents)
 };
 
 // A hit in world space, plus what shading needs from object space.
@@ -42,7 +43,11 @@ struct WorldHit {
   Vec3 object_point{0.0};      // for textures
   glm::dvec2 uv{0.0};           // spheres: use World::surface_uv
   bool has_uv = false;
+  Vec3 dpdu{0.0}, dpdv{0.0};    // world-space surface derivatives, zero when unknown
+  uint32_t triangle = 0;        // meshes: which triangle, and its barycentrics (b1, b2)
+  glm::dvec2 bary{0.0};
 };
+
 
 class World {
  public:
@@ -55,6 +60,8 @@ class World {
   bool has_transmissive() const { return has_transmissive_; }
   // The hit's texture coordinates (spheres' are computed here, on demand).
   glm::dvec2 surface_uv(const WorldHit& hit) const;
+  // The hit's per-vertex material values; false when its shape has none.
+  bool vertex_material(const WorldHit& hit, VertexMaterial& out) const;
 
   const Instance& instance(uint32_t i) const { return instances_[i]; }
   std::size_t instance_count() const { return instances_.size(); }
@@ -76,6 +83,7 @@ class World {
   std::vector<Cylinder> cylinders_;
   std::vector<Cone> cones_;
   std::vector<Disc> discs_;
+  std::vector<Quad> quads_;
   // By MeshId; null when unreferenced. MeshIds whose data are identical (the same OBJ file
   // loaded by several statements) share one MeshAccel, so one BVH.
   std::vector<std::shared_ptr<const MeshAccel>> meshes_;
