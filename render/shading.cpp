@@ -89,10 +89,11 @@ Vec3 detail_normal(const MaterialDesc& m, const World& world, const WorldHit& hi
     const double texel = height.texel_size();
     const double step = texel > 0.0 ? texel : tol::kBumpDifference;
     const double h = luminance(height.eval(p));
-    // The height's slope along u and v: on uv surfaces by moving in uv, else by moving the
-    // object-space point along the tangent frame.
+    // The height's slope along u and v: image textures on uv surfaces by moving in uv, others
+    // by moving the object-space point along the tangent frame (procedural textures live in
+    // object space).
     TexturePoint pu = p, pv = p;
-    if (p.has_uv) {
+    if (p.has_uv && texel > 0.0) {
       pu.uv.x += step;
       pv.uv.y += step;
     } else {

@@ -10,8 +10,9 @@ through ctypes, for the BMP and JPEG encoders):
 - bands.png: 64x32 latitude-longitude map: four longitude bands (u in quarters: red, green,
   blue, yellow), the top 8 rows white and the bottom 8 rows dark grey.
 - tilt.png: 32x32 linear normal map: left half tilted towards -u, right half towards +u.
+- bumps.png: 32x32 height map, 0.5 + 0.5 sin(2 pi x / 16) sin(2 pi y / 16): a grid of bumps.
 """
-import ctypes, os, struct, zlib
+import ctypes, math, os, struct, zlib
 
 here = os.path.dirname(os.path.abspath(__file__))
 stb = ctypes.CDLL("libstb.so")
@@ -77,3 +78,9 @@ if __name__ == "__main__":
             nx = -s if x < 16 else s
             tilt.append((round((nx + 1) / 2 * 255), 128, round((s + 1) / 2 * 255)))
     png(os.path.join(here, "tilt.png"), 32, 32, tilt)
+    bumps = []
+    for y in range(32):
+        for x in range(32):
+            v = round(255 * (0.5 + 0.5 * math.sin(2 * math.pi * x / 16) * math.sin(2 * math.pi * y / 16)))
+            bumps.append((v, v, v))
+    png(os.path.join(here, "bumps.png"), 32, 32, bumps)
