@@ -167,14 +167,14 @@ NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef lo
 // The six face files of a cube-map directory, in the order +x, -x, +y, -y, +z, -z: named
 // posx/negx/posy/negy/posz/negz (the OpenGL convention) or right/left/up/down/front/back (MIT
 // 6.837's cubeMap directories), each .png, .bmp, .jpg, .jpeg, .tga or .hdr.
-std::vector<std::string> cube_map_faces(const std::string& dir, SourceRef where) {
+std::vector<std::string> cube_map_faces(const std::string& dir, const std::string& shown, SourceRef where) {
   namespace fs = std::filesystem;
   static const char* kSchemes[2][6] = {{"posx", "negx", "posy", "negy", "posz", "negz"},
                                        {"right", "left", "up", "down", "front", "back"}};
   static const char* kExtensions[] = {".png", ".bmp", ".jpg", ".jpeg", ".tga", ".hdr"};
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw SceneError(where, fmt::format("cube_map directory '{}' does not exist", dir));
+    throw SceneError(where, fmt::format("cube_map directory '{}' does not exist", shown));
   for (const auto& scheme : kSchemes) {
     std::vector<std::string> faces;
     for (const char* name : scheme) {
@@ -188,12 +188,12 @@ std::vector<std::string> cube_map_faces(const std::string& dir, SourceRef where)
     }
     if (faces.size() == 6) return faces;
     if (!faces.empty())
-      throw SceneError(where, fmt::format("cube_map directory '{}' has {} of the six faces {}, {}, {}, {}, {}, {}", dir,
+      throw SceneError(where, fmt::format("cube_map directory '{}' has {} of the six faces {}, {}, {}, {}, {}, {}", shown,
                                           faces.size(), scheme[0], scheme[1], scheme[2], scheme[3], scheme[4], scheme[5]));
   }
   throw SceneError(where, fmt::format("cube_map directory '{}' has no faces: expected posx, negx, posy, negy, posz, "
                                       "negz or right, left, up, down, front, back (.png, .bmp, .jpg, .tga or .hdr)",
-                                      dir));
+                                      shown));
 }
 
 }  // namespace
@@ -289,8 +289,9 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
     ps.check_unused(kLatLongNames);
   } else if (kind == "cube_map") {
     t.kind = TextureKind::CubeMap;
-    std::string dir = resolve_path(ps.require_string("directory"), loc_of(ps, "directory"));
-    t.face_paths = cube_map_faces(dir, loc_of(ps, "directory"));
+    std::string shown = ps.require_string("directory");
+    std::string dir = resolve_path(shown, loc_of(ps, "directory"));
+    t.face_paths = cube_map_faces(dir, shown, loc_of(ps, "directory"));
     image_options();
     ps.check_unused(kCubeMapNames);
   } else if (kind == "image_texture") {
