@@ -107,7 +107,7 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
     WorldHit hit;
     if (!world_.intersect(ray, range, hit, /*transmissive_only=*/true)) return t;
-    MaterialDesc scratch;
+    std::optional<MaterialDesc> scratch;
     Rgb kt = to_rgb(shading_material(material(hit.instance), world_, hit, textures_, scratch).transmit);
     t *= glm::clamp(kt, 0.0, 1.0);
     if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
@@ -158,7 +158,7 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
 Rgb Integrator::radiance(const Ray& ray, int depth, const Rgb& weight, Path& path) const {
   WorldHit hit;
   if (!world_.intersect(ray, Interval::positive(), hit)) return background(ray.direction);
-  MaterialDesc scratch;
+  std::optional<MaterialDesc> scratch;
   const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
   double dir_len = glm::length(ray.direction);
   Vec3 incident = ray.direction / dir_len;

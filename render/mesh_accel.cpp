@@ -87,6 +87,7 @@ bool MeshAccel::intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool 
     const glm::dvec2 uv0(uvs[idx[0]]), uv1(uvs[idx[1]]), uv2(uvs[idx[2]]);
     hit.uv = b0 * uv0 + best_b1 * uv1 + best_b2 * uv2;
     hit.has_uv = true;
+    hit.dpdu = hit.dpdv = Vec3(0.0);
     // The tangent frame of the uv parameterisation (pbrt's dp/du, dp/dv), for bump maps.
     const glm::dvec2 d1 = uv1 - uv0, d2 = uv2 - uv0;
     const double det = d1.x * d2.y - d1.y * d2.x;
@@ -98,6 +99,7 @@ bool MeshAccel::intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool 
   } else {
     hit.uv = {best_b1, best_b2};
     hit.has_uv = false;
+    hit.dpdu = hit.dpdv = Vec3(0.0);
   }
   return true;
 }

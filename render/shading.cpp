@@ -36,13 +36,13 @@ TexturePoint texture_point(const World& world, const WorldHit& hit) {
   return p;
 }
 
-const MaterialDesc& shading_material(const MaterialDesc& m, const World& world, const WorldHit& hit,
+const MaterialDesc& varying_material(const MaterialDesc& m, const World& world, const WorldHit& hit,
                                      const std::vector<CompiledTexture>& textures,
-                                     MaterialDesc& scratch) {
+                                     std::optional<MaterialDesc>& slot) {
   VertexMaterial vm;
   const bool per_vertex = world.vertex_material(hit, vm);
   if (!per_vertex && !has_channel_textures(m)) return m;
-  scratch = m;
+  MaterialDesc& scratch = slot.emplace(m);
   if (per_vertex) {
     if (vm.has_color) {
       scratch.color = vm.color;
@@ -63,16 +63,16 @@ const MaterialDesc& shading_material(const MaterialDesc& m, const World& world, 
   return scratch;
 }
 
-Rgb diffuse_color(const MaterialDesc& m, const Rgb& albedo, const World& world, const WorldHit& hit,
-                  const std::vector<CompiledTexture>& textures) {
-  if (!valid(m.diffuse_texture, textures)) return albedo;
+Rgb textured_diffuse(const MaterialDesc& m, const World& world, const WorldHit& hit,
+                     const std::vector<CompiledTexture>& textures) {
+  if (!valid(m.diffuse_texture, textures)) return Rgb(0.0);
   // The texture is the diffuse color itself; `diffuse` still scales it, so the integrator's
   // diffuse * color * (n.l) becomes diffuse * texture * (n.l).
   return rgb(textures[m.diffuse_texture].eval(texture_point(world, hit)));
 }
 
-Vec3 detail_normal(const MaterialDesc& m, const World& world, const WorldHit& hit, const Vec3& n,
-                   const std::vector<CompiledTexture>& textures) {
+Vec3 perturbed_normal(const MaterialDesc& m, const World& world, const WorldHit& hit, const Vec3& n,
+                      const std::vector<CompiledTexture>& textures) {
   const bool bump = valid(m.bump, textures), normal_map = valid(m.normal_map, textures);
   if (!bump && !normal_map) return n;
   Vec3 t, b;

@@ -14,13 +14,14 @@ struct SurfaceHit {
   Vec3 shading_normal{0, 1, 0};  // interpolated normal (== normal unless smooth)
   glm::dvec2 uv{0.0};
   bool has_uv = false;
-  // Object-space derivatives of the point along u and v (zero when unknown), for bump and
-  // normal maps' tangent frame.
-  Vec3 dpdu{0.0}, dpdv{0.0};
+  // Object-space derivatives of the point along u and v, for bump and normal maps' tangent
+  // frame; set only by the shapes that have them (quads, meshes with uvs: World reads them for
+  // those kinds only), so the candidate hits of every other test do not pay to clear them.
+  Vec3 dpdu, dpdv;
   // Triangles of meshes: the triangle index and barycentrics (b1, b2) of vertices 1 and 2, for
-  // per-vertex materials.
-  uint32_t triangle = 0;
-  glm::dvec2 bary{0.0};
+  // per-vertex materials (set by meshes only, read for meshes only).
+  uint32_t triangle;
+  glm::dvec2 bary;
 };
 
 // Per-vertex material values interpolated at a hit (each only when the mesh has it).

@@ -79,6 +79,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat) {
               throw RenderError(shape.loc, "internal: shape refers to unknown mesh " + std::to_string(g.mesh));
             meshes_[g.mesh] = mesh_accel(scene, g.mesh);
             inst.kind = PrimKind::Mesh; inst.index = g.mesh; inst.smooth = g.smooth;
+            inst.vertex_material = scene.meshes[g.mesh]->has_vertex_material();
             object_bounds = meshes_[g.mesh]->bounds();
           }
         },
@@ -185,8 +186,10 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
   // texture asks for them.
   hit.has_uv = best.has_uv || inst.kind == PrimKind::Sphere;
-  hit.triangle = best.triangle;
-  hit.bary = best.bary;
+  const bool mesh = inst.kind == PrimKind::Mesh;
+  hit.triangle = mesh ? best.triangle : 0;
+  hit.bary = mesh ? best.bary : glm::dvec2(0.0);
+  if (!mesh && inst.kind != PrimKind::Quad) best.dpdu = best.dpdv = Vec3(0.0);   // not set by the others
   if (inst.transform == kNoId) {
     hit.normal = glm::normalize(best.normal);
     hit.shading_normal = glm::normalize(best.shading_normal);
@@ -206,7 +209,7 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
 
 bool World::vertex_material(const WorldHit& hit, VertexMaterial& out) const {
   const Instance& inst = instances_[hit.instance];
-  if (inst.kind != PrimKind::Mesh) return false;
+  if (!inst.vertex_material) return false;
   return meshes_[inst.index]->vertex_material(hit.triangle, hit.bary, out);
 }
 

@@ -22,6 +22,7 @@ struct Instance {
   PrimKind kind = PrimKind::Sphere;
   bool smooth = true;          // meshes: interpolate vertex normals
   bool transmissive = false;   // its material lets light through (shadow rays pass it)
+  bool vertex_material = false;  // meshes: its vertices carry material values
   uint32_t index = 0;          // into the World's array for `kind` (meshes: the MeshId)
   MaterialId material = kNoId;
   uint32_t transform = kNoId;  // into World's transforms, or kNoId: trace the world ray as is
@@ -61,6 +62,7 @@ class World {
   // The hit's texture coordinates (spheres' are computed here, on demand).
   glm::dvec2 surface_uv(const WorldHit& hit) const;
   // The hit's per-vertex material values; false when its shape has none.
+  bool has_vertex_material(const WorldHit& hit) const { return instances_[hit.instance].vertex_material; }
   bool vertex_material(const WorldHit& hit, VertexMaterial& out) const;
 
   const Instance& instance(uint32_t i) const { return instances_[i]; }
