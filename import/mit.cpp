@@ -144,6 +144,7 @@ struct Mit {
   // One object, written with `suffix` (its transforms) after it.
   void object(int material, const std::string& suffix) {
     Token kind = tk.next();
+    Nesting nesting(tk, kind);
     Writer& w = out.world;
     w.comments(kind.comments);
     if (kind.text == "Group") {

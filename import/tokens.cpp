@@ -90,6 +90,8 @@ Tokens::Tokens(const std::string& text) {
   end_.comments = std::move(pending);
 }
 
+std::string Tokens::fmt_nesting() { return fmt::format("nested more than {} levels deep", kMaxNesting); }
+
 const Token& Tokens::peek() const { return done() ? end_ : tokens_[pos_]; }
 
 Token Tokens::next() {

@@ -19,6 +19,10 @@ struct Token {
   std::vector<std::string> comments;   // comments just before this token, without markers
 };
 
+// Nesting deeper than this (blocks, tuples, groups, transforms) is refused: the translators
+// recurse, and a hostile file must not exhaust the stack.
+inline constexpr int kMaxNesting = 256;
+
 class Tokens {
  public:
   explicit Tokens(const std::string& text);
@@ -37,11 +41,27 @@ class Tokens {
   [[noreturn]] void fail(const Token& at, const std::string& message) const;
   // Comments at the end of the file, after the last token.
   const std::vector<std::string>& trailing_comments() const { return end_.comments; }
+  // Enter one more level of nesting at `at` (throws past kMaxNesting); leave() on the way out.
+  void enter(const Token& at) {
+    if (++depth_ > kMaxNesting) fail(at, fmt_nesting());
+  }
+  void leave() { --depth_; }
 
  private:
   std::vector<Token> tokens_;
   Token end_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
+  static std::string fmt_nesting();
+};
+
+// Counts one level of nesting for the lifetime of a scope.
+struct Nesting {
+  Nesting(Tokens& t, const Token& at) : tokens(t) { tokens.enter(at); }
+  ~Nesting() { tokens.leave(); }
+  Nesting(const Nesting&) = delete;
+  Nesting& operator=(const Nesting&) = delete;
+  Tokens& tokens;
 };
 
 }  // namespace rts::import

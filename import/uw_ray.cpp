@@ -64,6 +64,7 @@ struct Parser {
 
   Value value() {
     Token t = tk.peek();
+    Nesting nesting(tk, t);
     if (tk.accept("(")) {
       Value v;
       v.kind = Value::Tuple;

@@ -38,6 +38,13 @@ printf '1\namb: 0 0 0\ncube\n' > unknown.scene
 expect_exit 1 "CSCI 420: an unknown object" -- "$RTS" import unknown.scene
 expect_grep "$TMP/err" "^unknown.scene:3:1: error: unknown object 'cube'" "located message"
 
+{ printf 'SBT-raytracer 1.0\n'; for i in $(seq 5000); do printf 'translate(0, 0, 0, '; done; printf 'sphere {}'; } > deep.ray
+expect_exit 1 "UW: nesting deeper than the limit is an error, not a stack overflow" -- "$RTS" import deep.ray
+expect_grep "$TMP/err" "nested more than 256 levels deep" "names the limit"
+{ for i in $(seq 5000); do printf 'Group { '; done; } > deep.txt
+expect_exit 1 "MIT: deeply nested groups" -- "$RTS" import deep.txt
+expect_grep "$TMP/err" "nested more than 256 levels deep" "names the limit"
+
 echo "keep me" > existing.rts
 expect_exit 1 "a failed import keeps an existing output" -- "$RTS" import unknown.scene -o existing.rts
 expect_grep existing.rts "keep me" "the output is untouched"
