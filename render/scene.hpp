@@ -71,10 +71,9 @@ struct TextureDesc {
 struct MaterialDesc {
   Color color{0.8};
   TextureId texture = kNoId;   // when set, replaces `color`
-  // A texture on a channel replaces that channel's value at each point (per color channel;
-  // the scalar `diffuse` and `specular` take the texture's mean of r, g, b times their value
-  // for `specular`, and `diffuse` is the texture's color times `diffuse` replacing
-  // diffuse * color in the diffuse term).
+  // A texture on a channel gives that channel's value at each point: emission, reflect and
+  // transmit take its color; specular its mean of r, g, b; on diffuse it is the diffuse color
+  // itself (the diffuse term becomes texture * (N·L), the ambient term keeps `color`).
   TextureId diffuse_texture = kNoId;
   TextureId specular_texture = kNoId;
   TextureId reflect_texture = kNoId;

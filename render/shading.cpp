@@ -66,8 +66,8 @@ const MaterialDesc& varying_material(const MaterialDesc& m, const World& world, 
 Rgb textured_diffuse(const MaterialDesc& m, const World& world, const WorldHit& hit,
                      const std::vector<CompiledTexture>& textures) {
   if (!valid(m.diffuse_texture, textures)) return Rgb(0.0);
-  // The texture is the diffuse color itself; `diffuse` still scales it, so the integrator's
-  // diffuse * color * (n.l) becomes diffuse * texture * (n.l).
+  // The texture is the diffuse color itself: the builder sets `diffuse` to 1, so the
+  // integrator's diffuse * color * (N·L) becomes texture * (N·L).
   return rgb(textures[m.diffuse_texture].eval(texture_point(world, hit)));
 }
 
