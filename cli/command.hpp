@@ -16,5 +16,6 @@ void add_check_command(CLI::App& app, CommandContext& ctx);   // cli/cmd_eval.cp
 void add_eval_command(CLI::App& app, CommandContext& ctx);    // cli/cmd_eval.cpp
 void add_render_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_render.cpp
 void add_converge_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_converge.cpp
+void add_import_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_import.cpp
 
 }  // namespace rts::cli

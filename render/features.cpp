@@ -7,7 +7,7 @@ namespace {
 
 constexpr std::array<std::string_view, kFeatureCount> kNames = {
     "sphere",      "plane",         "triangle",          "box",         "cylinder",
-    "cone",        "disc",          "mesh",              "reflection",  "transmission",
+    "cone",        "disc",          "mesh",              "quad",        "reflection",  "transmission",
     "glossiness",  "fresnel",       "texture",           "image_texture", "emission",
     "specular",    "ambient",       "point_light",       "spot_light",  "directional_light",
     "area_light",  "shadows",       "transmissive_shadows", "area_sampling", "depth_of_field",
@@ -38,8 +38,26 @@ std::vector<std::string_view> FeatureSet::left_out() const {
 }
 
 bool light_emits(const LightDesc& l) { return l.intensity != 0.0 && nonzero(l.color); }
-bool reflects(const MaterialDesc& m) { return nonzero(m.reflect); }
-bool transmits(const MaterialDesc& m) { return m.transmit.r > 0.0 || m.transmit.g > 0.0 || m.transmit.b > 0.0; }
+bool reflects(const MaterialDesc& m) { return nonzero(m.reflect) || m.reflect_texture != kNoId; }
+bool transmits(const MaterialDesc& m) {
+  return m.transmit.r > 0.0 || m.transmit.g > 0.0 || m.transmit.b > 0.0 || m.transmit_texture != kNoId;
+}
+
+// Every texture a material may evaluate (its color and each channel, bump and normal maps).
+template <class F>
+void for_each_texture(const MaterialDesc& m, F&& f) {
+  for (TextureId t : {m.texture, m.diffuse_texture, m.specular_texture, m.reflect_texture, m.transmit_texture,
+                      m.emission_texture, m.bump, m.normal_map})
+    if (t != kNoId) f(t);
+}
+
+// The mesh a shape traces, when it is one with per-vertex material values.
+const MeshData* vertex_material_mesh(const SceneDesc& scene, const ShapeDesc& shape) {
+  const MeshRef* r = std::get_if<MeshRef>(&shape.geometry);
+  if (!r || r->mesh >= scene.meshes.size() || !scene.meshes[r->mesh]) return nullptr;
+  const MeshData& mesh = *scene.meshes[r->mesh];
+  return mesh.has_vertex_material() ? &mesh : nullptr;
+}
 
 FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const FeatureContext& ctx) {
   FeatureSet f;
@@ -61,12 +79,14 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
     }
     if (r && m.roughness > 0.0 && secondary_possible) f.add(Feature::Glossiness);
     if ((r || t) && m.fresnel && secondary_possible) f.add(Feature::Fresnel);
-    if (m.texture != kNoId && m.texture < scene.textures.size()) {
+    for_each_texture(m, [&](TextureId t) {
+      if (t >= scene.textures.size()) return;
       f.add(Feature::Texture);
-      if (scene.textures[m.texture].kind == TextureKind::Image) f.add(Feature::ImageTexture);
-    }
-    if (nonzero(m.emission)) f.add(Feature::Emission);
-    if (m.specular != 0.0) f.add(Feature::Specular);
+      if (scene.textures[t].kind == TextureKind::Image) f.add(Feature::ImageTexture);
+    });
+    if (nonzero(m.emission) || m.emission_texture != kNoId) f.add(Feature::Emission);
+    const MeshData* vm = vertex_material_mesh(scene, shape);
+    if (m.specular != 0.0 || m.specular_texture != kNoId || (vm && !vm->specular.empty())) f.add(Feature::Specular);
     if (m.ambient != 0.0 && ambient_light) f.add(Feature::Ambient);
   }
   for (const LightDesc& l : flat.lights) {
@@ -91,8 +111,9 @@ std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
   std::vector<bool> used(scene.textures.size(), false);
   for (const FlatShape& fs : flat.shapes) {
     const MaterialDesc* m = material_of(scene, scene.shapes[fs.shape]);
-    if (m && m->texture < used.size()) used[m->texture] = true;
+    if (m) for_each_texture(*m, [&](TextureId t) { if (t < used.size()) used[t] = true; });
   }
+  if (scene.settings.environment < used.size()) used[scene.settings.environment] = true;
   return used;
 }
 

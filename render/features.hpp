@@ -17,7 +17,7 @@ namespace rts::render {
 
 enum class Feature : uint8_t {
   // primitive kinds
-  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh,
+  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad,
   // material channels
   Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Emission, Specular, Ambient,
   // lights

@@ -33,6 +33,11 @@ void write_png(const std::string& path, const Image& image, int bits = 8,
 // values are decoded to linear when `encoding` is SRGB. Throws RenderError at `where`.
 Image read_png(const std::string& path, SourceRef where = {}, Encoding encoding = Encoding::SRGB);
 
+// Reads PNG (through read_png), BMP, JPEG, TGA or Radiance HDR, told apart by their content,
+// not their names. 8-bit data are decoded from sRGB when `encoding` is SRGB; HDR is linear.
+// Throws RenderError at `where`.
+Image read_image(const std::string& path, SourceRef where = {}, Encoding encoding = Encoding::SRGB);
+
 float srgb_to_linear(float v);
 float linear_to_srgb(float v);
 

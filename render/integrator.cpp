@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "render/shading.hpp"
 #include "render/tolerances.hpp"
 
 namespace rts::render {
@@ -74,7 +75,14 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
     : world_(world), materials_(materials), textures_(textures),
       background_(to_rgb(settings.background)), ambient_light_(to_rgb(settings.ambient_light)),
       max_depth_(max_depth) {
-  bool generic = (mask & spec::kGeneric) != 0;
+  // Shadow rays through glass whose `transmit` is a texture need the hit point, which the
+  // specialised one-pass crossing test does not keep: such scenes take the generic path.
+  bool textured_transmit = false;
+  for (std::size_t i = 0; i < world.instance_count(); ++i) {
+    MaterialId id = world.instance(i).material;
+    if (id < materials.size() && materials[id].transmit_texture != kNoId) textured_transmit = true;
+  }
+  bool generic = (mask & spec::kGeneric) != 0 || textured_transmit;
   uint32_t skipped = 0;
   for (const CompiledLight& l : lights) {
     // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
@@ -88,6 +96,14 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
   }
   skip_after_ = skipped;
   trace_ = trace_for(generic ? (spec::kGeneric | spec::kAll) : (mask & spec::kAll));
+  if (settings.environment < textures.size()) {
+    environment_ = &textures[settings.environment];
+    environment_ambient_ = settings.environment_ambient;
+  }
+}
+
+Rgb Integrator::background(const Vec3& direction) const {
+  return environment_ ? to_rgb(environment_->eval_direction(direction)) : background_;
 }
 
 Integrator::TraceFn Integrator::trace_for(unsigned mask) {
@@ -153,7 +169,8 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
   out.normal = hit.shading_normal;
   out.depth = hit.t * glm::length(ray.direction);
   out.bounded = world_.instance(hit.instance).kind != PrimKind::Plane;
-  out.albedo = albedo(material(hit.instance), hit);
+  std::optional<MaterialDesc> scratch;   // vertex colors are the albedo too
+  out.albedo = albedo(shading_material(material(hit.instance), world_, hit, textures_, scratch), hit);
   return out;
 }
 
@@ -193,7 +210,8 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
     WorldHit hit;
     if (!world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true)) return t;
-    Rgb kt = to_rgb(material(hit.instance).transmit);
+    std::optional<MaterialDesc> scratch;
+    Rgb kt = to_rgb(shading_material(material(hit.instance), world_, hit, textures_, scratch).transmit);
     t *= glm::clamp(kt, 0.0, 1.0);
     if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
     Vec3 next = offset_ray_origin(hit.point, hit.normal, ls.direction, hit.error);
@@ -268,8 +286,9 @@ template <unsigned F>
 Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const {
   const Ray& ray = pr.ray;
   WorldHit hit;
-  if (!world_.intersect(ray, Interval::positive(), hit)) return background_;
-  const MaterialDesc& m = material(hit.instance);
+  if (!world_.intersect(ray, Interval::positive(), hit)) return background(ray.direction);
+  std::optional<MaterialDesc> scratch;
+  const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
   Vec3 incident = glm::normalize(ray.direction);
 
   // The geometric normal decides the side: face it towards the incoming ray (leaving a solid
@@ -280,11 +299,13 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   bool entering = glm::dot(ng, incident) < 0.0;
   if (!entering) ng = -ng;
   if (glm::dot(n, ng) < 0.0) n = -n;
+  n = detail_normal(m, world_, hit, n, textures_);
   Vec3 view = -incident;
   Rgb base = albedo<F>(m, hit);
-  Rgb color = to_rgb(m.emission) + m.ambient * base * ambient_light_;
+  Rgb ambient = environment_ambient_ ? ambient_light_ * background(n) : ambient_light_;
+  Rgb color = to_rgb(m.emission) + m.ambient * base * ambient;
   Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, hit.error);
-  color += direct_light<F>(hit, m, base, n, front_origin, view, path);
+  color += direct_light<F>(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, path);
   color = saturate(color);
 
   if constexpr (!(F & spec::kSecondary)) return color;  // nothing reflects or transmits

@@ -87,6 +87,8 @@ class Integrator {
   const MaterialDesc& material(uint32_t instance) const;
   template <unsigned F = spec::kAll>
   Rgb albedo(const MaterialDesc& m, const WorldHit& hit) const;
+  // What a ray that leaves the scene sees: the environment map, else the background color.
+  Rgb background(const Vec3& direction) const;
 
   const World& world_;
   // The lights shading visits: all of them (generic), or those that send light, each with the
@@ -99,6 +101,8 @@ class Integrator {
   const std::vector<CompiledTexture>& textures_;
   MaterialDesc default_material_;
   Rgb background_, ambient_light_;
+  const CompiledTexture* environment_ = nullptr;   // settings.environment, if any
+  bool environment_ambient_ = false;
   int max_depth_;
 };
 

@@ -1,5 +1,7 @@
 #include "render/mesh_accel.hpp"
 
+#include <cmath>
+
 #include "render/shapes/triangle.hpp"
 
 namespace rts::render {
@@ -92,16 +94,50 @@ bool MeshAccel::intersect(const Ray& object_ray, Interval ray_t, SurfaceHit& hit
       if (glm::dot(n, hit.normal) < 0.0) hit.normal = -hit.normal;
     }
   }
+  hit.triangle = best_tri;
+  hit.bary = {best_b1, best_b2};
   const auto& uvs = mesh_->uvs;
   if (uvs.size() == mesh_->positions.size()) {
-    glm::dvec2 uv = b0 * glm::dvec2(uvs[idx[0]]) + best_b1 * glm::dvec2(uvs[idx[1]]) +
-                    best_b2 * glm::dvec2(uvs[idx[2]]);
-    hit.uv = uv;
+    const glm::dvec2 uv0(uvs[idx[0]]), uv1(uvs[idx[1]]), uv2(uvs[idx[2]]);
+    hit.uv = b0 * uv0 + best_b1 * uv1 + best_b2 * uv2;
     hit.has_uv = true;
+    hit.dpdu = hit.dpdv = Vec3(0.0);
+    // The tangent frame of the uv parameterisation (pbrt's dp/du, dp/dv), for bump maps.
+    const glm::dvec2 d1 = uv1 - uv0, d2 = uv2 - uv0;
+    const double det = d1.x * d2.y - d1.y * d2.x;
+    if (std::abs(det) > 0.0 && std::isfinite(1.0 / det)) {
+      const double inv = 1.0 / det;
+      hit.dpdu = (d2.y * (v1 - v0) - d1.y * (v2 - v0)) * inv;
+      hit.dpdv = (-d2.x * (v1 - v0) + d1.x * (v2 - v0)) * inv;
+    }
   } else {
     hit.uv = {best_b1, best_b2};
     hit.has_uv = false;
+    hit.dpdu = hit.dpdv = Vec3(0.0);
   }
+  return true;
+}
+
+bool MeshAccel::vertex_material(uint32_t tri, glm::dvec2 bary, VertexMaterial& out) const {
+  const MeshData& m = *mesh_;
+  if (!m.has_vertex_material()) return false;
+  const uint32_t* idx = &m.indices[static_cast<std::size_t>(tri) * 3];
+  const double w[3] = {1.0 - bary.x - bary.y, bary.x, bary.y};
+  const std::size_t n = m.positions.size();
+  auto mix = [&](const std::vector<float>& values, double& result) {
+    if (values.size() != n) return false;
+    result = w[0] * values[idx[0]] + w[1] * values[idx[1]] + w[2] * values[idx[2]];
+    return true;
+  };
+  if (m.colors.size() == n) {
+    glm::dvec3 c = w[0] * glm::dvec3(m.colors[idx[0]]) + w[1] * glm::dvec3(m.colors[idx[1]]) +
+                   w[2] * glm::dvec3(m.colors[idx[2]]);
+    out.color = Color(c.x, c.y, c.z);
+    out.has_color = true;
+  }
+  out.has_diffuse = mix(m.diffuse, out.diffuse);
+  out.has_specular = mix(m.specular, out.specular);
+  out.has_shininess = mix(m.shininess, out.shininess);
   return true;
 }
 

@@ -24,6 +24,9 @@ class MeshAccel {
   std::size_t bvh_nodes() const { return bvh_.nodes.size(); }
   // Bytes held: the mesh's arrays, its BVH and the leaf-ordered vertices.
   std::size_t memory_bytes() const;
+  // Per-vertex material values of triangle `tri` at barycentrics (b1, b2); false when the
+  // mesh has none.
+  bool vertex_material(uint32_t tri, glm::dvec2 bary, VertexMaterial& out) const;
 
  private:
   // The object-space ray in the mesh's own coordinates (relative to MeshData::origin).

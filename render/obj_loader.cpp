@@ -78,6 +78,8 @@ class ObjReader {
 
   // False when the file has a face of more than four corners: the caller triangulates it
   // with tinyobjloader (ear clipping) instead; the file has been fully validated either way.
+  bool has_colors() const { return !colors_.empty(); }
+
   bool read(std::FILE* f, MeshData& mesh) {
     constexpr std::size_t kChunk = std::size_t(1) << 22;
     std::vector<char> buf(kChunk + 1);
@@ -139,6 +141,10 @@ class ObjReader {
     std::string_view tag = s.substr(0, sp), rest = s.substr(sp);
     if (tag == "v") {
       vertex_line(tag, s, rest, 3, positions_);
+      if (vertex_color_count_ == 6) {  // `v x y z r g b`, a common OBJ extension
+        if (colors_.size() + 3 < positions_.size()) colors_.resize(positions_.size() - 3, 1.0f);  // earlier: white
+        colors_.insert(colors_.end(), last_color_, last_color_ + 3);
+      }
     } else if (tag == "vt") {
       vertex_line(tag, s, rest, 1, uvs_);
     } else if (tag == "vn") {
@@ -151,7 +157,7 @@ class ObjReader {
   // Appends the first three numbers of a vertex line (missing ones are 0) to `out`.
   void vertex_line(std::string_view tag, std::string_view whole, std::string_view rest, int need,
                    std::vector<float>& out) {
-    double x[3] = {0, 0, 0};
+    double x[6] = {0, 0, 0, 0, 0, 0};
     int n = 0;
     bool bad = false;
     for (;;) {
@@ -161,16 +167,19 @@ class ObjReader {
       while (end < rest.size() && !is_blank(rest[end])) ++end;
       double value;
       if (!parse_number(rest.substr(0, end), value)) bad = true;
-      if (n < 3) x[n] = value;
+      if (n < 6) x[n] = value;
       ++n;
       rest.remove_prefix(end);
     }
     if (bad || n < need) fail(fmt::format("malformed '{}' line: '{}'", tag, whole));
+    vertex_color_count_ = n;
+    if (n >= 6)
+      for (int k = 0; k < 3; ++k) last_color_[k] = static_cast<float>(x[3 + k]);
     if (&out == &uvs_) {
       out.push_back(static_cast<float>(x[0]));
       out.push_back(static_cast<float>(x[1]));
     } else {
-      for (double v : x) out.push_back(static_cast<float>(v));
+      for (int k = 0; k < 3; ++k) out.push_back(static_cast<float>(x[k]));
     }
   }
 
@@ -260,10 +269,19 @@ class ObjReader {
     bool has_normals = !normals_.empty(), has_uvs = !uvs_.empty();
     if (has_normals) mesh.normals.resize(n);
     if (has_uvs) mesh.uvs.resize(n);
+    const bool has_colors = !colors_.empty();
+    if (has_colors) {
+      colors_.resize(positions_.size(), 1.0f);  // vertices after the last colored one: white
+      mesh.colors.resize(n);
+    }
     for (std::size_t i = 0; i < n; ++i) {
       const Corner& c = unified_[i];
       const float* p = &positions_[static_cast<std::size_t>(c.v) * 3];
       mesh.positions[i] = glm::vec3(p[0], p[1], p[2]);
+      if (has_colors) {
+        const float* q = &colors_[static_cast<std::size_t>(c.v) * 3];
+        mesh.colors[i] = glm::vec3(q[0], q[1], q[2]);
+      }
       if (has_normals) {
         if (c.n >= 0) {
           const float* q = &normals_[static_cast<std::size_t>(c.n) * 3];
@@ -286,6 +304,7 @@ class ObjReader {
     std::vector<float>().swap(positions_);
     std::vector<float>().swap(normals_);
     std::vector<float>().swap(uvs_);
+    std::vector<float>().swap(colors_);
     std::vector<Corner>().swap(unified_);
     others_ = {};
     indices_.shrink_to_fit();
@@ -297,6 +316,9 @@ class ObjReader {
   SourceRef where_;
   const ObjLimits& limits_;
   std::size_t triangles_ = 0;
+  int vertex_color_count_ = 0;  // numbers on the last vertex line
+  float last_color_[3] = {1, 1, 1};
+  std::vector<float> colors_;   // 3 per position once any vertex has a color (else empty)
   unsigned line_no_ = 0;
   bool polygon_ = false;  // a face of 5+ corners was seen
   std::vector<float> positions_, uvs_, normals_;  // as the file lists them (uvs: 2 per entry)
@@ -308,7 +330,8 @@ class ObjReader {
 };
 
 // tinyobjloader's path, for files with polygons of five or more corners (ear clipping).
-void load_with_tinyobj(const std::string& path, const std::string& shown, SourceRef where, MeshData& out) {
+void load_with_tinyobj(const std::string& path, const std::string& shown, SourceRef where, bool has_colors,
+                       MeshData& out) {
   std::string text;
   {
     std::ifstream in(path, std::ios::binary);
@@ -319,7 +342,7 @@ void load_with_tinyobj(const std::string& path, const std::string& shown, Source
   }
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
-  config.vertex_color = false;
+  config.vertex_color = has_colors;  // vertices without a color get white
   tinyobj::ObjReader reader;
   // From memory, with an empty material text: tinyobjloader then opens no `mtllib` file.
   if (!reader.ParseFromString(text, std::string(), config)) {
@@ -344,6 +367,12 @@ void load_with_tinyobj(const std::string& path, const std::string& shown, Source
         if (idx.vertex_index < 0 || v + 2 >= attrib.vertices.size())
           throw SceneError(where, fmt::format("malformed mesh file '{}': vertex index out of range", shown));
         mesh->positions.emplace_back(attrib.vertices[v], attrib.vertices[v + 1], attrib.vertices[v + 2]);
+        if (has_colors) {
+          if (v + 2 < attrib.colors.size())
+            mesh->colors.emplace_back(attrib.colors[v], attrib.colors[v + 1], attrib.colors[v + 2]);
+          else
+            mesh->colors.emplace_back(1.0f);
+        }
         if (has_normals) {
           std::size_t n = static_cast<std::size_t>(idx.normal_index) * 3;
           if (idx.normal_index >= 0 && n + 2 < attrib.normals.size())
@@ -392,9 +421,10 @@ std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& s
   if (!file) throw SceneError(where, fmt::format("cannot open mesh file '{}'", shown));
   auto mesh = std::make_shared<MeshData>();
   mesh->source = path;
-  bool done = ObjReader(shown, where, limits).read(file.get(), *mesh);
+  ObjReader reader(shown, where, limits);
+  bool done = reader.read(file.get(), *mesh);
   file.reset();
-  if (!done) load_with_tinyobj(path, shown, where, *mesh);
+  if (!done) load_with_tinyobj(path, shown, where, reader.has_colors(), *mesh);
   if (mesh->indices.empty()) throw SceneError(where, fmt::format("mesh file '{}' has no faces", shown));
   if (mesh->normals.empty() && smooth) compute_smooth_normals(*mesh);
   release_free_memory(mesh->indices.size() / 3);

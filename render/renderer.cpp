@@ -116,7 +116,7 @@ void describe(const Prepared& prep, const Frame& frame, const RenderResult& resu
   const World& world = *prep.world;
   for (std::string_view f : prep.features.used()) stats.features_used.emplace_back(f);
   for (std::string_view f : prep.features.left_out()) stats.features_left_out.emplace_back(f);
-  static constexpr const char* kKinds[] = {"sphere", "plane", "triangle", "box", "cylinder", "cone", "disc", "mesh"};
+  static constexpr const char* kKinds[] = {"sphere", "plane", "triangle", "box", "cylinder", "cone", "disc", "mesh", "quad"};
   uint64_t by_kind[std::size(kKinds)] = {};
   for (std::size_t i = 0; i < world.instance_count(); ++i) ++by_kind[static_cast<std::size_t>(world.instance(i).kind)];
   for (std::size_t k = 0; k < std::size(kKinds); ++k)

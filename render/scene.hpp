@@ -44,7 +44,11 @@ using MeshId = uint32_t;
 inline constexpr uint32_t kNoId = std::numeric_limits<uint32_t>::max();
 
 // ---- textures ---------------------------------------------------------------------------
-enum class TextureKind : uint8_t { Checker, Stripes, Gradient, Image };
+// LatLong and CubeMap are environment maps: looked up by direction (the background, rays that
+// leave the scene, image-based ambient light); on a surface they use the direction from the
+// texture-space origin to the point.
+enum class TextureKind : uint8_t { Checker, Stripes, Gradient, Image, LatLong, CubeMap };
+enum class TextureFilter : uint8_t { Bilinear, Nearest };
 struct TextureDesc {
   TextureKind kind = TextureKind::Checker;
   Color color1{1.0}, color2{0.0};
@@ -54,6 +58,10 @@ struct TextureDesc {
   // Image: how surface points map to image coordinates when the surface has no UVs:
   // "uv" (use surface UVs), "planar" (x,z → u,v), "spherical".
   std::string mapping = "uv";
+  bool linear = false;       // images: the file holds linear values (not sRGB-encoded)
+  TextureFilter filter = TextureFilter::Bilinear;
+  // CubeMap: the faces' files in the order +x, -x, +y, -y, +z, -z, resolved like image_path.
+  std::vector<std::string> face_paths;
   Mat4 transform{1.0};       // object space → texture space is inverse(transform)
   SourceRef loc;
 };
@@ -64,6 +72,19 @@ struct TextureDesc {
 struct MaterialDesc {
   Color color{0.8};
   TextureId texture = kNoId;   // when set, replaces `color`
+  // A texture on a channel gives that channel's value at each point: emission, reflect and
+  // transmit take its color; specular its mean of r, g, b; on diffuse it is the diffuse color
+  // itself (the diffuse term becomes texture * (N·L), the ambient term keeps `color`).
+  TextureId diffuse_texture = kNoId;
+  TextureId specular_texture = kNoId;
+  TextureId reflect_texture = kNoId;
+  TextureId transmit_texture = kNoId;
+  TextureId emission_texture = kNoId;
+  // Surface detail: a height texture (its luminance) perturbs the normal by `bump_scale` times
+  // its slope; a normal map holds tangent-space normals as rgb = (n + 1) / 2.
+  TextureId bump = kNoId;
+  double bump_scale = 1.0;
+  TextureId normal_map = kNoId;
   Color emission{0.0};
   double ambient = 0.1;
   double diffuse = 0.7;
@@ -87,6 +108,14 @@ struct MeshData {
   std::vector<glm::vec3> normals;     // empty, or one per position (smooth shading)
   std::vector<glm::vec2> uvs;         // empty, or one per position
   std::vector<uint32_t> indices;      // 3 per triangle, into the arrays above
+  // Per-vertex material values, each empty or one per position, interpolated across each
+  // triangle with its barycentric coordinates; where present they replace the material's
+  // color, diffuse, specular and shininess.
+  std::vector<glm::vec3> colors;
+  std::vector<float> diffuse, specular, shininess;
+  bool has_vertex_material() const {
+    return !colors.empty() || !diffuse.empty() || !specular.empty() || !shininess.empty();
+  }
   std::string source;                 // file it came from, or "" for inline meshes
 };
 
@@ -99,8 +128,11 @@ struct Cylinder { Vec3 from{0, 0, 0}, to{0, 1, 0}; double radius = 1.0; bool cap
 struct Cone     { Vec3 from{0, 0, 0}, to{0, 1, 0}; double radius_from = 1.0, radius_to = 0.0; bool capped = true; };
 struct Disc     { Vec3 center{0.0}, normal{0, 1, 0}; double radius = 1.0, inner_radius = 0.0; };
 struct MeshRef  { MeshId mesh = kNoId; bool smooth = true; };
+// A parallelogram corner + s*edge_u + t*edge_v, s,t in [0,1], with uv = (s, t): UW's `square`
+// is the quad corner <-0.5,-0.5,0>, edges <1,0,0> and <0,1,0>.
+struct Quad     { Vec3 corner{-0.5, -0.5, 0}, edge_u{1, 0, 0}, edge_v{0, 1, 0}; };
 
-using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef>;
+using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;
@@ -152,6 +184,11 @@ struct Settings {
   int max_depth = 5;               // reflection/refraction recursion limit
   Color background{0.0};
   Color ambient_light{1.0};        // multiplies each material's ambient term
+  // An environment map (LatLong or CubeMap texture): what rays that leave the scene see,
+  // instead of `background`; with `environment_ambient`, also the ambient light, looked up
+  // along each shading normal (times ambient_light).
+  TextureId environment = kNoId;
+  bool environment_ambient = false;
   uint64_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;  // how pixel samples are placed
   SourceRef loc;

@@ -33,6 +33,8 @@ constexpr KindInfo kKinds[] = {
     {"stripes", BlockCategory::Texture},
     {"gradient", BlockCategory::Texture},
     {"image_texture", BlockCategory::Texture},
+    {"latlong_map", BlockCategory::Texture},
+    {"cube_map", BlockCategory::Texture},
     {"sphere", BlockCategory::Shape},
     {"plane", BlockCategory::Shape},
     {"triangle", BlockCategory::Shape},
@@ -41,6 +43,7 @@ constexpr KindInfo kKinds[] = {
     {"cone", BlockCategory::Shape},
     {"disc", BlockCategory::Shape},
     {"mesh", BlockCategory::Shape},
+    {"quad", BlockCategory::Shape},
     {"point_light", BlockCategory::Light},
     {"spot_light", BlockCategory::Light},
     {"directional_light", BlockCategory::Light},
@@ -49,26 +52,36 @@ constexpr KindInfo kKinds[] = {
 };
 
 // The property names each block kind accepts (for unknown-name checks and suggestions).
-const std::vector<std::string_view> kSettingsNames = {"width",      "height",        "samples", "max_depth",
-                                                      "background", "ambient_light", "seed",
-                                                      "sampler"};
+const std::vector<std::string_view> kSettingsNames = {"width",         "height",      "samples",
+                                                      "max_depth",     "background",  "ambient_light",
+                                                      "seed",          "sampler",     "environment",
+                                                      "environment_ambient"};
 const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
                                                     "fov",        "view_width", "aperture", "focus_distance"};
-const std::vector<std::string_view> kImageTextureNames = {"file", "mapping"};
+const std::vector<std::string_view> kImageTextureNames = {"file", "mapping", "color_space", "filter"};
+const std::vector<std::string_view> kLatLongNames = {"file", "color_space", "filter"};
+const std::vector<std::string_view> kCubeMapNames = {"directory", "color_space", "filter"};
 const std::vector<std::string_view> kCheckerNames = {"color1", "color2", "scale"};
 const std::vector<std::string_view> kPatternTextureNames = {"color1", "color2", "scale", "axis"};
 const std::vector<std::string_view> kMaterialNames = {"color",    "texture",  "emission",  "ambient",
                                                       "diffuse",  "specular", "shininess", "reflect",
                                                       "transmit", "ior",      "fresnel",   "roughness",
-                                                      "ior_relative"};
+                                                      "ior_relative", "bump", "bump_scale", "normal_map"};
 const std::vector<std::string_view> kSphereNames = {"material", "center", "radius"};
 const std::vector<std::string_view> kPlaneNames = {"material", "normal", "offset"};
-const std::vector<std::string_view> kTriangleNames = {"material", "v0", "v1", "v2", "n0", "n1", "n2"};
+const std::vector<std::string_view> kTriangleNames = {"material",      "v0",           "v1",
+                                                      "v2",            "n0",           "n1",
+                                                      "n2",            "vertex_colors", "vertex_diffuse",
+                                                      "vertex_specular", "vertex_shininess"};
 const std::vector<std::string_view> kBoxNames = {"material", "min", "max"};
 const std::vector<std::string_view> kCylinderNames = {"material", "from", "to", "radius", "capped"};
 const std::vector<std::string_view> kConeNames = {"material", "from", "to", "radius_from", "radius_to", "capped"};
 const std::vector<std::string_view> kDiscNames = {"material", "center", "normal", "radius", "inner_radius"};
-const std::vector<std::string_view> kMeshNames = {"material", "file", "smooth", "vertices", "faces", "normals"};
+const std::vector<std::string_view> kMeshNames = {"material",       "file",           "smooth",
+                                                  "vertices",       "faces",          "normals",
+                                                  "vertex_colors",  "vertex_diffuse", "vertex_specular",
+                                                  "vertex_shininess"};
+const std::vector<std::string_view> kQuadNames = {"material", "corner", "edge_u", "edge_v"};
 const std::vector<std::string_view> kPointLightNames = {"position", "color", "intensity", "attenuation", "shadows"};
 const std::vector<std::string_view> kSpotLightNames = {"position", "point_at",  "radius",      "falloff",
                                                        "color",    "intensity", "attenuation", "shadows"};
@@ -162,6 +175,38 @@ NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef lo
   return static_cast<NodeId>(scene.nodes.size() - 1);
 }
 
+// The six face files of a cube-map directory, in the order +x, -x, +y, -y, +z, -z: named
+// posx/negx/posy/negy/posz/negz (the OpenGL convention) or right/left/up/down/front/back (MIT
+// 6.837's cubeMap directories), each .png, .bmp, .jpg, .jpeg, .tga or .hdr.
+std::vector<std::string> cube_map_faces(const std::string& dir, const std::string& shown, SourceRef where) {
+  namespace fs = std::filesystem;
+  static const char* kSchemes[2][6] = {{"posx", "negx", "posy", "negy", "posz", "negz"},
+                                       {"right", "left", "up", "down", "front", "back"}};
+  static const char* kExtensions[] = {".png", ".bmp", ".jpg", ".jpeg", ".tga", ".hdr"};
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw SceneError(where, fmt::format("cube_map directory '{}' does not exist", shown));
+  for (const auto& scheme : kSchemes) {
+    std::vector<std::string> faces;
+    for (const char* name : scheme) {
+      for (const char* ext : kExtensions) {
+        fs::path p = fs::path(dir) / (std::string(name) + ext);
+        if (fs::is_regular_file(p, ec)) {
+          faces.push_back(p.string());
+          break;
+        }
+      }
+    }
+    if (faces.size() == 6) return faces;
+    if (!faces.empty())
+      throw SceneError(where, fmt::format("cube_map directory '{}' has {} of the six faces {}, {}, {}, {}, {}, {}", shown,
+                                          faces.size(), scheme[0], scheme[1], scheme[2], scheme[3], scheme[4], scheme[5]));
+  }
+  throw SceneError(where, fmt::format("cube_map directory '{}' has no faces: expected posx, negx, posy, negy, posz, "
+                                      "negz or right, left, up, down, front, back (.png, .bmp, .jpg, .tga or .hdr)",
+                                      shown));
+}
+
 }  // namespace
 
 BlockCategory SceneBuilder::category(std::string_view kind) {
@@ -190,6 +235,10 @@ void SceneBuilder::settings(ParamSet& ps) {
   s.background = ps.color("background", s.background);
   s.ambient_light = ps.color("ambient_light", s.ambient_light);
   non_negative_color(ps, "ambient_light", s.ambient_light);
+  if (const TextureRef* env = reference<TextureRef>(ps, "environment", "settings", "texture")) s.environment = env->id;
+  s.environment_ambient = ps.boolean("environment_ambient", s.environment_ambient);
+  if (s.environment_ambient && s.environment == kNoId)
+    throw SceneError(loc_of(ps, "environment_ambient"), "environment_ambient needs an 'environment' texture");
   if (ps.has("seed")) {
     double seed = ps.number("seed", 0);
     constexpr double kMaxExactWhole = 9007199254740992.0;  // 2^53: larger doubles skip integers
@@ -239,11 +288,36 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
   TextureDesc t;
   t.transform = transform;
   t.loc = ps.loc();
-  if (kind == "image_texture") {
+  auto image_options = [&] {
+    std::string space = ps.string("color_space", "srgb");
+    if (space != "srgb" && space != "linear")
+      throw SceneError(loc_of(ps, "color_space"),
+                       fmt::format("property 'color_space' of {} must be \"srgb\" or \"linear\", got \"{}\"", kind, space));
+    t.linear = space == "linear";
+    std::string filter = ps.string("filter", "bilinear");
+    if (filter != "bilinear" && filter != "nearest")
+      throw SceneError(loc_of(ps, "filter"),
+                       fmt::format("property 'filter' of {} must be \"bilinear\" or \"nearest\", got \"{}\"", kind, filter));
+    t.filter = filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
+  };
+  if (kind == "latlong_map") {
+    t.kind = TextureKind::LatLong;
+    t.image_path = resolve_path(ps.require_string("file"), loc_of(ps, "file"));
+    image_options();
+    ps.check_unused(kLatLongNames);
+  } else if (kind == "cube_map") {
+    t.kind = TextureKind::CubeMap;
+    std::string shown = ps.require_string("directory");
+    std::string dir = resolve_path(shown, loc_of(ps, "directory"));
+    t.face_paths = cube_map_faces(dir, shown, loc_of(ps, "directory"));
+    image_options();
+    ps.check_unused(kCubeMapNames);
+  } else if (kind == "image_texture") {
     t.kind = TextureKind::Image;
     std::string file = ps.require_string("file");
     t.image_path = resolve_path(file, loc_of(ps, "file"));
     check_readable(t.image_path, file, "image", loc_of(ps, "file"));
+    image_options();
     t.mapping = ps.string("mapping", "uv");
     if (t.mapping != "uv" && t.mapping != "planar" && t.mapping != "spherical")
       throw SceneError(
@@ -284,16 +358,45 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
       m.color = ps.color("color", m.color);
   }
   if (const TextureRef* ref = reference<TextureRef>(ps, "texture", "material", "texture")) m.texture = ref->id;
-  m.emission = ps.color("emission", m.emission);
-  non_negative_color(ps, "emission", m.emission);
+  // A channel holding a texture takes its value from the texture at each point.
+  auto channel_texture = [&](std::string_view name, TextureId& id) {
+    const ParamValue* v = ps.value(name);
+    if (auto* t = v ? std::get_if<TextureRef>(v) : nullptr) {
+      id = t->id;
+      return true;
+    }
+    return false;
+  };
+  if (!channel_texture("emission", m.emission_texture)) {
+    m.emission = ps.color("emission", m.emission);
+    non_negative_color(ps, "emission", m.emission);
+  }
   m.ambient = non_negative(ps, "ambient", ps.number("ambient", m.ambient));
-  m.diffuse = non_negative(ps, "diffuse", ps.number("diffuse", m.diffuse));
-  m.specular = non_negative(ps, "specular", ps.number("specular", m.specular));
+  if (channel_texture("diffuse", m.diffuse_texture))
+    m.diffuse = 1.0;
+  else
+    m.diffuse = non_negative(ps, "diffuse", ps.number("diffuse", m.diffuse));
+  if (channel_texture("specular", m.specular_texture))
+    m.specular = 1.0;
+  else
+    m.specular = non_negative(ps, "specular", ps.number("specular", m.specular));
   m.shininess = non_negative(ps, "shininess", ps.number("shininess", m.shininess));
-  m.reflect = ps.color("reflect", m.reflect);
-  non_negative_color(ps, "reflect", m.reflect);
-  m.transmit = ps.color("transmit", m.transmit);
-  non_negative_color(ps, "transmit", m.transmit);
+  if (!channel_texture("reflect", m.reflect_texture)) {
+    m.reflect = ps.color("reflect", m.reflect);
+    non_negative_color(ps, "reflect", m.reflect);
+  }
+  if (!channel_texture("transmit", m.transmit_texture)) {
+    m.transmit = ps.color("transmit", m.transmit);
+    non_negative_color(ps, "transmit", m.transmit);
+  } else {
+    // Where the texture is black the surface is opaque, but shadow rays must still test it.
+    m.transmit = Color(1.0);
+  }
+  if (const TextureRef* b = reference<TextureRef>(ps, "bump", "material", "texture")) m.bump = b->id;
+  m.bump_scale = ps.number("bump_scale", m.bump_scale);
+  if (!std::isfinite(m.bump_scale)) require(ps, "bump_scale", false, "finite", m.bump_scale);
+  if (const TextureRef* n = reference<TextureRef>(ps, "normal_map", "material", "texture")) m.normal_map = n->id;
+  if (m.bump != kNoId && m.normal_map != kNoId) ps.fail_block("material takes 'bump' or 'normal_map', not both");
   m.ior = positive(ps, "ior", ps.number("ior", m.ior));
   m.ior_relative = ps.boolean("ior_relative", m.ior_relative);
   m.fresnel = ps.boolean("fresnel", m.fresnel);
@@ -318,8 +421,46 @@ std::vector<Vec3> vector_list(ParamSet& ps, std::string_view name) {
   if (!v) return {};
   if (auto* l = std::get_if<std::vector<Vec3>>(v)) return *l;
   if (auto* l = std::get_if<std::vector<double>>(v); l && l->empty()) return {};
-  throw SceneError(loc_of(ps, name),
-                   fmt::format("property '{}' of mesh expects a list of vectors, got a {}", name, param_type_name(*v)));
+  throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} expects a list of vectors, got a {}", name,
+                                                 ps.kind(), param_type_name(*v)));
+}
+
+// Per-vertex material lists of a triangle or mesh (`vertex_colors`, `vertex_diffuse`,
+// `vertex_specular`, `vertex_shininess`), each absent or one entry per vertex; false when the
+// block has none of them.
+bool vertex_material(ParamSet& ps, std::size_t vertex_count, MeshData& mesh) {
+  bool any = false;
+  auto count_check = [&](std::string_view name, std::size_t n) {
+    if (n != vertex_count)
+      throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} has {} entries for {} vertices", name,
+                                                     ps.kind(), n, vertex_count));
+    any = true;
+  };
+  if (ps.has("vertex_colors")) {
+    std::vector<Vec3> colors = vector_list(ps, "vertex_colors");
+    count_check("vertex_colors", colors.size());
+    for (const Vec3& c : colors) {
+      if (c.x < 0 || c.y < 0 || c.z < 0)
+        throw SceneError(loc_of(ps, "vertex_colors"), "property 'vertex_colors' must not be negative");
+      mesh.colors.emplace_back(c);
+    }
+  }
+  for (auto [name, out] : {std::pair<std::string_view, std::vector<float>*>{"vertex_diffuse", &mesh.diffuse},
+                           {"vertex_specular", &mesh.specular},
+                           {"vertex_shininess", &mesh.shininess}}) {
+    if (!ps.has(name)) continue;
+    const ParamValue* v = ps.value(name);
+    auto* list = std::get_if<std::vector<double>>(v);
+    if (!list)
+      throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} expects a list of numbers, got a {}", name,
+                                                     ps.kind(), param_type_name(*v)));
+    count_check(name, list->size());
+    for (double x : *list) {
+      require(ps, name, x >= 0 && std::isfinite(x), ">= 0", x);
+      out->push_back(static_cast<float>(x));
+    }
+  }
+  return any;
 }
 
 // Zero area by the renderer's own test (the angle between the edges below
@@ -388,10 +529,31 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       g.n1 = ps.vec3("n1", Vec3(0.0));
       g.n2 = ps.vec3("n2", Vec3(0.0));
     }
-    if (degenerate_triangle(g.v0, g.v1, g.v2))
-      scene_.warnings.push_back({ps.loc(), "triangle has zero area (collinear or repeated vertices): it is skipped"});
-    s.geometry = g;
+    auto mesh = std::make_shared<MeshData>();
+    if (vertex_material(ps, 3, *mesh)) {
+      // A triangle whose vertices carry material values is traced as a one-triangle mesh,
+      // which knows how to interpolate them.
+      for (const Vec3& v : {g.v0, g.v1, g.v2}) mesh->positions.emplace_back(v);
+      if (g.has_normals)
+        for (const Vec3& n : {g.n0, g.n1, g.n2}) mesh->normals.emplace_back(glm::normalize(n));
+      mesh->indices = {0, 1, 2};
+      scene_.meshes.push_back(std::move(mesh));
+      s.geometry = MeshRef{static_cast<MeshId>(scene_.meshes.size() - 1), g.has_normals};
+    } else {
+      if (degenerate_triangle(g.v0, g.v1, g.v2))
+        scene_.warnings.push_back({ps.loc(), "triangle has zero area (collinear or repeated vertices): it is skipped"});
+      s.geometry = g;
+    }
     ps.check_unused(kTriangleNames);
+  } else if (kind == "quad") {
+    Quad g;
+    g.corner = ps.vec3("corner", g.corner);
+    g.edge_u = direction(ps, "edge_u", ps.vec3("edge_u", g.edge_u));
+    g.edge_v = direction(ps, "edge_v", ps.vec3("edge_v", g.edge_v));
+    if (glm::length(glm::cross(glm::normalize(g.edge_u), glm::normalize(g.edge_v))) < kMinDirectionLength)
+      throw SceneError(loc_of(ps, "edge_v"), "quad edge_u and edge_v must not be parallel");
+    s.geometry = g;
+    ps.check_unused(kQuadNames);
   } else if (kind == "box") {
     Box g;
     g.min = ps.require_vec3("min");
@@ -456,6 +618,10 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
         limits.max_memory = limits_.max_memory;
         mesh = load_obj(path, file, g.smooth, where, limits);
       }
+      for (std::string_view name : {"vertex_colors", "vertex_diffuse", "vertex_specular", "vertex_shininess"})
+        if (ps.has(name))
+          throw SceneError(loc_of(ps, name), fmt::format("property '{}' of mesh needs inline 'vertices' (OBJ files "
+                                                         "carry their own vertex colors: v x y z r g b)", name));
     } else {
       if (!ps.has("vertices")) ps.fail_block("mesh needs property 'file' or 'vertices' and 'faces'");
       if (!ps.has("faces")) ps.fail_block("mesh needs property 'faces'");
@@ -476,6 +642,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       for (const Vec3& f : faces)
         for (int k = 0; k < 3; ++k) mesh->indices.push_back(mesh_index(ps, f[k], vertices.size()));
       if (normals.empty() && g.smooth) compute_smooth_normals(*mesh);
+      vertex_material(ps, vertices.size(), *mesh);
     }
     if (mesh) warn_degenerate(*mesh, ps.loc(), scene_.warnings);
     if (mesh) {  // newly built or loaded

@@ -51,6 +51,10 @@ const char* texture_kind(TextureKind k) {
       return "gradient";
     case TextureKind::Image:
       return "image_texture";
+    case TextureKind::LatLong:
+      return "latlong_map";
+    case TextureKind::CubeMap:
+      return "cube_map";
   }
   return "?";
 }
@@ -82,6 +86,9 @@ std::string shape_text(const ShapeDesc& s) {
                          num(g.radius), num(g.inner_radius));
     }
     std::string operator()(const MeshRef& g) { return fmt::format("mesh {} smooth {}", id(g.mesh), yes(g.smooth)); }
+    std::string operator()(const Quad& g) {
+      return fmt::format("quad corner {} edge_u {} edge_v {}", vec(g.corner), vec(g.edge_u), vec(g.edge_v));
+    }
   };
   return std::visit(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material));
 }
@@ -107,8 +114,11 @@ std::string light_text(const LightDesc& l) {
 
 void SceneDesc::dump(std::ostream& out) const {
   const Settings& s = settings;
-  out << fmt::format("settings width {} height {} samples {} max_depth {} background {} ambient_light {} seed {}\n",
+  out << fmt::format("settings width {} height {} samples {} max_depth {} background {} ambient_light {} seed {}",
                      s.width, s.height, s.samples, s.max_depth, col(s.background), col(s.ambient_light), s.seed);
+  if (s.environment != kNoId)
+    out << fmt::format(" environment texture {} environment_ambient {}", s.environment, yes(s.environment_ambient));
+  out << '\n';
   const CameraDesc& c = camera;
   out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}\n",
                      has_camera ? "" : " (default)",
@@ -120,8 +130,15 @@ void SceneDesc::dump(std::ostream& out) const {
     out << fmt::format("  texture {}: {}", i, texture_kind(t.kind));
     if (t.kind == TextureKind::Image)
       out << fmt::format(" file {} mapping {}", base(t.image_path), t.mapping);
+    else if (t.kind == TextureKind::LatLong)
+      out << fmt::format(" file {}", base(t.image_path));
+    else if (t.kind == TextureKind::CubeMap)
+      for (const std::string& f : t.face_paths) out << ' ' << base(f);
     else
       out << fmt::format(" color1 {} color2 {} scale {} axis {}", col(t.color1), col(t.color2), num(t.scale), t.axis);
+    // Newer options print only when not their defaults, so older dumps stay as they were.
+    if (t.linear) out << " color_space linear";
+    if (t.filter == TextureFilter::Nearest) out << " filter nearest";
     out << fmt::format(" transform {}{}\n", mat(t.transform), where(t.loc));
   }
   out << fmt::format("materials {}\n", materials.size());
@@ -133,13 +150,26 @@ void SceneDesc::dump(std::ostream& out) const {
         i, col(m.color), id(m.texture), col(m.emission), num(m.ambient), num(m.diffuse), num(m.specular),
         num(m.shininess), col(m.reflect), col(m.transmit), num(m.ior), m.ior_relative ? " (relative)" : "",
         yes(m.fresnel), num(m.roughness), where(m.loc));
+    const std::pair<const char*, TextureId> maps[] = {
+        {"diffuse", m.diffuse_texture}, {"specular", m.specular_texture}, {"reflect", m.reflect_texture},
+        {"transmit", m.transmit_texture}, {"emission", m.emission_texture}, {"bump", m.bump},
+        {"normal_map", m.normal_map}};
+    std::string extra;
+    for (const auto& [name, tex] : maps)
+      if (tex != kNoId) extra += fmt::format(" {} texture {}", name, tex);
+    if (m.bump != kNoId) extra += fmt::format(" bump_scale {}", num(m.bump_scale));
+    if (!extra.empty()) out << "    maps" << extra << '\n';
   }
   out << fmt::format("meshes {}\n", meshes.size());
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const MeshData& m = *meshes[i];
-    out << fmt::format("  mesh {}: vertices {} triangles {} normals {} uvs {} source {}\n", i, m.positions.size(),
+    out << fmt::format("  mesh {}: vertices {} triangles {} normals {} uvs {} source {}", i, m.positions.size(),
                        m.indices.size() / 3, m.normals.size(), m.uvs.size(),
                        m.source.empty() ? "inline" : base(m.source));
+    if (m.has_vertex_material())
+      out << fmt::format(" vertex colors {} diffuse {} specular {} shininess {}", m.colors.size(), m.diffuse.size(),
+                         m.specular.size(), m.shininess.size());
+    out << '\n';
   }
   out << fmt::format("nodes {}\n", nodes.size());
   for (std::size_t i = 0; i < nodes.size(); ++i) {

@@ -15,6 +15,21 @@ struct SurfaceHit {
   glm::dvec2 uv{0.0};
   bool has_uv = false;
   double error = 0.0;        // bound on |point - exact point| per component (object space)
+  // Object-space derivatives of the point along u and v, for bump and normal maps' tangent
+  // frame; set only by the shapes that have them (quads, meshes with uvs: World reads them for
+  // those kinds only), so the candidate hits of every other test do not pay to clear them.
+  Vec3 dpdu, dpdv;
+  // Triangles of meshes: the triangle index and barycentrics (b1, b2) of vertices 1 and 2, for
+  // per-vertex materials (set by meshes only, read for meshes only).
+  uint32_t triangle;
+  glm::dvec2 bary;
+};
+
+// Per-vertex material values interpolated at a hit (each only when the mesh has it).
+struct VertexMaterial {
+  bool has_color = false, has_diffuse = false, has_specular = false, has_shininess = false;
+  Color color;
+  double diffuse = 0, specular = 0, shininess = 0;
 };
 
 }  // namespace rts::render

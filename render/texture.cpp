@@ -7,7 +7,13 @@
 //              the second half color2.
 //  - gradient: color1 → color2 linearly along `axis` over `scale`, then repeats (a sawtooth,
 //              as POV-Ray's gradient pattern).
-//  - image:    bilinear lookup with repeat wrapping; v = 0 is the image's bottom row.
+//  - image:    bilinear (or nearest) lookup with repeat wrapping; v = 0 is the image's bottom
+//              row.
+//  - latlong:  an equirectangular environment: u = 0.5 + atan2(x, z) / 2pi (the image's centre
+//              column looks along +z, +x to its right), v = 0.5 + asin(y) / pi.
+//  - cube_map: six faces, each seen upright and unmirrored from inside the cube (rts's
+//              left-handed view: +z front, +x right, +y up); the +y face's bottom edge meets
+//              the +z face's top edge, the -y face's top edge meets its bottom edge.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -86,6 +92,41 @@ Color sample_bilinear(const Image& image, double u, double v) {
   return mix(top, bottom, fy);
 }
 
+Color sample_nearest(const Image& image, double u, double v) {
+  const int x = std::min(static_cast<int>(wrap01(u) * image.width), image.width - 1);
+  const int y = std::min(static_cast<int>((1.0 - wrap01(v)) * image.height), image.height - 1);
+  const float* p = image.at(std::max(x, 0), std::max(y, 0));
+  return Color(p[0], p[1], p[2]);
+}
+
+// The face (0..5 = +x, -x, +y, -y, +z, -z) a direction points at and its (u, v) on that face.
+int cube_face(const Vec3& d, glm::dvec2& uv) {
+  const Vec3 a = glm::abs(d);
+  int face;
+  double s, t, m;
+  if (a.x >= a.y && a.x >= a.z) {
+    m = a.x;
+    face = d.x > 0 ? 0 : 1;
+    s = d.x > 0 ? -d.z : d.z;
+    t = d.y;
+  } else if (a.y >= a.z) {
+    m = a.y;
+    face = d.y > 0 ? 2 : 3;
+    s = d.x;
+    t = d.y > 0 ? -d.z : d.z;
+  } else {
+    m = a.z;
+    face = d.z > 0 ? 4 : 5;
+    s = d.z > 0 ? d.x : -d.x;
+    t = d.y;
+  }
+  if (!(m > 0.0)) m = 1.0;   // the zero vector: the face centre
+  // Clamped inside the face: bilinear filtering wraps, so keep half a texel... away by
+  // clamping to [0, 1) and letting the sampler's own wrap stay on the face.
+  uv = {std::clamp(0.5 * (s / m + 1.0), 0.0, 1.0), std::clamp(0.5 * (t / m + 1.0), 0.0, 1.0)};
+  return face;
+}
+
 glm::dvec2 planar_uv(const Vec3& q) { return {q.x, q.z}; }
 
 // Longitude → u (0 at -x, going round through +z), latitude → v (0 at the south pole).
@@ -104,18 +145,64 @@ bool is_known_mapping(const std::string& mapping) {
 
 }  // namespace
 
-CompiledTexture::CompiledTexture(const TextureDesc& desc, std::shared_ptr<const Image> image)
-    : desc_(desc), inverse_(glm::inverse(desc.transform)), image_(std::move(image)) {
-  if (desc_.kind == TextureKind::Image) {
-    if (image_ == nullptr || image_->width <= 0 || image_->height <= 0) {
+CompiledTexture::CompiledTexture(const TextureDesc& desc,
+                                 std::vector<std::shared_ptr<const Image>> images)
+    : desc_(desc), inverse_(glm::inverse(desc.transform)), images_(std::move(images)) {
+  const std::size_t wanted = desc_.kind == TextureKind::CubeMap ? 6
+                             : desc_.kind == TextureKind::Image || desc_.kind == TextureKind::LatLong ? 1
+                                                                                                   : 0;
+  if (images_.size() != wanted) {
+    throw RenderError(desc_.loc, fmt::format("texture has {} images, needs {}", images_.size(), wanted));
+  }
+  for (const auto& image : images_) {
+    if (image == nullptr || image->width <= 0 || image->height <= 0) {
       throw RenderError(desc_.loc, fmt::format("image texture '{}' has no image data",
                                                desc_.image_path));
     }
+  }
+  if (desc_.kind == TextureKind::Image) {
     if (!is_known_mapping(desc_.mapping)) {
       throw RenderError(desc_.loc, fmt::format("unknown image mapping '{}' (expected \"uv\", "
                                                "\"planar\" or \"spherical\")", desc_.mapping));
     }
   }
+}
+
+Color CompiledTexture::sample(const Image& image, double u, double v) const {
+  return desc_.filter == TextureFilter::Nearest ? sample_nearest(image, u, v)
+                                                : sample_bilinear(image, u, v);
+}
+
+double CompiledTexture::texel_size() const {
+  if (images_.empty()) return 0.0;
+  return 1.0 / std::max(images_[0]->width, images_[0]->height);
+}
+
+Color CompiledTexture::lookup_direction(const Vec3& d) const {
+  if (desc_.kind == TextureKind::CubeMap) {
+    glm::dvec2 uv;
+    const int face = cube_face(d, uv);
+    const Image& image = *images_[face];
+    // Keep bilinear filtering from wrapping to the opposite edge of the face.
+    const double hu = 0.5 / image.width, hv = 0.5 / image.height;
+    return sample(image, std::clamp(uv.x, hu, 1.0 - hu), std::clamp(uv.y, hv, 1.0 - hv));
+  }
+  const double r = glm::length(d);
+  if (!(r > kMinSphericalRadius) || !std::isfinite(r)) return sample(*images_[0], 0.5, 0.5);
+  const Vec3 n = d / r;
+  const double u = 0.5 + std::atan2(n.x, n.z) / (2.0 * std::numbers::pi);
+  const double v = 0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / std::numbers::pi;
+  // Clamp v so the poles' rows do not blend with the opposite pole through wrapping.
+  const double hv = 0.5 / images_[0]->height;
+  return sample(*images_[0], u, std::clamp(v, hv, 1.0 - hv));
+}
+
+Color CompiledTexture::eval_direction(const Vec3& direction) const {
+  const Vec3 q = Vec3(inverse_ * glm::dvec4(direction, 0.0));
+  if (is_environment()) return lookup_direction(q);
+  TexturePoint p;
+  p.object_point = direction;
+  return eval(p);
 }
 
 Color CompiledTexture::eval(const TexturePoint& p) const {
@@ -124,6 +211,8 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
     case TextureKind::Checker: return checker(desc_, q);
     case TextureKind::Stripes: return stripes(desc_, q);
     case TextureKind::Gradient: return gradient(desc_, q);
+    case TextureKind::LatLong:
+    case TextureKind::CubeMap: return lookup_direction(q);
     case TextureKind::Image: break;
   }
   glm::dvec2 uv;
@@ -136,33 +225,43 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
   } else {
     uv = planar_uv(q);
   }
-  return sample_bilinear(*image_, uv.x, uv.y);
+  return sample(*images_[0], uv.x, uv.y);
 }
 
 std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used) {
-  std::map<std::string, std::shared_ptr<const Image>> loaded;   // path → image, loaded once
+  // (path, linear) → image, each file loaded once per color space.
+  std::map<std::pair<std::string, bool>, std::shared_ptr<const Image>> loaded;
+  auto load = [&](const std::string& path, const TextureDesc& desc) {
+    auto key = std::make_pair(path, desc.linear);
+    auto it = loaded.find(key);
+    if (it == loaded.end()) {
+      auto fresh = std::make_shared<const Image>(
+          read_image(path, desc.loc, desc.linear ? Encoding::Linear : Encoding::SRGB));
+      it = loaded.emplace(std::move(key), std::move(fresh)).first;
+    }
+    return it->second;
+  };
   std::vector<CompiledTexture> compiled;
   compiled.reserve(scene.textures.size());
   for (std::size_t id = 0; id < scene.textures.size(); ++id) {
     const TextureDesc& desc = scene.textures[id];
-    std::shared_ptr<const Image> image;
-    bool needed = !used || (id < used->size() && (*used)[id]);
-    if (desc.kind == TextureKind::Image && needed) {
-      auto it = loaded.find(desc.image_path);
-      if (it == loaded.end()) {
-        auto fresh = std::make_shared<const Image>(read_png(desc.image_path, desc.loc));
-        it = loaded.emplace(desc.image_path, std::move(fresh)).first;
-      }
-      image = it->second;
-    }
-    if (desc.kind == TextureKind::Image && !needed) {
-      // Never evaluated (no placed material refers to it): keep its slot, skip the file.
+    const bool has_files = desc.kind == TextureKind::Image || desc.kind == TextureKind::LatLong ||
+                           desc.kind == TextureKind::CubeMap;
+    const bool needed = !used || (id < used->size() && (*used)[id]);
+    if (has_files && !needed) {
+      // Never evaluated (nothing placed refers to it): keep its slot, skip the files.
       TextureDesc placeholder;
       placeholder.loc = desc.loc;
-      compiled.emplace_back(placeholder, nullptr);
+      compiled.emplace_back(placeholder, std::vector<std::shared_ptr<const Image>>{});
       continue;
     }
-    compiled.emplace_back(desc, std::move(image));
+    std::vector<std::shared_ptr<const Image>> images;
+    if (desc.kind == TextureKind::Image || desc.kind == TextureKind::LatLong) {
+      images.push_back(load(desc.image_path, desc));
+    } else if (desc.kind == TextureKind::CubeMap) {
+      for (const std::string& face : desc.face_paths) images.push_back(load(face, desc));
+    }
+    compiled.emplace_back(desc, std::move(images));
   }
   return compiled;
 }

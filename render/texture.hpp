@@ -21,15 +21,31 @@ struct TexturePoint {
 
 class CompiledTexture {
  public:
-  CompiledTexture(const TextureDesc& desc, std::shared_ptr<const Image> image);
+  // images: one for Image and LatLong textures, six (+x, -x, +y, -y, +z, -z) for CubeMap.
+  CompiledTexture(const TextureDesc& desc, std::vector<std::shared_ptr<const Image>> images);
+  // One image, or none (null) for procedural kinds.
+  CompiledTexture(const TextureDesc& desc, std::shared_ptr<const Image> image)
+      : CompiledTexture(desc, image ? std::vector<std::shared_ptr<const Image>>{std::move(image)}
+                                    : std::vector<std::shared_ptr<const Image>>{}) {}
   Color eval(const TexturePoint& p) const;
   // Bytes of decoded image data this texture holds (0 for procedural ones).
   std::size_t image_bytes() const { return image_ ? image_->rgb.size() * sizeof(float) : 0; }
+  // Environment lookup along a world direction (need not be unit length); any texture kind
+  // answers, procedural ones at the point `direction` itself.
+  Color eval_direction(const Vec3& direction) const;
+  bool is_environment() const {
+    return desc_.kind == TextureKind::LatLong || desc_.kind == TextureKind::CubeMap;
+  }
+  // The size of one texel in uv units (0 for procedural textures), for bump-map differences.
+  double texel_size() const;
 
  private:
+  Color sample(const Image& image, double u, double v) const;
+  Color lookup_direction(const Vec3& texture_space_direction) const;
+
   TextureDesc desc_;
-  Mat4 inverse_;                         // object space → texture space
-  std::shared_ptr<const Image> image_;   // Image textures only (linear RGB)
+  Mat4 inverse_;                                       // object space → texture space
+  std::vector<std::shared_ptr<const Image>> images_;   // image kinds only (linear RGB)
 };
 
 // Loads each distinct image once. Throws RenderError located at the texture's SourceRef when

@@ -78,4 +78,9 @@ inline constexpr double kMaxRadiance = 1e30;
 // Group nesting deeper than this is treated as a cycle in the scene graph.
 inline constexpr int kMaxGroupDepth = 1024;
 
+// Bump maps take the slope of a procedural height texture by finite differences this far
+// apart (in uv units, or scene units without uvs): small beside a texture's features, large
+// beside double rounding. Image textures step one texel instead.
+inline constexpr double kBumpDifference = 1e-4;
+
 }  // namespace rts::render::tol

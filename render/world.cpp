@@ -9,6 +9,7 @@
 #include "render/shapes/cylinder.hpp"
 #include "render/shapes/disc.hpp"
 #include "render/shapes/plane.hpp"
+#include "render/shapes/quad.hpp"
 #include "render/shapes/sphere.hpp"
 #include "render/shapes/triangle.hpp"
 #include "render/tolerances.hpp"
@@ -50,6 +51,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
       xf.to_world = fs.to_world;
       xf.to_object = glm::inverse(fs.to_world);
       xf.normal_to_world = glm::transpose(glm::dmat3(xf.to_object));
+      xf.vector_to_world = glm::dmat3(fs.to_world);
       inst.transform = static_cast<uint32_t>(transforms_.size());
       transforms_.push_back(xf);
     }
@@ -79,11 +81,15 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
           } else if constexpr (std::is_same_v<T, Disc>) {
             inst.kind = PrimKind::Disc; inst.index = discs_.size(); discs_.push_back(g);
             object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Quad>) {
+            inst.kind = PrimKind::Quad; inst.index = quads_.size(); quads_.push_back(g);
+            object_bounds = bounds(g);
           } else if constexpr (std::is_same_v<T, MeshRef>) {
             if (g.mesh >= scene.meshes.size() || !scene.meshes[g.mesh])
               throw RenderError(shape.loc, "internal: shape refers to unknown mesh " + std::to_string(g.mesh));
             meshes_[g.mesh] = mesh_accel(scene, g.mesh);
             inst.kind = PrimKind::Mesh; inst.index = g.mesh; inst.smooth = g.smooth;
+            inst.vertex_material = scene.meshes[g.mesh]->has_vertex_material();
             object_bounds = meshes_[g.mesh]->bounds();
           }
         },
@@ -111,7 +117,8 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
 namespace {
 bool same_mesh_data(const MeshData& a, const MeshData& b) {
   return a.source == b.source && a.origin == b.origin && a.indices == b.indices && a.positions == b.positions &&
-         a.normals == b.normals && a.uvs == b.uvs;
+         a.normals == b.normals && a.uvs == b.uvs && a.colors == b.colors &&
+         a.diffuse == b.diffuse && a.specular == b.specular && a.shininess == b.shininess;
 }
 }  // namespace
 
@@ -152,6 +159,7 @@ bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const
     case PrimKind::Cone: return render::intersect(cones_[inst.index], ray, ray_t, hit);
     case PrimKind::Disc: return render::intersect(discs_[inst.index], ray, ray_t, hit);
     case PrimKind::Mesh: return meshes_[inst.index]->intersect(ray, ray_t, hit, inst.smooth);
+    case PrimKind::Quad: return render::intersect(quads_[inst.index], ray, ray_t, hit);
   }
   return false;
 }
@@ -211,6 +219,10 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
   // texture asks for them.
   hit.has_uv = best.has_uv || inst.kind == PrimKind::Sphere;
+  const bool mesh = inst.kind == PrimKind::Mesh;
+  hit.triangle = mesh ? best.triangle : 0;
+  hit.bary = mesh ? best.bary : glm::dvec2(0.0);
+  if (!mesh && inst.kind != PrimKind::Quad) best.dpdu = best.dpdv = Vec3(0.0);   // not set by the others
   // The world point is the shape's own (refined) object point carried to world space, not
   // ray.at(t): its error bound then stays relative to the shape, whatever the ray travelled.
   if (inst.transform == kNoId) {
@@ -218,6 +230,8 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
     hit.error = best.error;
     hit.normal = glm::normalize(best.normal);
     hit.shading_normal = glm::normalize(best.shading_normal);
+    hit.dpdu = best.dpdu;
+    hit.dpdv = best.dpdv;
   } else {
     const InstanceTransform& xf = transforms_[inst.transform];
     hit.point = Vec3(xf.to_world * glm::dvec4(best.point, 1.0));
@@ -227,10 +241,20 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
     hit.error = linear * best.error * (1.0 + error_gamma(3)) +
                 error_gamma(3) * (linear * max_abs_component(best.point) +
                                   max_abs_component(Vec3(xf.to_world[3])));
-    hit.normal = glm::normalize(xf.normal_to_world * best.normal);
-    hit.shading_normal = glm::normalize(xf.normal_to_world * best.shading_normal);
+    const glm::dmat3& nm = xf.normal_to_world;
+    hit.normal = glm::normalize(nm * best.normal);
+    hit.shading_normal = glm::normalize(nm * best.shading_normal);
+    // Tangents transform as vectors, unlike normals.
+    hit.dpdu = xf.vector_to_world * best.dpdu;
+    hit.dpdv = xf.vector_to_world * best.dpdv;
   }
   return true;
+}
+
+bool World::vertex_material(const WorldHit& hit, VertexMaterial& out) const {
+  const Instance& inst = instances_[hit.instance];
+  if (!inst.vertex_material) return false;
+  return meshes_[inst.index]->vertex_material(hit.triangle, hit.bary, out);
 }
 
 glm::dvec2 World::surface_uv(const WorldHit& hit) const {

@@ -15,7 +15,7 @@
 
 namespace rts::render {
 
-enum class PrimKind : uint8_t { Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh };
+enum class PrimKind : uint8_t { Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad };
 
 // 16 bytes, so the instances a BVH leaf points at share cache lines; transforms live apart
 // (only transformed instances have one).
@@ -23,6 +23,7 @@ struct Instance {
   PrimKind kind = PrimKind::Sphere;
   bool smooth = true;          // meshes: interpolate vertex normals
   bool transmissive = false;   // its material lets light through (shadow rays pass it)
+  bool vertex_material = false;  // meshes: its vertices carry material values
   uint32_t index = 0;          // into the World's array for `kind` (meshes: the MeshId)
   MaterialId material = kNoId;
   uint32_t transform = kNoId;  // into World's transforms, or kNoId: trace the world ray as is
@@ -32,6 +33,7 @@ struct InstanceTransform {
   Mat4 to_world{1.0};               // object → world
   Mat4 to_object{1.0};              // world → object
   glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
+  glm::dmat3 vector_to_world{1.0};  // the object → world linear part (tangents)
 };
 
 // A hit in world space, plus what shading needs from object space.
@@ -45,6 +47,9 @@ struct WorldHit {
   Vec3 object_point{0.0};      // for textures
   glm::dvec2 uv{0.0};           // spheres: use World::surface_uv
   bool has_uv = false;
+  Vec3 dpdu{0.0}, dpdv{0.0};    // world-space surface derivatives, zero when unknown
+  uint32_t triangle = 0;        // meshes: which triangle, and its barycentrics (b1, b2)
+  glm::dvec2 bary{0.0};
 };
 
 // A few bounded objects are tested one after another: a BVH over them is one leaf holding the
@@ -84,6 +89,9 @@ class World {
   WorldMemory memory() const;
   // The hit's texture coordinates (spheres' are computed here, on demand).
   glm::dvec2 surface_uv(const WorldHit& hit) const;
+  // The hit's per-vertex material values; false when its shape has none.
+  bool has_vertex_material(const WorldHit& hit) const { return instances_[hit.instance].vertex_material; }
+  bool vertex_material(const WorldHit& hit, VertexMaterial& out) const;
 
   const Instance& instance(uint32_t i) const { return instances_[i]; }
   std::size_t instance_count() const { return instances_.size(); }
@@ -105,6 +113,7 @@ class World {
   std::vector<Cylinder> cylinders_;
   std::vector<Cone> cones_;
   std::vector<Disc> discs_;
+  std::vector<Quad> quads_;
   // By MeshId; null when unreferenced. MeshIds whose data are identical (the same OBJ file
   // loaded by several statements) share one MeshAccel, so one BVH.
   std::vector<std::shared_ptr<const MeshAccel>> meshes_;

@@ -315,11 +315,12 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
     case Type::List: {
       const auto& items = as_list(v);
       if (items.empty()) return std::vector<double>{};
-      if (items.front().type == Type::Vector) {
+      if (items.front().type == Type::Vector || items.front().type == Type::Color) {
+        // Colors travel as vectors (r, g, b): `vertex_colors = [rgb(1, 0, 0), ...]`.
         std::vector<render::Vec3> out;
         out.reserve(items.size());
         for (const Value& x : items) {
-          if (x.type != Type::Vector) break;
+          if (x.type != items.front().type) break;
           out.push_back(x.v);
         }
         if (out.size() == items.size()) return out;
@@ -333,7 +334,7 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
         if (out.size() == items.size()) return out;
       }
       fail(p.loc,
-           fmt::format("property '{}' of {} cannot hold this list: properties take lists of numbers or of vectors",
+           fmt::format("property '{}' of {} cannot hold this list: properties take lists of numbers, of vectors or of colors",
                        *p.name, kind));
     }
     default:

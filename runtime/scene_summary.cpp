@@ -51,6 +51,12 @@ bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Ve
       hi = g.center + g.radius;
       return true;
     }
+    bool operator()(const render::Quad& g) {
+      const Vec3 far = g.corner + g.edge_u + g.edge_v;
+      lo = glm::min(glm::min(g.corner, far), glm::min(g.corner + g.edge_u, g.corner + g.edge_v));
+      hi = glm::max(glm::max(g.corner, far), glm::max(g.corner + g.edge_u, g.corner + g.edge_v));
+      return true;
+    }
     bool operator()(const render::MeshRef& g) {
       const render::MeshData& m = *scene.meshes[g.mesh];
       if (m.positions.empty()) return false;
@@ -67,7 +73,7 @@ bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Ve
 }
 
 const char* shape_kind(const render::ShapeGeometry& g) {
-  static const char* names[] = {"sphere", "plane", "triangle", "box", "cylinder", "cone", "disc", "mesh"};
+  static const char* names[] = {"sphere", "plane", "triangle", "box", "cylinder", "cone", "disc", "mesh", "quad"};
   return names[g.index()];
 }
 

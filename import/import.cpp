@@ -1,0 +1,61 @@
+#include "import/import.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "import/tokens.hpp"
+#include "import/writer.hpp"
+
+namespace rts::import {
+
+void import_mit(const std::string& text, const ImportOptions& opt, SceneText& out);       // mit.cpp
+void import_csci420(const std::string& text, const ImportOptions& opt, SceneText& out);   // csci420.cpp
+std::vector<MeshFile> import_uw(const std::string& text, const ImportOptions& opt, SceneText& out);   // uw_ray.cpp
+
+const char* format_name(Format f) {
+  switch (f) {
+    case Format::Mit: return "MIT 6.837 scene";
+    case Format::Csci420: return "USC CSCI 420 .scene";
+    case Format::UwRay: return "UW CSE 457 SBT-raytracer 1.0 .ray";
+  }
+  return "?";
+}
+
+Format detect_format(const std::string& text, const std::string& path) {
+  Tokens tk(text);
+  if (!tk.done()) {
+    const std::string& first = tk.peek().text;
+    if (first == "SBT-raytracer") return Format::UwRay;
+    if (first == "PerspectiveCamera" || first == "OrthographicCamera" || first == "Lights" || first == "Background" ||
+        first == "Materials" || first == "Group")
+      return Format::Mit;
+    if (first == "amb:" || (!first.empty() && std::isdigit(static_cast<unsigned char>(first[0])))) return Format::Csci420;
+  }
+  std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".ray") return Format::UwRay;
+  if (ext == ".scene") return Format::Csci420;
+  if (ext == ".txt") return Format::Mit;
+  const Token& at = tk.peek();
+  throw ImportError(at.line, at.col,
+                    "cannot tell the format: expected 'SBT-raytracer 1.0' (UW .ray), an object count (CSCI 420 "
+                    ".scene) or an MIT block such as PerspectiveCamera");
+}
+
+ImportResult import_scene(const std::string& text, Format format, const ImportOptions& options) {
+  SceneText out;
+  out.header.push_back(fmt::format("Imported by `rts import` from {} ({}).", options.source_name, format_name(format)));
+  out.header.push_back("Course conventions kept: right-handed coordinates (mirrored below), the course's shading");
+  out.header.push_back("terms as rts materials. See docs/from-courses.md.");
+  ImportResult result;
+  result.format = format;
+  switch (format) {
+    case Format::Mit: import_mit(text, options, out); break;
+    case Format::Csci420: import_csci420(text, options, out); break;
+    case Format::UwRay: result.meshes = import_uw(text, options, out); break;
+  }
+  result.rts = out.finish();
+  return result;
+}
+
+}  // namespace rts::import
