@@ -302,14 +302,19 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
   };
   if (kind == "latlong_map") {
     t.kind = TextureKind::LatLong;
-    t.image_path = resolve_path(ps.require_string("file"), loc_of(ps, "file"));
+    std::string file = ps.require_string("file");
+    t.image_path = resolve_path(file, loc_of(ps, "file"));
+    check_readable(t.image_path, file, "image", loc_of(ps, "file"));
     image_options();
     ps.check_unused(kLatLongNames);
   } else if (kind == "cube_map") {
     t.kind = TextureKind::CubeMap;
     std::string shown = ps.require_string("directory");
     std::string dir = resolve_path(shown, loc_of(ps, "directory"));
+    // The folder itself is checked against the read rule (its faces lie inside it).
+    if (!read_policy_.allows(dir)) throw SceneError(loc_of(ps, "directory"), read_policy_.refusal(shown, dir));
     t.face_paths = cube_map_faces(dir, shown, loc_of(ps, "directory"));
+    for (const std::string& face : t.face_paths) check_readable(face, face, "cube_map face", loc_of(ps, "directory"));
     image_options();
     ps.check_unused(kCubeMapNames);
   } else if (kind == "image_texture") {
