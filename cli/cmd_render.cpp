@@ -1,6 +1,6 @@
-// `rts render SCENE.rts [-o OUT.png] ...`: evaluate the scene, render it, write PNG(s).
-// Nothing is written unless evaluation and rendering both succeed; each PNG is written
-// atomically (write_png), so a failure never truncates an existing image.
+// `rts render SCENE.rts [-o OUT.png|.pfm|.exr] ...`: evaluate the scene, render it, write the
+// image(s). Nothing is written unless evaluation and rendering both succeed; each file is
+// written atomically, so a failure never truncates an existing image.
 #include <unistd.h>
 
 #include <chrono>
@@ -16,7 +16,7 @@
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
 #include "parser/diagnostics.hpp"
-#include "render/image.hpp"
+#include "render/image_output.hpp"
 #include "render/renderer.hpp"
 #include "runtime/evaluator.hpp"
 
@@ -32,7 +32,10 @@ struct RenderCommand {
   uint64_t seed = 0;
   int width = 0, height = 0, samples = 0, max_depth = 0;
   std::vector<std::string> aovs;
-  int bits = 8;
+  int bits = 0;  // 0: the format's default
+  bool linear = false, aov_files = false;
+  std::vector<double> depth_range;
+  float depth_miss = 0.0f, normal_miss = 0.0f;
   bool no_progress = false;
   EvalOptions eval;
 };
@@ -42,13 +45,6 @@ void print_error(const render::SourceRef& where, const std::string& message) {
     std::cerr << fmt::format("{}:{}:{}: error: {}\n", where.file, where.line, where.col, message);
   else
     std::cerr << "rts: error: " << message << "\n";
-}
-
-// <out>.normal.png beside OUT.png (the .png extension is replaced, other names get a suffix).
-std::string aov_path(const std::string& out, const std::string& name) {
-  fs::path p(out);
-  if (p.extension() == ".png") p.replace_extension();
-  return p.string() + "." + name + ".png";
 }
 
 // Fails early (before spending time rendering) when the output folder cannot take the file.
@@ -74,6 +70,9 @@ void check_output_writable(const std::string& out) {
 int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) {
   std::string out = c.output;
   if (out.empty()) out = fs::path(c.scene).stem().string() + ".png";
+  // A usage error, before any work: never write one format's bytes under another's name.
+  render::OutputSpecResult spec = render::output_spec(out, c.bits, c.linear, c.aov_files);
+  if (!spec.spec) throw CLI::ValidationError("--output", spec.error);
 
   SourceManager sources;
   DiagnosticSink sink(std::cerr, ctx.color);
@@ -102,6 +101,9 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   if (cmd.count("--samples")) opts.samples = c.samples;
   if (cmd.count("--max-depth")) opts.max_depth = c.max_depth;
   opts.aovs = c.aovs;
+  if (!c.depth_range.empty()) opts.depth_range = std::make_pair(c.depth_range[0], c.depth_range[1]);
+  opts.depth_miss = c.depth_miss;
+  opts.normal_miss = c.normal_miss;
   opts.progress = !c.no_progress && isatty(STDERR_FILENO);
 
   try {
@@ -109,10 +111,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     render::RenderResult result = render::render(scene, opts);
     result.stats.eval_seconds = eval_seconds;
     auto write_start = std::chrono::steady_clock::now();
-    render::write_png(out, result.color, c.bits, render::Encoding::SRGB);
-    // AOVs are data (normals, depth), not colors: stored without the sRGB curve.
-    for (const auto& [name, image] : result.aovs)
-      render::write_png(aov_path(out, name), image, c.bits, render::Encoding::Linear);
+    render::write_images(out, *spec.spec, result.color, result.aovs);
     result.stats.write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";
@@ -132,7 +131,8 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   auto c = std::make_shared<RenderCommand>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to a PNG image");
   cmd->add_option("scene", c->scene, "The scene file (.rts)")->required();
-  cmd->add_option("-o,--output", c->output, "Output PNG (default: the scene's name with .png, here)");
+  cmd->add_option("-o,--output", c->output,
+                  "Output image: .png, .pfm or .exr, by extension (default: the scene's name with .png, here)");
   cmd->add_option("--threads", c->threads, "Worker threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", c->seed, "Random seed (overrides the scene's settings.seed)");
@@ -141,10 +141,19 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--samples", c->samples, "Samples per pixel")->check(CLI::PositiveNumber);
   cmd->add_option("--max-depth", c->max_depth, "Reflection/refraction depth")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--aov", c->aovs, "Extra images: normal,depth,albedo (written as OUT.<name>.png)")
+  cmd->add_option("--aov", c->aovs, "Extra images: normal,depth,albedo (written as OUT.<name>.<ext>)")
       ->delimiter(',')
       ->check(CLI::IsMember({"normal", "depth", "albedo"}));
-  cmd->add_option("--bits", c->bits, "Bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
+  cmd->add_option("--bits", c->bits, "Bits per channel: png 8 (default) or 16; exr 32 (default) or 16 (half)")
+      ->check(CLI::IsMember({8, 16, 32}));
+  cmd->add_flag("--linear", c->linear, "PNG: store linear values, not sRGB (as the courses do)");
+  cmd->add_flag("--aov-files", c->aov_files, "EXR: write AOVs as separate files, not layers");
+  cmd->add_option("--depth-range", c->depth_range, "Depth AOV: NEAR,FAR map linearly to black..white")
+      ->delimiter(',')
+      ->expected(2)
+      ->check(CLI::Number);
+  cmd->add_option("--depth-miss", c->depth_miss, "Depth AOV value where nothing is hit (default 0)");
+  cmd->add_option("--normal-miss", c->normal_miss, "Normal AOV value where nothing is hit (default 0)");
   cmd->add_flag("--no-progress", c->no_progress, "Never draw the progress bar");
   add_eval_options(*cmd, c->eval);
   cmd->callback([c, cmd, &ctx] { ctx.exit_code = run(*c, *cmd, ctx); });

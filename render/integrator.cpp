@@ -134,7 +134,7 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
       if (m.specular > 0.0) {
         Vec3 r = 2.0 * n_dot_l * n - ls.direction;  // mirror of the light direction
         double r_dot_v = glm::dot(r, view);
-        if (r_dot_v > 0.0) shade += Rgb(m.specular * std::pow(r_dot_v, m.shininess));
+        if (r_dot_v > 0.0) shade += m.specular * std::pow(r_dot_v, m.shininess) * to_rgb(m.specular_color);
       }
       if (is_black(shade)) continue;
       Rgb transmittance = light.shadows ? shadow_transmittance(shadow_origin, ls, path) : Rgb(1.0);

@@ -10,8 +10,9 @@
 
 namespace rts::render {
 
-double attenuation_factor(const Vec3& k, double d) {
+double attenuation_factor(const Vec3& k, double d, bool clamp) {
   double denom = k.x + k.y * d + k.z * d * d;
+  if (clamp) return denom > 1.0 ? 1.0 / denom : 1.0;  // also covers a zero denominator at d = 0
   return denom > tol::kTinyLength ? 1.0 / denom : 0.0;
 }
 
@@ -32,6 +33,7 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     l.cos_inner = std::cos(inner * std::numbers::pi / 180.0);
     l.cos_outer = std::cos(outer * std::numbers::pi / 180.0);
     l.attenuation = d.attenuation;
+    l.attenuation_clamp = d.attenuation_clamp;
     l.u = d.u;
     l.v = d.v;
     l.disc = d.disc;
@@ -40,7 +42,7 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     l.inv_strata = 1.0 / (l.strata_side > 0 ? l.strata_side : l.samples);
     l.constant_attenuation = d.attenuation.y == 0.0 && d.attenuation.z == 0.0;
     l.sample_power = l.power / static_cast<double>(l.samples);
-    if (l.constant_attenuation) l.sample_power *= attenuation_factor(l.attenuation, 0.0);
+    if (l.constant_attenuation) l.sample_power *= attenuation_factor(l.attenuation, 0.0, l.attenuation_clamp);
     l.shadows = d.shadows;
     out.push_back(l);
   }
@@ -61,7 +63,7 @@ double spot_factor(const CompiledLight& l, const Vec3& light_to_point) {
 // Radiance arriving from one light sample at `distance`.
 Rgb sample_radiance(const CompiledLight& l, double distance) {
   return l.constant_attenuation ? l.sample_power
-                                : l.sample_power * attenuation_factor(l.attenuation, distance);
+                                : l.sample_power * attenuation_factor(l.attenuation, distance, l.attenuation_clamp);
 }
 
 LightSample toward(const Vec3& light_pos, const Vec3& point) {

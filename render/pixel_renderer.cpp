@@ -46,7 +46,7 @@ void PixelRenderer::render(int x, int y, Frame& frame, RayCounters& counters) co
 void PixelRenderer::render_aovs(int x, int y, Frame& frame, RayCounters& counters) const {
   ++counters.camera;
   FirstHit fh = integrator_.first_hit(camera_.generate(x + 0.5, y + 0.5, glm::dvec2(0.5)));
-  if (frame.normal) store(frame.normal->at(x, y), fh.hit ? (fh.normal + 1.0) * 0.5 : Vec3(0.0));
+  if (frame.normal) store(frame.normal->at(x, y), fh.hit ? (fh.normal + 1.0) * 0.5 : Vec3(frame.normal_miss));
   if (frame.albedo) store(frame.albedo->at(x, y), fh.albedo);
   const float depth = static_cast<float>(fh.depth);
   if (frame.aovs.depth && fh.hit && std::isfinite(depth)) {

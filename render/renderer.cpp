@@ -85,6 +85,7 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   RenderResult result;
   Frame frame;
   allocate_frame(result, rs.width, rs.height, parse_aovs(options.aovs), scene.settings.loc, frame);
+  frame.normal_miss = options.normal_miss;
 
   // All parallel work (BVH builds, tiles) runs in one arena of --threads workers;
   // global_control lets that number exceed TBB's default limit (the core count).
@@ -139,7 +140,7 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
     });
   });
   progress.finish();
-  finish_depth(result, frame);
+  finish_depth(result, frame, options.depth_range, options.depth_miss);
   stats.render_seconds = seconds_since(render_start);
   return result;
 }

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/image.hpp"
@@ -18,6 +19,11 @@ struct RenderOptions {
   std::optional<uint64_t> seed;           // overrides settings.seed
   std::optional<int> width, height, samples, max_depth;  // override settings
   std::vector<std::string> aovs;          // any of "normal", "depth", "albedo"
+  // The depth AOV maps [near, far] linearly to [0, 1] (clamped) when given, as the courses do;
+  // otherwise it scales by the farthest visible depth (see finish_depth).
+  std::optional<std::pair<double, double>> depth_range;
+  float depth_miss = 0.0f;                // depth AOV value where the camera ray hits nothing
+  float normal_miss = 0.0f;               // normal AOV value (every channel) where nothing is hit
   bool progress = false;                  // progress bar with ETA on stderr
   std::size_t max_pixels = 100'000'000;   // larger images are a RenderError
 };
