@@ -119,7 +119,10 @@ const ParamValue* ParamSet::value(std::string_view name) {
 
 void ParamSet::fail(const Param& p, const std::string& message) const { throw SceneError(p.loc, message); }
 
-void ParamSet::fail_block(const std::string& message) const { throw SceneError(loc_, message); }
+void ParamSet::fail_block(const std::string& message) const {
+  if (valid_ != nullptr) check_unused(*valid_);  // throws at an unknown property, if any
+  throw SceneError(loc_, message);
+}
 
 namespace {
 [[noreturn]] void wrong_type(const ParamSet& ps, const Param& p, const char* expected) {

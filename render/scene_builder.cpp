@@ -72,9 +72,8 @@ const std::vector<std::string_view> kDirectionalLightNames = {"direction", "colo
 const std::vector<std::string_view> kAreaLightNames = {"position", "u",         "v",           "samples", "disc",
                                                        "color",    "intensity", "attenuation", "shadows"};
 
-// The names a shape or light kind takes (empty for others).
-const std::vector<std::string_view>& names_of(std::string_view kind) {
-  static const std::vector<std::string_view> kNone;
+// The names a shape or light kind takes, or null for other kinds.
+const std::vector<std::string_view>* names_of(std::string_view kind) {
   static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
       {"sphere", &kSphereNames},           {"plane", &kPlaneNames},          {"triangle", &kTriangleNames},
       {"box", &kBoxNames},                 {"cylinder", &kCylinderNames},    {"cone", &kConeNames},
@@ -82,8 +81,8 @@ const std::vector<std::string_view>& names_of(std::string_view kind) {
       {"spot_light", &kSpotLightNames},    {"area_light", &kAreaLightNames},
       {"directional_light", &kDirectionalLightNames}};
   for (const auto& [name, names] : kTable)
-    if (name == kind) return *names;
-  return kNone;
+    if (name == kind) return names;
+  return nullptr;
 }
 
 SourceRef loc_of(ParamSet& ps, std::string_view name) {
@@ -294,13 +293,15 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
   non_negative_color(ps, "emission", m.emission);
   m.ambient = non_negative(ps, "ambient", ps.number("ambient", m.ambient));
   m.diffuse = non_negative(ps, "diffuse", ps.number("diffuse", m.diffuse));
-  if (const ParamValue* sv = ps.value("specular"); sv && !std::holds_alternative<double>(*sv)) {
-    // A color tints the highlight (the courses' `specularColor`): weight 1, that color.
-    m.specular = 1.0;
-    m.specular_color = ps.color("specular", m.specular_color);
-    non_negative_color(ps, "specular", m.specular_color);
-  } else {
-    m.specular = non_negative(ps, "specular", ps.number("specular", m.specular));
+  if (const ParamValue* sv = ps.value("specular")) {
+    if (const double* d = std::get_if<double>(sv)) {
+      m.specular = non_negative(ps, "specular", *d);
+    } else {
+      // A color tints the highlight (the courses' `specularColor`): weight 1, that color.
+      m.specular = 1.0;
+      m.specular_color = ps.color("specular", m.specular_color);
+      non_negative_color(ps, "specular", m.specular_color);
+    }
   }
   m.shininess = non_negative(ps, "shininess", ps.number("shininess", m.shininess));
   m.reflect = ps.color("reflect", m.reflect);
@@ -339,8 +340,7 @@ std::vector<Vec3> vector_list(ParamSet& ps, std::string_view name) {
 NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   ShapeDesc s;
   s.loc = ps.loc();
-  // Unknown names first: `sphere { raduis = 1 }` is a misspelt radius, not a missing one.
-  if (!names_of(kind).empty()) ps.check_unused(names_of(kind));
+  ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
   if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) s.material = ref->id;
   if (kind == "sphere") {
     Sphere g;
@@ -460,7 +460,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
 NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
   LightDesc l;
   l.loc = ps.loc();
-  if (!names_of(kind).empty()) ps.check_unused(names_of(kind));  // unknown names before missing ones
+  ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
   l.color = ps.color("color", l.color);
   non_negative_color(ps, "color", l.color);
   l.intensity = non_negative(ps, "intensity", ps.number("intensity", l.intensity));
