@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -73,6 +74,11 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   // A usage error, before any work: never write one format's bytes under another's name.
   render::OutputSpecResult spec = render::output_spec(out, c.bits, c.linear, c.aov_files);
   if (!spec.spec) throw CLI::ValidationError("--output", spec.error);
+  if (!c.depth_range.empty() && !(std::isfinite(c.depth_range[0]) && std::isfinite(c.depth_range[1]) &&
+                                  c.depth_range[0] <= c.depth_range[1]))
+    throw CLI::ValidationError("--depth-range", "expects two finite numbers NEAR,FAR with NEAR <= FAR");
+  if (!std::isfinite(c.depth_miss) || !std::isfinite(c.normal_miss))
+    throw CLI::ValidationError("--depth-miss/--normal-miss", "expects a finite number");
 
   SourceManager sources;
   DiagnosticSink sink(std::cerr, ctx.color);
@@ -129,7 +135,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
 
 void add_render_command(CLI::App& app, CommandContext& ctx) {
   auto c = std::make_shared<RenderCommand>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to a PNG image");
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image (PNG, PFM or EXR)");
   cmd->add_option("scene", c->scene, "The scene file (.rts)")->required();
   cmd->add_option("-o,--output", c->output,
                   "Output image: .png, .pfm or .exr, by extension (default: the scene's name with .png, here)");

@@ -44,6 +44,12 @@ std::optional<ImageFormat> format_for_path(const std::string& path) {
 OutputSpecResult output_spec(const std::string& path, int bits, bool linear, bool aov_files) {
   OutputSpecResult r;
   std::optional<ImageFormat> format = format_for_path(path);
+  // A device or pipe has no extension to go by (`-o /dev/stdout`): it gets PNG, as always.
+  std::error_code ec;
+  const auto type = std::filesystem::status(path, ec).type();
+  if (!format && std::filesystem::path(path).extension().empty() &&
+      (type == std::filesystem::file_type::character || type == std::filesystem::file_type::fifo))
+    format = ImageFormat::Png;
   if (!format) {
     std::string ext = std::filesystem::path(path).extension().string();
     r.error = ext.empty() ? fmt::format("output '{}' has no extension (use .png, .pfm or .exr)", path)

@@ -25,6 +25,7 @@ struct OutputSpec {
 std::optional<ImageFormat> format_for_path(const std::string& path);
 
 // The spec for `path` with `bits` (0: the format's default), or an error message for the user
+// (a device or pipe without an extension, such as /dev/stdout, is written as PNG)
 // ("unknown output format '.jpg' (use .png, .pfm or .exr)", "--bits 8 is not available for .exr").
 struct OutputSpecResult {
   std::optional<OutputSpec> spec;

@@ -21,6 +21,13 @@ expect_exit 2 "--bits 32 for png" -- "$RTS" render "$TMP/s.rts" -o "$TMP/a.png" 
 expect_grep "$TMP/err" "not available for .png" "the message says why"
 expect_exit 2 "--bits 8 for exr" -- "$RTS" render "$TMP/s.rts" -o "$TMP/a.exr" --bits 8 --no-progress
 expect_exit 2 "--depth-range needs two numbers" -- "$RTS" render "$TMP/s.rts" -o "$TMP/a.png" --depth-range 3 --no-progress
+expect_exit 2 "--depth-range far before near" -- "$RTS" render "$TMP/s.rts" -o "$TMP/a.png" --depth-range 9,3 --no-progress
+expect_exit 2 "--depth-miss nan" -- "$RTS" render "$TMP/s.rts" -o "$TMP/a.png" --depth-miss nan --no-progress
+
+# A device has no extension: PNG, as before.
+expect_exit 0 "-o /dev/null is still a PNG device" -- "$RTS" render "$TMP/s.rts" -o /dev/null --no-progress
+"$RTS" render "$TMP/s.rts" -o /dev/stdout --no-progress 2>/dev/null | head -c 4 | od -An -tx1 | tr -d ' ' >"$TMP/magic"
+expect_grep "$TMP/magic" "^89504e47$" "-o /dev/stdout writes PNG bytes"
 
 # Each format's own bytes.
 expect_exit 0 "-o .pfm" -- "$RTS" render "$TMP/s.rts" -o "$TMP/a.pfm" --no-progress
