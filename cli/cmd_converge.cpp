@@ -22,7 +22,7 @@
 #include "parser/diagnostics.hpp"
 #include "render/image.hpp"
 #include "render/image_metrics.hpp"
-#include "render/pfm_io.hpp"
+#include "render/float_image_io.hpp"
 #include "render/renderer.hpp"
 #include "runtime/evaluator.hpp"
 

@@ -1,10 +1,11 @@
-// `rts render SCENE.rts [-o OUT.png] ...`: evaluate the scene, render it, write PNG(s).
-// Nothing is written unless evaluation and rendering both succeed; each PNG is written
-// atomically (write_png), so a failure never truncates an existing image.
+// `rts render SCENE.rts [-o OUT.png|.pfm|.exr] ...`: evaluate the scene, render it, write the
+// image(s). Nothing is written unless evaluation and rendering both succeed; each file is
+// written atomically, so a failure never truncates an existing image.
 #include <unistd.h>
 
 #include <chrono>
 #include <climits>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -19,7 +20,7 @@
 #include "cli/stats_report.hpp"
 #include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
-#include "render/image.hpp"
+#include "render/image_output.hpp"
 #include "render/renderer.hpp"
 #include "runtime/evaluator.hpp"
 
@@ -39,9 +40,12 @@ struct RenderCommand {
   uint64_t seed = 0;
   int width = 0, height = 0, samples = 0, max_depth = 0;
   std::vector<std::string> aovs;
-  int bits = 8;
   std::string sampler;
   double target_error = 0, time_limit = 0;
+  int bits = 0;  // 0: the format's default
+  bool linear = false, aov_files = false;
+  std::vector<double> depth_range;
+  float depth_miss = 0.0f, normal_miss = 0.0f;
   bool no_progress = false;
   bool no_specialize = false;
   StatsOptions stats;
@@ -70,13 +74,6 @@ void print_warnings(const std::vector<render::Warning>& warnings) {
     else
       std::cerr << "rts: warning: " << w.message << "\n";
   }
-}
-
-// <out>.normal.png beside OUT.png (the .png extension is replaced, other names get a suffix).
-std::string aov_path(const std::string& out, const std::string& name) {
-  fs::path p(out);
-  if (p.extension() == ".png") p.replace_extension();
-  return p.string() + "." + name + ".png";
 }
 
 // Fails early (before spending time rendering) when the output folder cannot take the file.
@@ -116,6 +113,14 @@ void print_sampling_warnings(const std::string& out, const render::RenderStats& 
 int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) {
   std::string out = c.output;
   if (out.empty()) out = fs::path(c.scene).stem().string() + ".png";
+  // A usage error, before any work: never write one format's bytes under another's name.
+  render::OutputSpecResult spec = render::output_spec(out, c.bits, c.linear, c.aov_files);
+  if (!spec.spec) throw CLI::ValidationError("--output", spec.error);
+  if (!c.depth_range.empty() && !(std::isfinite(c.depth_range[0]) && std::isfinite(c.depth_range[1]) &&
+                                  c.depth_range[0] <= c.depth_range[1]))
+    throw CLI::ValidationError("--depth-range", "expects two finite numbers NEAR,FAR with NEAR <= FAR");
+  if (!std::isfinite(c.depth_miss) || !std::isfinite(c.normal_miss))
+    throw CLI::ValidationError("--depth-miss/--normal-miss", "expects a finite number");
 
   SourceManager sources;
   DiagnosticSink sink(std::cerr, ctx.color);
@@ -159,6 +164,9 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   opts.target_error = c.target_error;
   opts.time_limit = c.time_limit;
   opts.max_memory = c.eval.limits.max_memory;
+  if (!c.depth_range.empty()) opts.depth_range = std::make_pair(c.depth_range[0], c.depth_range[1]);
+  opts.depth_miss = c.depth_miss;
+  opts.normal_miss = c.normal_miss;
   opts.progress = !c.no_progress && isatty(STDERR_FILENO);
   opts.specialize = !c.no_specialize;
 
@@ -170,10 +178,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     result.stats.eval_seconds = eval_seconds;
     result.stats.parse_seconds = parse_seconds;
     auto write_start = std::chrono::steady_clock::now();
-    render::write_png(out, result.color, c.bits, render::Encoding::SRGB);
-    // AOVs are data (normals, depth), not colors: stored without the sRGB curve.
-    for (const auto& [name, image] : result.aovs)
-      render::write_png(aov_path(out, name), image, c.bits, render::Encoding::Linear);
+    render::write_images(out, *spec.spec, result.color, result.aovs);
     result.stats.write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";
@@ -193,9 +198,9 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
 
 void add_render_command(CLI::App& app, CommandContext& ctx) {
   auto c = std::make_shared<RenderCommand>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to a PNG image");
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image (PNG, PFM or EXR)");
   cmd->add_option("scene", c->scene, "The scene file (.rts)")->required();
-  cmd->add_option("-o,--output", c->output, "Output PNG (default: the scene's name with .png, here)")
+  cmd->add_option("-o,--output", c->output, "Output image: .png, .pfm or .exr, by extension (default: the scene's name with .png, here)")
       ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("the file name is empty") : ""; },
                              ""));
   // Whole numbers in a stated range: "-1" or "99999999999999999999" are usage errors.
@@ -205,7 +210,7 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   add_whole_option(*cmd, "--height", c->height, 1, kMaxImageSide, "Image height in pixels", false);
   add_whole_option(*cmd, "--samples", c->samples, 1, render::kMaxSamplesPerPixel, "Samples per pixel", false);
   add_whole_option(*cmd, "--max-depth", c->max_depth, 0, INT_MAX, "Reflection/refraction depth", false);
-  cmd->add_option("--aov", c->aovs, "Extra images: normal,depth,albedo,error (written as OUT.<name>.png)")
+  cmd->add_option("--aov", c->aovs, "Extra images: normal,depth,albedo,error (written as OUT.<name>.<ext>)")
       ->delimiter(',')
       ->check(CLI::IsMember({"normal", "depth", "albedo", "error"}));
   cmd->add_option("--sampler", c->sampler, "Sample placement: random, stratified or sobol")
@@ -215,7 +220,16 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--time-limit", c->time_limit, "Stop adding samples after this many seconds")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--bits", c->bits, "Bits per channel: 8 or 16")->check(CLI::IsMember({8, 16}));
+  cmd->add_option("--bits", c->bits, "Bits per channel: png 8 (default) or 16; exr 32 (default) or 16 (half)")
+      ->check(CLI::IsMember({8, 16, 32}));
+  cmd->add_flag("--linear", c->linear, "PNG: store linear values, not sRGB (as the courses do)");
+  cmd->add_flag("--aov-files", c->aov_files, "EXR: write AOVs as separate files, not layers");
+  cmd->add_option("--depth-range", c->depth_range, "Depth AOV: NEAR,FAR map linearly to black..white")
+      ->delimiter(',')
+      ->expected(2)
+      ->check(CLI::Number);
+  cmd->add_option("--depth-miss", c->depth_miss, "Depth AOV value where nothing is hit (default 0)");
+  cmd->add_option("--normal-miss", c->normal_miss, "Normal AOV value where nothing is hit (default 0)");
   cmd->add_flag("--no-progress", c->no_progress, "Never draw the progress bar");
   cmd->add_flag("--stats", c->stats.print, "Print features used and left out, rays, memory and time per phase");
   cmd->add_option("--stats-json", c->stats.json_path, "Write the same figures as JSON to FILE ('-': stdout)");

@@ -38,10 +38,13 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
   }
   right_ = glm::normalize(right);
   up_ = glm::cross(forward_, right_);
+  if (desc.right_handed) right_ = -right_;  // OpenGL's convention: the image is mirrored left-right
   double aspect = static_cast<double>(height) / std::max(1, width);
   if (projection_ == Projection::Perspective) {
     double fov = std::clamp(desc.fov, kMinFov, kMaxFov);
-    half_width_ = std::tan(fov * std::numbers::pi / 360.0);
+    double half = std::tan(fov * std::numbers::pi / 360.0);
+    // A vertical fov fixes the height; the width follows from the aspect ratio.
+    half_width_ = desc.fov_vertical ? half / aspect : half;
   } else {
     half_width_ = std::abs(desc.view_width) / 2.0;
   }

@@ -1,5 +1,6 @@
 // Pinhole / thin-lens perspective and orthographic cameras (left-handed view, POV-Ray's):
-// right = normalize(cross(up, forward)). Image aspect comes from width/height.
+// right = normalize(cross(up, forward)), or its opposite for a right-handed camera (OpenGL's,
+// the courses'). Image aspect comes from width/height; fov spans the width, or the height.
 #pragma once
 
 #include <glm/glm.hpp>

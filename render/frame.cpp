@@ -74,14 +74,22 @@ float depth_reference(const Frame& frame) {
 
 }  // namespace
 
-void finish_depth(RenderResult& result, const Frame& frame) {
+void finish_depth(RenderResult& result, const Frame& frame, std::optional<std::pair<double, double>> range,
+                  float miss) {
   if (!frame.aovs.depth) return;
-  const float reference = depth_reference(frame);
+  const float reference = range ? 0.0f : depth_reference(frame);
   Image& img = result.aovs["depth"];
   for (std::size_t i = 0; i < frame.depth.size(); ++i) {
     float d = frame.depth[i];
-    float v = 0.0f;
-    if (d >= 0.0f) v = reference > 0.0f ? std::min(1.0f, d / reference) : 1.0f;
+    float v = miss;
+    if (d >= 0.0f && range) {
+      // near = far (allowed: a threshold) puts everything nearer at 0, the rest at 1.
+      double span = range->second - range->first;
+      double t = span > 0.0 ? (d - range->first) / span : (d < range->first ? 0.0 : 1.0);
+      v = static_cast<float>(std::clamp(t, 0.0, 1.0));
+    } else if (d >= 0.0f) {
+      v = reference > 0.0f ? std::min(1.0f, d / reference) : 1.0f;
+    }
     img.rgb[i * 3] = img.rgb[i * 3 + 1] = img.rgb[i * 3 + 2] = v;
   }
 }

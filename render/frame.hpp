@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@ AovFlags parse_aovs(const std::vector<std::string>& names);
 struct Frame {
   int width = 0, height = 0;
   AovFlags aovs;
+  float normal_miss = 0.0f;                // normal AOV value where nothing is hit
   Image* color = nullptr;
   std::vector<float>* variance = nullptr;  // RenderStats::pixels
   std::vector<uint32_t>* taken = nullptr;
@@ -39,11 +42,13 @@ struct Frame {
 void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, SourceRef where,
                     Frame& frame);
 
-// Normalises the raw depths into result.aovs["depth"]: 0 for misses, otherwise depth / reference
-// clamped to 1. The reference is the farthest hit on bounded geometry when any is visible (so
-// an infinite plane running to the horizon cannot squash everything else to black), else the
-// 99th percentile of the (plane) depths.
-void finish_depth(RenderResult& result, const Frame& frame);
+// Normalises the raw depths into result.aovs["depth"]: `miss` where nothing is hit; with a
+// range, (depth - near) / (far - near) clamped to [0, 1]; otherwise depth / reference clamped to
+// 1. The reference is the farthest hit on bounded geometry when any is visible (so an infinite
+// plane running to the horizon cannot squash everything else to black), else the 99th
+// percentile of the (plane) depths.
+void finish_depth(RenderResult& result, const Frame& frame,
+                  std::optional<std::pair<double, double>> range = std::nullopt, float miss = 0.0f);
 
 // Fills result.aovs["error"] (when requested) with each pixel's standard error per channel,
 // linear; 0 where it is unknown.

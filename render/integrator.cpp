@@ -256,7 +256,7 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
       if ((F & spec::kSpecular) && m.specular > 0.0) {
         Vec3 r = 2.0 * n_dot_l * n - ls.direction;  // mirror of the light direction
         double r_dot_v = glm::dot(r, view);
-        if (r_dot_v > 0.0) shade += Rgb(m.specular * std::pow(r_dot_v, m.shininess));
+        if (r_dot_v > 0.0) shade += m.specular * std::pow(r_dot_v, m.shininess) * to_rgb(m.specular_color);
       }
       if (is_black(shade)) continue;
       Rgb transmittance = light.shadows ? shadow_transmittance<F>(shadow_origin, ls, path) : Rgb(1.0);

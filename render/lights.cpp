@@ -10,8 +10,9 @@
 
 namespace rts::render {
 
-double attenuation_factor(const Vec3& k, double d) {
+double attenuation_factor(const Vec3& k, double d, bool clamp) {
   double denom = k.x + k.y * d + k.z * d * d;
+  if (clamp) return denom > 1.0 ? 1.0 / denom : 1.0;  // also covers a zero denominator at d = 0
   return denom > tol::kTinyLength ? 1.0 / denom : 0.0;
 }
 
@@ -34,6 +35,7 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     l.cos_inner = std::cos(inner * std::numbers::pi / 180.0);
     l.cos_outer = std::cos(outer * std::numbers::pi / 180.0);
     l.attenuation = d.attenuation;
+    l.attenuation_clamp = d.attenuation_clamp;
     l.u = d.u;
     l.v = d.v;
     l.disc = d.disc;
@@ -43,7 +45,8 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     l.constant_attenuation = d.attenuation.y == 0.0 && d.attenuation.z == 0.0;
     l.sample_power = l.power / static_cast<double>(l.samples);
     if (l.constant_attenuation)
-      l.sample_power = glm::min(l.sample_power * attenuation_factor(l.attenuation, 0.0), Rgb(tol::kMaxRadiance));
+      l.sample_power = glm::min(l.sample_power * attenuation_factor(l.attenuation, 0.0, l.attenuation_clamp),
+                                Rgb(tol::kMaxRadiance));
     l.shadows = d.shadows;
     out.push_back(l);
   }
@@ -66,7 +69,8 @@ double spot_factor(const CompiledLight& l, const Vec3& light_to_point) {
 Rgb sample_radiance(const CompiledLight& l, double distance) {
   return l.constant_attenuation
              ? l.sample_power
-             : glm::min(l.sample_power * attenuation_factor(l.attenuation, distance), Rgb(tol::kMaxRadiance));
+             : glm::min(l.sample_power * attenuation_factor(l.attenuation, distance, l.attenuation_clamp),
+                        Rgb(tol::kMaxRadiance));
 }
 
 LightSample toward(const Vec3& light_pos, const Vec3& point) {

@@ -22,6 +22,7 @@ struct CompiledLight {
   Vec3 spot_axis{0, -1, 0};    // spot: unit, from position towards point_at
   double cos_inner = 1.0, cos_outer = 1.0;  // spot: cosines of radius / falloff half-angles
   Vec3 attenuation{1, 0, 0};
+  bool attenuation_clamp = false;  // factor min(1, ...): never brighter than power
   Vec3 u{1, 0, 0}, v{0, 0, 1};
   bool disc = false;
   int samples = 1;             // shading samples (area lights; 1 otherwise)
@@ -52,7 +53,8 @@ LightSample sample_light(const CompiledLight& light, const Vec3& point, glm::dve
 LightSample sample_light(const CompiledLight& light, const Vec3& point, int index,
                          glm::dvec2 jitter, uint32_t perm_seed);
 
-// 1 / (c + l d + q d^2), guarded against non-positive denominators.
-double attenuation_factor(const Vec3& coefficients, double distance);
+// 1 / (c + l d + q d^2), guarded against non-positive denominators; with `clamp`,
+// min(1, 1 / (c + l d + q d^2)) (UW CSE 457's point lights).
+double attenuation_factor(const Vec3& coefficients, double distance, bool clamp = false);
 
 }  // namespace rts::render

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace rts::render {
 
@@ -13,20 +14,21 @@ namespace {
 // Names farther than this many edits (or than a third of the word) are not suggested.
 constexpr std::size_t kMaxSuggestDistance = 3;
 
+// Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
+// neighbouring letters each cost 1 ("raduis" is one edit from "radius", not two).
 std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t up = row[j];
       std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + cost});
-      diag = up;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   }
-  return row[b.size()];
+  return d[a.size()][b.size()];
 }
 
 // "a number", "an image"... for messages.
@@ -48,7 +50,8 @@ inline bool same_name(const std::string& a, std::string_view b) {
 std::string closest_name(std::string_view word, const std::vector<std::string_view>& candidates) {
   std::string_view best;
   std::size_t best_distance = kMaxSuggestDistance + 1;
-  std::size_t limit = std::min(kMaxSuggestDistance, std::max<std::size_t>(1, word.size() / 3 + 1));
+  // One edit per three letters: "fog" may be one edit off ("for"), never two ("box").
+  std::size_t limit = std::min(kMaxSuggestDistance, std::max<std::size_t>(1, word.size() / 3));
   for (std::string_view c : candidates) {
     std::size_t d = edit_distance(word, c);
     if (d < best_distance && d <= limit && d < std::max(word.size(), c.size())) {
@@ -116,7 +119,10 @@ const ParamValue* ParamSet::value(std::string_view name) {
 
 void ParamSet::fail(const Param& p, const std::string& message) const { throw SceneError(p.loc, message); }
 
-void ParamSet::fail_block(const std::string& message) const { throw SceneError(loc_, message); }
+void ParamSet::fail_block(const std::string& message) const {
+  if (valid_ != nullptr) check_unused(*valid_);  // throws at an unknown property, if any
+  throw SceneError(loc_, message);
+}
 
 namespace {
 [[noreturn]] void wrong_type(const ParamSet& ps, const Param& p, const char* expected) {
@@ -197,6 +203,7 @@ void ParamSet::check_unused(const std::vector<std::string_view>& valid) const {
     std::string msg = fmt::format("unknown property '{}' for {}", p.name, kind_);
     std::string hint = closest_name(p.name, valid);
     if (!hint.empty()) msg += fmt::format("; did you mean '{}'?", hint);
+    msg += fmt::format(" ({} takes {})", kind_, fmt::join(valid, ", "));
     throw SceneError(p.loc, msg);
   }
 }

@@ -68,12 +68,17 @@ class ParamSet {
   void check_unused(const std::vector<std::string_view>& valid) const;
 
   [[noreturn]] void fail(const Param& p, const std::string& message) const;
+  // A block-level error (a missing property...). When the valid names are known, an unknown
+  // property is reported instead: `sphere { raduis = 1 }` is a misspelling, not a missing radius.
   [[noreturn]] void fail_block(const std::string& message) const;
+  // The names this kind accepts, for fail_block (the list must outlive the ParamSet).
+  void set_valid_names(const std::vector<std::string_view>* names) { valid_ = names; }
 
  private:
   std::string kind_;
   SourceRef loc_;
   std::vector<Param> params_;
+  const std::vector<std::string_view>* valid_ = nullptr;
 };
 
 // The closest candidate by edit distance, or "" when none is close enough to suggest.

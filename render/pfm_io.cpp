@@ -1,96 +1,89 @@
-#include "render/pfm_io.hpp"
-
+// PFM: "PF\n<width> <height>\n<scale>\n" then float RGB rows, bottom row first; a negative
+// scale means little-endian. We write little-endian, the common choice.
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
-#include <vector>
 
 #include <fmt/format.h>
+
+#include "render/atomic_file.hpp"
+#include "render/float_image_io.hpp"
 
 namespace rts::render {
 namespace {
 
-// Larger images are refused rather than allocated (a corrupt header must not eat memory).
-constexpr uint64_t kMaxPfmPixels = 100'000'000;
+constexpr std::size_t kMaxPfmPixels = 100'000'000;  // a hostile header must not allocate gigabytes
 
-bool host_is_little_endian() {
-  const uint16_t probe = 1;
-  unsigned char first;
-  std::memcpy(&first, &probe, 1);
-  return first == 1;
+float finite(float v) {
+  if (std::isnan(v)) return 0.0f;
+  return std::clamp(v, -std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
 }
 
-float byte_swapped(float v) {
-  unsigned char b[4];
-  std::memcpy(b, &v, 4);
-  std::swap(b[0], b[3]);
-  std::swap(b[1], b[2]);
-  std::memcpy(&v, b, 4);
-  return v;
+uint32_t swap_bytes(uint32_t v) {
+  return (v >> 24) | ((v >> 8) & 0xff00u) | ((v << 8) & 0xff0000u) | (v << 24);
 }
 
 }  // namespace
 
 void write_pfm(const std::string& path, const Image& image) {
-  namespace fs = std::filesystem;
-  const std::string temp = path + ".tmp-rts";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    if (!out) throw RenderError({}, fmt::format("cannot write '{}'", path));
-    // Negative scale: little-endian. PFM rows run bottom to top.
-    out << "PF\n" << image.width << " " << image.height << "\n" << (host_is_little_endian() ? "-1.0" : "1.0") << "\n";
-    for (int y = image.height - 1; y >= 0; --y)
-      out.write(reinterpret_cast<const char*>(image.at(0, y)),
-                static_cast<std::streamsize>(sizeof(float) * 3 * static_cast<std::size_t>(image.width)));
-    if (!out.flush()) {
-      std::error_code ec;
-      fs::remove(temp, ec);
-      throw RenderError({}, fmt::format("cannot write '{}': write failed", path));
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)
+    throw RenderError({}, fmt::format("cannot write '{}': invalid image", path));
+  std::string header = fmt::format("PF\n{} {}\n-1.0\n", image.width, image.height);
+  std::vector<unsigned char> bytes(header.begin(), header.end());
+  const std::size_t row_floats = static_cast<std::size_t>(image.width) * 3;
+  bytes.reserve(bytes.size() + image.rgb.size() * 4);
+  for (int y = image.height - 1; y >= 0; --y) {
+    const float* row = image.at(0, y);
+    for (std::size_t i = 0; i < row_floats; ++i) {
+      uint32_t bits = std::bit_cast<uint32_t>(finite(row[i]));
+      if constexpr (std::endian::native == std::endian::big) bits = swap_bytes(bits);
+      unsigned char b[4];
+      std::memcpy(b, &bits, 4);
+      bytes.insert(bytes.end(), b, b + 4);
     }
   }
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw RenderError({}, fmt::format("cannot write '{}': {}", path, ec.message()));
-  }
+  write_file_atomically(path, bytes);
 }
 
-Image read_pfm(const std::string& path) {
-  auto fail = [&](const std::string& why) {
-    return RenderError({}, fmt::format("cannot read image '{}': {}", path, why));
+Image read_pfm(const std::string& path, SourceRef where) {
+  auto fail = [&](const std::string& why) -> Image {
+    throw RenderError(where, fmt::format("cannot read PFM '{}': {}", path, why));
   };
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw fail(std::strerror(errno));
+  if (!in) return fail("cannot open the file");
   std::string magic;
   long long w = 0, h = 0;
   double scale = 0;
-  if (!(in >> magic >> w >> h >> scale) || (magic != "PF" && magic != "Pf"))
-    throw fail("not a PFM file (expected a 'PF' or 'Pf' header)");
-  if (w < 1 || h < 1 || static_cast<uint64_t>(w) * static_cast<uint64_t>(h) > kMaxPfmPixels)
-    throw fail(fmt::format("bad image size {}x{}", w, h));
-  if (!std::isfinite(scale) || scale == 0) throw fail("bad scale in the header");
-  in.get();  // the single whitespace character before the data
+  in >> magic >> w >> h >> scale;
+  if (!in || (magic != "PF" && magic != "Pf")) return fail("not a PFM file");
+  if (w <= 0 || h <= 0 || static_cast<unsigned long long>(w) * static_cast<unsigned long long>(h) > kMaxPfmPixels)
+    return fail(fmt::format("bad size {}x{}", w, h));
+  if (scale == 0 || !std::isfinite(scale)) return fail("bad scale");
+  in.get();  // the single whitespace byte after the scale
   const int channels = magic == "PF" ? 3 : 1;
-  const std::size_t count = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * channels;
-  std::vector<float> data(count);
-  if (!in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(count * sizeof(float))))
-    throw fail("truncated data");
-  const bool swap = (scale < 0) != host_is_little_endian();
-  Image image(static_cast<int>(w), static_cast<int>(h));
-  for (long long y = 0; y < h; ++y)
-    for (long long x = 0; x < w; ++x)
+  const bool little = scale < 0;
+  const bool swap = little != (std::endian::native == std::endian::little);
+  Image img(static_cast<int>(w), static_cast<int>(h));
+  std::vector<uint32_t> row(static_cast<std::size_t>(w) * channels);
+  for (long long y = h - 1; y >= 0; --y) {
+    if (!in.read(reinterpret_cast<char*>(row.data()), static_cast<std::streamsize>(row.size() * 4)))
+      return fail("file is truncated");
+    for (long long x = 0; x < w; ++x) {
+      float* px = img.at(static_cast<int>(x), static_cast<int>(y));
       for (int c = 0; c < 3; ++c) {
-        std::size_t src = (static_cast<std::size_t>(h - 1 - y) * w + x) * channels + (channels == 3 ? c : 0);
-        float v = swap ? byte_swapped(data[src]) : data[src];
-        if (!std::isfinite(v)) throw fail(fmt::format("non-finite value at pixel ({}, {})", x, y));
-        image.at(static_cast<int>(x), static_cast<int>(y))[c] = v;
+        uint32_t bits = row[static_cast<std::size_t>(x) * channels + (channels == 3 ? c : 0)];
+        if (swap) bits = swap_bytes(bits);
+        px[c] = finite(std::bit_cast<float>(bits));
       }
-  return image;
+    }
+  }
+  return img;
 }
 
 }  // namespace rts::render

@@ -70,7 +70,7 @@ void PixelRenderer::render_aovs(int x, int y, Frame& frame, RayCounters& counter
   if (frame.aovs.normal || frame.aovs.albedo || frame.aovs.depth) {
     ++counters.camera;
     FirstHit fh = integrator_.first_hit(camera_.generate(x + 0.5, y + 0.5, glm::dvec2(0.5)));
-    if (frame.normal) store_rgb(frame.normal->at(x, y), fh.hit ? (fh.normal + 1.0) * 0.5 : Vec3(0.0));
+    if (frame.normal) store_rgb(frame.normal->at(x, y), fh.hit ? (fh.normal + 1.0) * 0.5 : Vec3(frame.normal_miss));
     if (frame.albedo) store_rgb(frame.albedo->at(x, y), fh.albedo);
     const float depth = static_cast<float>(fh.depth);
     if (frame.aovs.depth && fh.hit && std::isfinite(depth)) {

@@ -201,6 +201,7 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   ResolvedSettings rs = resolve(scene, options, result.warnings);
   Frame frame;
   allocate_frame(result, rs.width, rs.height, parse_aovs(options.aovs), scene.settings.loc, frame);
+  frame.normal_miss = options.normal_miss;
 
   // All parallel work (BVH builds, tiles) runs in one arena of --threads workers;
   // global_control lets that number exceed TBB's default limit (the core count).
@@ -353,7 +354,7 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
         [&](int x, int y, RayCounters& counters) { pixels.store(x, y, accs[frame.index(x, y)], frame, counters); },
         nullptr, nullptr);
   }
-  finish_depth(result, frame);
+  finish_depth(result, frame, options.depth_range, options.depth_miss);
   finish_error(result, frame);
   stats.render_seconds = seconds_since(render_start);
   summarise_error(result.color, stats.pixels, err);

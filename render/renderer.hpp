@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/image.hpp"
@@ -25,6 +26,11 @@ struct RenderOptions {
   // Stop adding passes after this many seconds of rendering (0: no limit); the image then
   // holds what was rendered (every pixel has at least its first pass) and stats say so.
   double time_limit = 0;
+  // The depth AOV maps [near, far] linearly to [0, 1] (clamped) when given, as the courses do;
+  // otherwise it scales by the farthest visible depth (see finish_depth).
+  std::optional<std::pair<double, double>> depth_range;
+  float depth_miss = 0.0f;                // depth AOV value where the camera ray hits nothing
+  float normal_miss = 0.0f;               // normal AOV value (every channel) where nothing is hit
   bool progress = false;                  // progress bar with ETA on stderr
   bool specialize = true;                 // false: the generic path (--no-specialize)
   std::size_t max_pixels = 100'000'000;   // larger images are a RenderError

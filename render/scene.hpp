@@ -68,7 +68,8 @@ struct TextureDesc {
 
 // ---- materials --------------------------------------------------------------------------
 // Phong: emission + ambient*color*ambient_light + sum over lights of
-// diffuse*color*(n·l) + specular*(r·v)^shininess, then reflect and transmit recursively.
+// diffuse*color*(n·l) + specular*specular_color*(r·v)^shininess, then reflect and transmit
+// recursively.
 struct MaterialDesc {
   Color color{0.8};
   TextureId texture = kNoId;   // when set, replaces `color`
@@ -89,6 +90,7 @@ struct MaterialDesc {
   double ambient = 0.1;
   double diffuse = 0.7;
   double specular = 0.0;
+  Color specular_color{1.0};   // tints the highlight (`specular = rgb(...)` sets it, specular = 1)
   double shininess = 32.0;
   Color reflect{0.0};          // mirror reflection weight per channel
   Color transmit{0.0};         // transmission weight per channel (also filters shadows)
@@ -152,6 +154,7 @@ struct LightDesc {
   double radius = 30.0;            // spot: full-intensity half-angle, degrees
   double falloff = 45.0;           // spot: zero-intensity half-angle, degrees
   Vec3 attenuation{1, 0, 0};       // constant, linear, quadratic: I / (c + l d + q d^2)
+  bool attenuation_clamp = false;  // the factor is min(1, 1 / (c + l d + q d^2)) (UW CSE 457)
   Vec3 u{1, 0, 0}, v{0, 0, 1};     // area: edge vectors (rectangle centred on position)
   bool disc = false;               // area: an ellipse inscribed in the u,v rectangle
   int samples = 16;                // area: shadow samples per shading point
@@ -166,7 +169,9 @@ struct CameraDesc {
   Vec3 position{0, 0, -5};
   Vec3 look_at{0, 0, 0};
   Vec3 up{0, 1, 0};
-  double fov = 60.0;               // perspective: horizontal field of view, degrees
+  double fov = 60.0;               // perspective: field of view, degrees, across fov_axis
+  bool fov_vertical = false;       // fov spans the image's height instead of its width
+  bool right_handed = false;       // right = cross(forward, up): +x to the left seen from -z
   double view_width = 4.0;         // orthographic: width of the view in scene units
   double aperture = 0.0;           // > 0: depth of field (lens diameter)
   double focus_distance = 0.0;     // 0: distance to look_at

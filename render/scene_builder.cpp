@@ -57,7 +57,8 @@ const std::vector<std::string_view> kSettingsNames = {"width",         "height",
                                                       "seed",          "sampler",     "environment",
                                                       "environment_ambient"};
 const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
-                                                    "fov",        "view_width", "aperture", "focus_distance"};
+                                                    "fov",        "fov_axis",   "handedness", "view_width",
+                                                    "aperture",   "focus_distance"};
 const std::vector<std::string_view> kImageTextureNames = {"file", "mapping", "color_space", "filter"};
 const std::vector<std::string_view> kLatLongNames = {"file", "color_space", "filter"};
 const std::vector<std::string_view> kCubeMapNames = {"directory", "color_space", "filter"};
@@ -82,12 +83,26 @@ const std::vector<std::string_view> kMeshNames = {"material",       "file",     
                                                   "vertex_colors",  "vertex_diffuse", "vertex_specular",
                                                   "vertex_shininess"};
 const std::vector<std::string_view> kQuadNames = {"material", "corner", "edge_u", "edge_v"};
-const std::vector<std::string_view> kPointLightNames = {"position", "color", "intensity", "attenuation", "shadows"};
-const std::vector<std::string_view> kSpotLightNames = {"position", "point_at",  "radius",      "falloff",
-                                                       "color",    "intensity", "attenuation", "shadows"};
+const std::vector<std::string_view> kPointLightNames = {"position",          "color",  "intensity", "attenuation",
+                                                        "attenuation_clamp", "shadows"};
+const std::vector<std::string_view> kSpotLightNames = {"position",  "point_at",    "radius",            "falloff", "color",
+                                                       "intensity", "attenuation", "attenuation_clamp", "shadows"};
 const std::vector<std::string_view> kDirectionalLightNames = {"direction", "color", "intensity", "shadows"};
 const std::vector<std::string_view> kAreaLightNames = {"position", "u",         "v",           "samples", "disc",
                                                        "color",    "intensity", "attenuation", "shadows"};
+
+// The names a shape or light kind takes, or null for other kinds.
+const std::vector<std::string_view>* names_of(std::string_view kind) {
+  static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
+      {"sphere", &kSphereNames},           {"plane", &kPlaneNames},          {"triangle", &kTriangleNames},
+      {"box", &kBoxNames},                 {"cylinder", &kCylinderNames},    {"cone", &kConeNames},
+      {"disc", &kDiscNames},               {"mesh", &kMeshNames},            {"point_light", &kPointLightNames},
+      {"spot_light", &kSpotLightNames},    {"area_light", &kAreaLightNames},
+      {"directional_light", &kDirectionalLightNames}};
+  for (const auto& [name, names] : kTable)
+    if (name == kind) return names;
+  return nullptr;
+}
 
 SourceRef loc_of(ParamSet& ps, std::string_view name) {
   const Param* p = ps.find(name);
@@ -271,6 +286,16 @@ void SceneBuilder::camera(ParamSet& ps) {
   c.look_at = ps.vec3("look_at", c.look_at);
   c.up = direction(ps, "up", ps.vec3("up", c.up));
   c.fov = ps.number("fov", c.fov);
+  std::string axis = ps.string("fov_axis", c.fov_vertical ? "vertical" : "horizontal");
+  if (axis != "horizontal" && axis != "vertical")
+    throw SceneError(loc_of(ps, "fov_axis"),
+                     fmt::format("property 'fov_axis' of camera must be \"horizontal\" or \"vertical\", got \"{}\"", axis));
+  c.fov_vertical = axis == "vertical";
+  std::string hand = ps.string("handedness", c.right_handed ? "right" : "left");
+  if (hand != "left" && hand != "right")
+    throw SceneError(loc_of(ps, "handedness"),
+                     fmt::format("property 'handedness' of camera must be \"left\" or \"right\", got \"{}\"", hand));
+  c.right_handed = hand == "right";
   require(ps, "fov", c.fov > 0 && c.fov < kMaxFovDegrees, "between 0 and 180 (exclusive)", c.fov);
   c.view_width = positive(ps, "view_width", ps.number("view_width", c.view_width));
   c.aperture = non_negative(ps, "aperture", ps.number("aperture", c.aperture));
@@ -381,10 +406,18 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
     m.diffuse = 1.0;
   else
     m.diffuse = non_negative(ps, "diffuse", ps.number("diffuse", m.diffuse));
-  if (channel_texture("specular", m.specular_texture))
+  if (channel_texture("specular", m.specular_texture)) {
     m.specular = 1.0;
-  else
-    m.specular = non_negative(ps, "specular", ps.number("specular", m.specular));
+  } else if (const ParamValue* sv = ps.value("specular")) {
+    if (const double* d = std::get_if<double>(sv)) {
+      m.specular = non_negative(ps, "specular", *d);
+    } else {
+      // A color tints the highlight (the courses' `specularColor`): weight 1, that color.
+      m.specular = 1.0;
+      m.specular_color = ps.color("specular", m.specular_color);
+      non_negative_color(ps, "specular", m.specular_color);
+    }
+  }
   m.shininess = non_negative(ps, "shininess", ps.number("shininess", m.shininess));
   if (!channel_texture("reflect", m.reflect_texture)) {
     m.reflect = ps.color("reflect", m.reflect);
@@ -508,6 +541,7 @@ void warn_degenerate(const MeshData& mesh, SourceRef where, std::vector<Warning>
 NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   ShapeDesc s;
   s.loc = ps.loc();
+  ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
   if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) s.material = ref->id;
   if (kind == "sphere") {
     Sphere g;
@@ -671,6 +705,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
 NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
   LightDesc l;
   l.loc = ps.loc();
+  ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
   l.color = ps.color("color", l.color);
   non_negative_color(ps, "color", l.color);
   l.intensity = non_negative(ps, "intensity", ps.number("intensity", l.intensity));
@@ -681,6 +716,7 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     if (a.x < 0 || a.y < 0 || a.z < 0 || a.x + a.y + a.z <= 0)
       throw SceneError(loc_of(ps, "attenuation"),
                        "property 'attenuation' must have non-negative components, not all zero");
+    l.attenuation_clamp = ps.boolean("attenuation_clamp", l.attenuation_clamp);
   };
   if (kind == "point_light") {
     l.kind = LightKind::Point;

@@ -94,7 +94,8 @@ std::string shape_text(const ShapeDesc& s) {
 }
 
 std::string light_text(const LightDesc& l) {
-  std::string common = fmt::format("color {} intensity {} shadows {}", col(l.color), num(l.intensity), yes(l.shadows));
+  std::string common = fmt::format("color {} intensity {} shadows {}{}", col(l.color), num(l.intensity), yes(l.shadows),
+                                   l.attenuation_clamp ? " attenuation_clamp true" : "");
   switch (l.kind) {
     case LightKind::Point:
       return fmt::format("point_light position {} attenuation {} {}", vec(l.position), vec(l.attenuation), common);
@@ -120,10 +121,11 @@ void SceneDesc::dump(std::ostream& out) const {
     out << fmt::format(" environment texture {} environment_ambient {}", s.environment, yes(s.environment_ambient));
   out << '\n';
   const CameraDesc& c = camera;
-  out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}\n",
+  out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}{}{}\n",
                      has_camera ? "" : " (default)",
                      c.projection == Projection::Perspective ? "perspective" : "orthographic", vec(c.position),
-                     vec(c.look_at), vec(c.up), num(c.fov), num(c.view_width), num(c.aperture), num(c.focus_distance));
+                     vec(c.look_at), vec(c.up), num(c.fov), num(c.view_width), num(c.aperture), num(c.focus_distance),
+                     c.fov_vertical ? " fov_axis vertical" : "", c.right_handed ? " handedness right" : "");
   out << fmt::format("textures {}\n", textures.size());
   for (std::size_t i = 0; i < textures.size(); ++i) {
     const TextureDesc& t = textures[i];
@@ -147,7 +149,10 @@ void SceneDesc::dump(std::ostream& out) const {
     out << fmt::format(
         "  material {}: color {} texture {} emission {} ambient {} diffuse {} specular {} shininess {} reflect {} "
         "transmit {} ior {}{} fresnel {} roughness {}{}\n",
-        i, col(m.color), id(m.texture), col(m.emission), num(m.ambient), num(m.diffuse), num(m.specular),
+        i, col(m.color), id(m.texture), col(m.emission), num(m.ambient), num(m.diffuse),
+        m.specular_color == Color(1.0)
+            ? num(m.specular)
+            : col(Color(m.specular * m.specular_color.r, m.specular * m.specular_color.g, m.specular * m.specular_color.b)),
         num(m.shininess), col(m.reflect), col(m.transmit), num(m.ior), m.ior_relative ? " (relative)" : "",
         yes(m.fresnel), num(m.roughness), where(m.loc));
     const std::pair<const char*, TextureId> maps[] = {

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "runtime/interpreter.hpp"
+#include "runtime/povray_hints.hpp"
 
 namespace rts::runtime {
 
@@ -64,7 +65,10 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
     case render::BlockCategory::Unknown: {
       std::string msg = fmt::format("unknown block kind '{}'", kind);
       std::string hint = render::closest_name(kind, render::SceneBuilder::block_kinds());
-      if (!hint.empty()) msg += fmt::format("; did you mean '{}'?", hint);
+      if (std::string pov = povray_hint(kind); !pov.empty())
+        msg += pov;
+      else if (!hint.empty())
+        msg += fmt::format("; did you mean '{}'?", hint);
       fail(e.loc, msg);
     }
     case render::BlockCategory::Group: {

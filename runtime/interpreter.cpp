@@ -3,12 +3,14 @@
 
 #include <chrono>
 #include <filesystem>
+#include <numbers>
 
 #include <fmt/format.h>
 
 #include "parser/parser.hpp"
 #include "render/params.hpp"
 #include "runtime/ops.hpp"
+#include "runtime/povray_hints.hpp"
 
 namespace rts::runtime {
 
@@ -324,15 +326,27 @@ uint32_t Interpreter::find_builtin(ast::Symbol name) {
   return id;
 }
 
+namespace {
+// The built-in constant `pi`, looked up after the scene's own names.
+ast::Symbol pi_symbol() {
+  static const ast::Symbol pi = ast::intern("pi");
+  return pi;
+}
+}  // namespace
+
 void Interpreter::undefined(ast::Symbol name, SourceLoc loc) {
   std::vector<std::string_view> candidates;
   for (std::size_t i = frame_base_; i < bindings_.size(); ++i) candidates.push_back(*bindings_[i].name);
   if (frame_base_ > 0)
     for (std::size_t i = 0; i < globals_end(); ++i) candidates.push_back(*bindings_[i].name);
   for (const Builtin& b : builtin_table()) candidates.push_back(b.name);
+  candidates.push_back(*pi_symbol());
   std::string msg = fmt::format("undefined name '{}'", *name);
   std::string hint = render::closest_name(*name, candidates);
-  if (!hint.empty()) msg += fmt::format("; did you mean '{}'?", hint);
+  if (std::string pov = povray_hint(*name); !pov.empty())
+    msg += pov;
+  else if (!hint.empty())
+    msg += fmt::format("; did you mean '{}'?", hint);
   fail(loc, msg);
 }
 
@@ -673,6 +687,7 @@ Value Interpreter::eval(const ast::Expr& e) {
 
 Value Interpreter::eval_name(const ast::NameExpr& e) {
   if (Binding* b = lookup(e.name)) return b->value;
+  if (e.name == pi_symbol()) return Value::number(std::numbers::pi);  // a constant a `let` may shadow
   if (uint32_t id = find_builtin(e.name); id != kNotBuiltin) {
     Value v;
     v.type = Type::Builtin;

@@ -82,7 +82,7 @@ TEST_CASE("check_unused reports unknown names with a suggestion", "[params]") {
     ps.check_unused({"radius", "center"});
     FAIL("expected a SceneError");
   } catch (const SceneError& e) {
-    CHECK(std::string(e.what()) == "unknown property 'centre' for sphere; did you mean 'center'?");
+    CHECK(std::string(e.what()) == "unknown property 'centre' for sphere; did you mean 'center'? (sphere takes radius, center)");
     CHECK(e.where.line == 3);
     CHECK(e.where.col == 5);
   }
