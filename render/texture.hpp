@@ -29,7 +29,11 @@ class CompiledTexture {
                                     : std::vector<std::shared_ptr<const Image>>{}) {}
   Color eval(const TexturePoint& p) const;
   // Bytes of decoded image data this texture holds (0 for procedural ones).
-  std::size_t image_bytes() const { return image_ ? image_->rgb.size() * sizeof(float) : 0; }
+  std::size_t image_bytes() const {
+    std::size_t bytes = 0;
+    for (const auto& image : images_) bytes += image ? image->rgb.size() * sizeof(float) : 0;
+    return bytes;
+  }
   // Environment lookup along a world direction (need not be unit length); any texture kind
   // answers, procedural ones at the point `direction` itself.
   Color eval_direction(const Vec3& direction) const;

@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const rts::SourceFile* file = sources.add(path, std::move(text));
   rts::DiagnosticSink warnings(rts::fuzz::null_stream());
   try {
-    rts::EvalResult result = rts::evaluate_source(sources, *file, rts::EvalOptions{}, warnings);
+    rts::EvalResult result = rts::evaluate_source(sources, *file, rts::fuzz::eval_options(), warnings);
     (void)result;
   } catch (const rts::LanguageError& e) {
     rts::fuzz::check_error(e);

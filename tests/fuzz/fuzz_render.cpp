@@ -28,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   rts::DiagnosticSink warnings(rts::fuzz::null_stream());
   rts::render::SceneDesc scene;
   try {
-    scene = rts::evaluate_source(sources, *file, rts::EvalOptions{}, warnings).scene;
+    scene = rts::evaluate_source(sources, *file, rts::fuzz::eval_options(), warnings).scene;
   } catch (const rts::LanguageError& e) {
     rts::fuzz::check_error(e);
     return 0;

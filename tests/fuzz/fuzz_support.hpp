@@ -18,6 +18,7 @@
 
 #include "parser/diagnostics.hpp"
 #include "parser/source.hpp"
+#include "runtime/evaluator.hpp"
 
 namespace rts::fuzz {
 
@@ -27,6 +28,16 @@ class NullBuffer : public std::streambuf {
   int overflow(int c) override { return c; }
   std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
 };
+
+// The evaluation options of the harnesses: the defaults of `rts check`, except the memory
+// budget, which `rts` sets from the machine's RAM and EvalOptions leaves unlimited: it is set
+// below libFuzzer's -rss_limit_mb (scripts/fuzz: 2048), so a scene that the budget allows is
+// never reported as an out-of-memory finding, and one that it refuses ends as a located error.
+inline rts::EvalOptions eval_options() {
+  rts::EvalOptions options;
+  options.limits.max_memory = std::size_t(1536) << 20;
+  return options;
+}
 
 inline std::ostream& null_stream() {
   static NullBuffer buffer;
