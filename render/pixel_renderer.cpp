@@ -41,7 +41,14 @@ void PixelRenderer::add_samples(int x, int y, uint32_t count, PixelAccum& acc, R
     const uint32_t batch = s % batches_;
     Sampler sampler(pattern_, static_cast<uint32_t>(x), static_cast<uint32_t>(y), batch, s / batches_);
     glm::dvec2 offset = centre_single_ ? glm::dvec2(0.5) : sampler.next2();
-    glm::dvec2 lens = sampler.next2();
+    // Without depth of field the lens point is ignored: step over its two dimensions instead of
+    // computing them (the Sobol pair was 13% of a 1-spp diffuse render's instructions, callgrind),
+    // so every later draw still gets the same values and the image does not change.
+    glm::dvec2 lens(0.5);
+    if (camera_.has_depth_of_field())
+      lens = sampler.next2();
+    else
+      sampler.skip(2);
     Rgb c = integrator_.trace(camera_.generate(x + offset.x, y + offset.y, lens), sampler, counters);
     if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
       ++counters.nan_samples;  // never let one bad sample poison the pixel
