@@ -24,21 +24,32 @@
 namespace rts::import {
 namespace {
 
+struct Prop;
+
 struct Value {
   enum Kind { Num, Str, Name, Tuple, Block, Call } kind = Num;
   double num = 0;
   std::string text;                                   // Str, Name, Call (the function / block name)
   std::vector<Value> items;                           // Tuple, Call arguments
-  std::vector<std::pair<std::string, Value>> props;   // Block (and named blocks: sphere { ... })
+  // Block (and named blocks: sphere { ... }). Not std::pair: a pair of the still-incomplete
+  // Value is ill-formed (libstdc++ asserts it under clang); a vector of a declared struct is not.
+  std::vector<Prop> props;
   Token at;
 
-  const Value* prop(const std::string& key) const {
-    const Value* found = nullptr;
-    for (const auto& [k, v] : props)
-      if (k == key) found = &v;   // the last one wins
-    return found;
-  }
+  const Value* prop(const std::string& key) const;
 };
+
+struct Prop {
+  std::string key;
+  Value value;
+};
+
+const Value* Value::prop(const std::string& key) const {
+  const Value* found = nullptr;
+  for (const auto& [k, v] : props)
+    if (k == key) found = &v;   // the last one wins
+  return found;
+}
 
 struct Parser {
   Tokens& tk;
@@ -56,7 +67,7 @@ struct Parser {
         tk.fail(key, fmt::format("expected 'name = value' in the block, got '{}'", key.text));
       }
       tk.expect("=");
-      v.props.emplace_back(key.text, value());
+      v.props.push_back(Prop{key.text, value()});
       tk.accept(";");
     }
     return v;
