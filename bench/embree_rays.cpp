@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
-#include "render/camera.hpp"
-#include "render/mesh_accel.hpp"
-#include "render/obj_loader.hpp"
+#include "render/sample/camera.hpp"
+#include "render/accel/mesh_accel.hpp"
+#include "render/scene/obj_loader.hpp"
 
 using namespace rts::render;
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "render/image.hpp"
-#include "render/obj_loader.hpp"
+#include "render/image/image.hpp"
+#include "render/scene/obj_loader.hpp"
 
 namespace {
 

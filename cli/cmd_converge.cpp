@@ -20,9 +20,9 @@
 #include "cli/eval_options.hpp"
 #include "cli/svg_plot.hpp"
 #include "parser/diagnostics.hpp"
-#include "render/image.hpp"
-#include "render/image_metrics.hpp"
-#include "render/float_image_io.hpp"
+#include "render/image/image.hpp"
+#include "render/image/image_metrics.hpp"
+#include "render/image/float_image_io.hpp"
 #include "render/renderer.hpp"
 #include "runtime/evaluator.hpp"
 

@@ -10,9 +10,9 @@
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
 #include "cli/number_flags.hpp"
-#include "render/resource_limits.hpp"
+#include "render/scene/resource_limits.hpp"
 #include "parser/diagnostics.hpp"
-#include "render/source_ref.hpp"
+#include "render/scene/source_ref.hpp"
 #include "runtime/evaluator.hpp"
 #include "runtime/scene_summary.hpp"
 

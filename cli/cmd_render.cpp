@@ -20,7 +20,7 @@
 #include "cli/stats_report.hpp"
 #include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
-#include "render/image_output.hpp"
+#include "render/image/image_output.hpp"
 #include "render/renderer.hpp"
 #include "runtime/evaluator.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "render/resource_limits.hpp"
+#include "render/scene/resource_limits.hpp"
 
 namespace rts::cli {
 

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "render/source_ref.hpp"
+#include "render/scene/source_ref.hpp"
 #include "render/stats_json.hpp"
 
 namespace rts::cli {

@@ -14,19 +14,19 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "render/adaptive.hpp"
-#include "render/camera.hpp"
-#include "render/features.hpp"
-#include "render/flatten.hpp"
-#include "render/frame.hpp"
-#include "render/integrator.hpp"
-#include "render/lights.hpp"
-#include "render/pixel_renderer.hpp"
+#include "render/sample/adaptive.hpp"
+#include "render/sample/camera.hpp"
+#include "render/scene/features.hpp"
+#include "render/scene/flatten.hpp"
+#include "render/image/frame.hpp"
+#include "render/shade/integrator.hpp"
+#include "render/shade/lights.hpp"
+#include "render/sample/pixel_renderer.hpp"
 #include "render/progress.hpp"
-#include "render/resource_limits.hpp"
-#include "render/texture.hpp"
-#include "render/tolerances.hpp"
-#include "render/world.hpp"
+#include "render/scene/resource_limits.hpp"
+#include "render/shade/texture.hpp"
+#include "render/geometry/tolerances.hpp"
+#include "render/accel/world.hpp"
 
 namespace rts::render {
 namespace {

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "render/image.hpp"
-#include "render/scene.hpp"
+#include "render/image/image.hpp"
+#include "render/scene/scene.hpp"
 #include "render/stats.hpp"
 
 namespace rts::render {

@@ -65,7 +65,7 @@ struct RenderStats {
   int width = 0, height = 0, samples = 0, max_depth = 0, threads = 0;
   std::size_t instances = 0, planes = 0, lights = 0;
   RayCounters rays;
-  // What the scene uses and what rendering left out (render/features.hpp names).
+  // What the scene uses and what rendering left out (render/scene/features.hpp names).
   bool specialized = true;     // false under --no-specialize
   std::vector<std::string> features_used, features_left_out;
   NamedCounts primitives;      // placed primitives by kind (meshes: their triangles counted apart)

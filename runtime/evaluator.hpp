@@ -18,7 +18,7 @@
 
 #include "parser/diagnostics.hpp"
 #include "parser/source.hpp"
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 
 namespace rts {
 

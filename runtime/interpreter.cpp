@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "parser/parser.hpp"
-#include "render/params.hpp"
+#include "render/scene/params.hpp"
 #include "runtime/ops.hpp"
 #include "runtime/povray_hints.hpp"
 

@@ -23,8 +23,8 @@
 #include "parser/ast.hpp"
 #include "parser/diagnostics.hpp"
 #include "parser/source.hpp"
-#include "render/resource_limits.hpp"
-#include "render/scene_builder.hpp"
+#include "render/scene/resource_limits.hpp"
+#include "render/scene/scene_builder.hpp"
 #include "runtime/evaluator.hpp"
 #include "runtime/value.hpp"
 

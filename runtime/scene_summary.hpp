@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string>
 
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 
 namespace rts::runtime {
 

@@ -12,7 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "parser/ast.hpp"
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 
 namespace rts::runtime {
 

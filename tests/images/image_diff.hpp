@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <string>
 
-#include "render/image.hpp"
+#include "render/image/image.hpp"
 
 namespace rts::images {
 

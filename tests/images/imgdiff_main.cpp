@@ -5,7 +5,7 @@
 #include <iostream>
 #include <string>
 
-#include "render/image.hpp"
+#include "render/image/image.hpp"
 #include "tests/images/image_diff.hpp"
 
 namespace {

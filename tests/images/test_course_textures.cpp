@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/texture.hpp"
+#include "render/shade/texture.hpp"
 
 using namespace rts::render;
 

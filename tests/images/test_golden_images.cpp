@@ -11,7 +11,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/image.hpp"
+#include "render/image/image.hpp"
 #include "tests/images/golden_scene.hpp"
 #include "tests/images/image_diff.hpp"
 #include "tests/images/run_process.hpp"

@@ -19,7 +19,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/image.hpp"
+#include "render/image/image.hpp"
 #include "tests/images/temp_dir.hpp"
 
 using namespace rts::render;

@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/texture.hpp"
+#include "render/shade/texture.hpp"
 #include "tests/images/temp_dir.hpp"
 
 using namespace rts::render;

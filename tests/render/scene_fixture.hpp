@@ -3,7 +3,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 
 namespace rts::render::test {
 

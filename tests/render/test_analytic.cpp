@@ -6,8 +6,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/flatten.hpp"
-#include "render/integrator.hpp"
+#include "render/scene/flatten.hpp"
+#include "render/shade/integrator.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"
 

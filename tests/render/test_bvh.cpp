@@ -6,12 +6,12 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/bvh.hpp"
-#include "render/flatten.hpp"
-#include "render/mesh_accel.hpp"
-#include "render/shapes/sphere.hpp"
-#include "render/shapes/triangle.hpp"
-#include "render/world.hpp"
+#include "render/accel/bvh.hpp"
+#include "render/scene/flatten.hpp"
+#include "render/accel/mesh_accel.hpp"
+#include "render/geometry/shapes/sphere.hpp"
+#include "render/geometry/shapes/triangle.hpp"
+#include "render/accel/world.hpp"
 #include "scene_fixture.hpp"
 
 using namespace rts::render;

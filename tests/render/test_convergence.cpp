@@ -8,8 +8,8 @@
 #include <numbers>
 #include <vector>
 
-#include "render/adaptive.hpp"
-#include "render/image_metrics.hpp"
+#include "render/sample/adaptive.hpp"
+#include "render/image/image_metrics.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"
 

@@ -6,11 +6,11 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/camera.hpp"
-#include "render/flatten.hpp"
-#include "render/frame.hpp"
-#include "render/integrator.hpp"
-#include "render/lights.hpp"
+#include "render/sample/camera.hpp"
+#include "render/scene/flatten.hpp"
+#include "render/image/frame.hpp"
+#include "render/shade/integrator.hpp"
+#include "render/shade/lights.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"
 

@@ -3,8 +3,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/mesh_accel.hpp"
-#include "render/shapes/quad.hpp"
+#include "render/accel/mesh_accel.hpp"
+#include "render/geometry/shapes/quad.hpp"
 
 using namespace rts::render;
 

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "render/interval.hpp"
+#include "render/geometry/interval.hpp"
 
 using rts::render::Interval;
 

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/features.hpp"
-#include "render/integrator.hpp"
+#include "render/scene/features.hpp"
+#include "render/shade/integrator.hpp"
 #include "render/renderer.hpp"
-#include "render/world.hpp"
+#include "render/accel/world.hpp"
 #include "scene_fixture.hpp"
 
 namespace rts::render {

@@ -9,8 +9,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/float_image_io.hpp"
-#include "render/image_output.hpp"
+#include "render/image/float_image_io.hpp"
+#include "render/image/image_output.hpp"
 #include "tests/images/temp_dir.hpp"
 
 using namespace rts::render;

@@ -4,13 +4,13 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/shapes/box.hpp"
-#include "render/shapes/cone.hpp"
-#include "render/shapes/cylinder.hpp"
-#include "render/shapes/disc.hpp"
-#include "render/shapes/plane.hpp"
-#include "render/shapes/sphere.hpp"
-#include "render/shapes/triangle.hpp"
+#include "render/geometry/shapes/box.hpp"
+#include "render/geometry/shapes/cone.hpp"
+#include "render/geometry/shapes/cylinder.hpp"
+#include "render/geometry/shapes/disc.hpp"
+#include "render/geometry/shapes/plane.hpp"
+#include "render/geometry/shapes/sphere.hpp"
+#include "render/geometry/shapes/triangle.hpp"
 #include "scene_fixture.hpp"
 
 using namespace rts::render;

@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/image.hpp"
+#include "render/image/image.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"
 

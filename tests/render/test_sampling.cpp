@@ -4,8 +4,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/camera.hpp"
-#include "render/sampler.hpp"
+#include "render/sample/camera.hpp"
+#include "render/sample/sampler.hpp"
 
 using namespace rts::render;
 

@@ -5,9 +5,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/camera.hpp"
-#include "render/integrator.hpp"
-#include "render/lights.hpp"
+#include "render/sample/camera.hpp"
+#include "render/shade/integrator.hpp"
+#include "render/shade/lights.hpp"
 
 using namespace rts::render;
 

@@ -4,8 +4,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/flatten.hpp"
-#include "render/world.hpp"
+#include "render/scene/flatten.hpp"
+#include "render/accel/world.hpp"
 #include "scene_fixture.hpp"
 
 using namespace rts::render;

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "parser/diagnostics.hpp"
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 #include "runtime/evaluator.hpp"
 
 namespace rts::test {

@@ -1,7 +1,7 @@
 // ParamSet: typed lookups, conversions, use tracking, "did you mean".
 #include <catch2/catch.hpp>
 
-#include "render/params.hpp"
+#include "render/scene/params.hpp"
 
 using namespace rts::render;
 

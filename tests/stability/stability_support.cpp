@@ -8,7 +8,7 @@
 #include <mutex>
 #include <tuple>
 
-#include "render/image.hpp"
+#include "render/image/image.hpp"
 
 namespace rts::stability {
 using namespace render;

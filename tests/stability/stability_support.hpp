@@ -9,7 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/renderer.hpp"
-#include "render/scene.hpp"
+#include "render/scene/scene.hpp"
 
 namespace rts::stability {
 

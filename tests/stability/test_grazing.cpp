@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
-#include "render/camera.hpp"
+#include "render/sample/camera.hpp"
 #include "stability_support.hpp"
 
 using namespace rts::render;

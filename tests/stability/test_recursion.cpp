@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
-#include "render/tolerances.hpp"
+#include "render/geometry/tolerances.hpp"
 #include "stability_support.hpp"
 
 using namespace rts::render;

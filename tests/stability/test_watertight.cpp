@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
-#include "render/flatten.hpp"
-#include "render/world.hpp"
+#include "render/scene/flatten.hpp"
+#include "render/accel/world.hpp"
 #include "stability_support.hpp"
 
 using namespace rts::render;

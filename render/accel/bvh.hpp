@@ -1,0 +1,104 @@
+// Bounding volume hierarchy over primitives given by their boxes: binned SAH build, nodes
+// flattened depth-first (left child follows its parent), traversal ordered by the ray's
+// direction along the split axis. Used twice: over instances (top level) and over each
+// mesh's triangles (bottom level).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/geometry/aabb.hpp"
+#include "render/geometry/ray.hpp"
+
+namespace rts::render {
+
+// 32 bytes: two nodes per cache line. Bounds are stored as float, rounded outwards so they
+// still enclose their primitives; the slab test itself runs in double.
+struct BVHNode {
+  float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  uint32_t offset = 0;  // leaf: first slot in `order`; interior: index of the right child
+  uint16_t count = 0;   // leaf: number of primitives; 0 marks an interior node
+  uint8_t axis = 0;     // interior: the split axis
+
+  void set_bounds(const AABB& b);
+  AABB bounds() const {
+    return AABB{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])};
+  }
+};
+
+struct BVH {
+  std::vector<BVHNode> nodes;
+  std::vector<uint32_t> order;  // primitive indices, leaf ranges are contiguous
+  bool empty() const { return nodes.empty(); }
+};
+
+inline constexpr int kBvhBins = 16;
+inline constexpr int kBvhMaxLeafSize = 4;
+inline constexpr int kBvhMaxLeafCount = 65535;  // BVHNode::count's range
+inline constexpr int kBvhMaxDepth = 64;         // deeper: forced median splits (< 32 more)
+inline constexpr int kBvhTraversalStack = 128;  // > the deepest possible tree
+
+BVH build_bvh(const std::vector<AABB>& primitive_bounds);
+
+// Bounds given in float (mesh triangles: their vertices are floats): the same tree as the
+// double overload builds for the same boxes, without a 48-byte double box per primitive.
+struct FloatBox {
+  float lo[3], hi[3];
+};
+BVH build_bvh(const std::vector<FloatBox>& primitive_bounds);
+
+// Visits the leaves a ray may hit, nearest child first (both children's boxes are tested at
+// their parent; the farther one waits on the stack with its entry distance and is skipped if
+// a closer hit has been found meanwhile). `leaf(slot, ray_t)` tests the primitive at position
+// `slot` of bvh.order (callers may keep per-slot data in leaf order), shrinking ray_t.max on a
+// hit and returning true; with `any_hit` the traversal stops at the first hit (shadow rays).
+template <bool any_hit, class LeafFn>
+bool traverse_bvh(const BVH& bvh, const Ray& ray, Interval& ray_t, LeafFn&& leaf) {
+  if (bvh.nodes.empty()) return false;
+  RayInverse inv(ray.origin, ray.direction);
+  if (!slab_hit(bvh.nodes[0].bounds(), inv, ray_t)) return false;
+  struct Pending {
+    uint32_t node;
+    double t_entry;
+  };
+  Pending stack[kBvhTraversalStack];
+  int top = 0;
+  uint32_t node_index = 0;
+  bool hit = false;
+  while (true) {
+    const BVHNode& node = bvh.nodes[node_index];
+    if (node.count > 0) {
+      for (uint32_t i = 0; i < node.count; ++i) {
+        if (leaf(node.offset + i, ray_t)) {
+          hit = true;
+          if constexpr (any_hit) return true;
+        }
+      }
+    } else {
+      uint32_t left = node_index + 1, right = node.offset;
+      double t_left, t_right;
+      bool hit_left = slab_hit(bvh.nodes[left].bounds(), inv, ray_t, t_left);
+      bool hit_right = slab_hit(bvh.nodes[right].bounds(), inv, ray_t, t_right);
+      if (hit_left && hit_right) {
+        if (t_right < t_left) {
+          std::swap(left, right);
+          std::swap(t_left, t_right);
+        }
+        stack[top++] = Pending{right, t_right};
+        node_index = left;
+        continue;
+      }
+      if (hit_left || hit_right) {
+        node_index = hit_left ? left : right;
+        continue;
+      }
+    }
+    // Next pending subtree that can still hold a closer hit.
+    while (top > 0 && stack[top - 1].t_entry > ray_t.max) --top;
+    if (top == 0) break;
+    node_index = stack[--top].node;
+  }
+  return hit;
+}
+
+}  // namespace rts::render

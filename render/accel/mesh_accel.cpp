@@ -1,0 +1,162 @@
+#include "render/accel/mesh_accel.hpp"
+
+#include <cmath>
+
+#include "render/geometry/shapes/triangle.hpp"
+
+namespace rts::render {
+
+MeshAccel::MeshAccel(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mesh)) {
+  // Triangles whose indices point outside the vertex arrays, or with non-finite vertices, are
+  // left out of the BVH (never hit). Boxes are kept in float (exact: the vertices are floats)
+  // and only for the valid triangles: two double box arrays were 96 bytes per triangle of the
+  // peak memory at 2M triangles.
+  std::size_t n = mesh_->indices.size() / 3;
+  std::vector<FloatBox> valid_boxes;
+  std::vector<uint32_t> valid;  // BVH primitive → triangle index
+  valid_boxes.reserve(n);
+  valid.reserve(n);
+  const std::size_t vertex_count = mesh_->positions.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const uint32_t* idx = &mesh_->indices[i * 3];
+    if (idx[0] >= vertex_count || idx[1] >= vertex_count || idx[2] >= vertex_count) continue;
+    AABB box;
+    for (int k = 0; k < 3; ++k) box.extend(Vec3(mesh_->positions[idx[k]]));
+    if (!box.valid() || !box.finite()) continue;
+    FloatBox fb;
+    for (int a = 0; a < 3; ++a) {
+      fb.lo[a] = static_cast<float>(box.lo[a]);
+      fb.hi[a] = static_cast<float>(box.hi[a]);
+    }
+    valid_boxes.push_back(fb);
+    valid.push_back(static_cast<uint32_t>(i));
+    bounds_.extend(AABB{box.lo + mesh_->origin, box.hi + mesh_->origin});
+  }
+  triangle_count_ = valid.size();
+  bvh_ = build_bvh(valid_boxes);
+  std::vector<FloatBox>().swap(valid_boxes);  // freed before the leaf vertices are allocated
+  leaf_vertices_.reserve(bvh_.order.size() * 3);
+  for (uint32_t& o : bvh_.order) {
+    o = valid[o];  // leaves index triangles directly
+    const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(o) * 3];
+    for (int k = 0; k < 3; ++k) leaf_vertices_.push_back(mesh_->positions[idx[k]]);
+  }
+}
+
+void MeshAccel::triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const {
+  const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(tri) * 3];
+  v0 = Vec3(mesh_->positions[idx[0]]);
+  v1 = Vec3(mesh_->positions[idx[1]]);
+  v2 = Vec3(mesh_->positions[idx[2]]);
+}
+
+Ray MeshAccel::local_ray(const Ray& ray) const {
+  return Ray{ray.origin - mesh_->origin, ray.direction};
+}
+
+bool MeshAccel::intersect(const Ray& object_ray, Interval ray_t, SurfaceHit& hit, bool smooth) const {
+  uint32_t best_slot = 0;
+  double best_b1 = 0, best_b2 = 0;
+  const Ray ray = local_ray(object_ray);
+  const TriangleRay tri_ray(ray);
+  bool found = traverse_bvh<false>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
+    const glm::vec3* v = &leaf_vertices_[static_cast<std::size_t>(slot) * 3];
+    double t, b1, b2;
+    if (!intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), tri_ray, t_range, t, b1, b2)) return false;
+    t_range.max = t;
+    best_slot = slot;
+    best_b1 = b1;
+    best_b2 = b2;
+    return true;
+  });
+  if (!found) return false;
+  uint32_t best_tri = bvh_.order[best_slot];
+  Vec3 v0, v1, v2;
+  triangle(best_tri, v0, v1, v2);
+  const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(best_tri) * 3];
+  double b0 = 1.0 - best_b1 - best_b2;
+  hit.t = ray_t.max;
+  double local_error = 0.0;
+  hit.point = triangle_point(v0, v1, v2, best_b1, best_b2, local_error) + mesh_->origin;
+  hit.error = local_error + error_gamma(1) * (max_abs_component(hit.point) + max_abs_component(mesh_->origin));
+  hit.normal = glm::normalize(glm::cross(v1 - v0, v2 - v0));
+  hit.shading_normal = hit.normal;
+  const auto& normals = mesh_->normals;
+  if (smooth && normals.size() == mesh_->positions.size()) {
+    Vec3 n = b0 * Vec3(normals[idx[0]]) + best_b1 * Vec3(normals[idx[1]]) +
+             best_b2 * Vec3(normals[idx[2]]);
+    double len = glm::length(n);
+    if (len > tol::kTinyLength) {
+      n /= len;
+      // Vertex normals state the intended outside: turn the geometric normal to agree when
+      // the triangle is wound the other way, so inside/outside tests stay consistent.
+      hit.shading_normal = n;
+      if (glm::dot(n, hit.normal) < 0.0) hit.normal = -hit.normal;
+    }
+  }
+  hit.triangle = best_tri;
+  hit.bary = {best_b1, best_b2};
+  const auto& uvs = mesh_->uvs;
+  if (uvs.size() == mesh_->positions.size()) {
+    const glm::dvec2 uv0(uvs[idx[0]]), uv1(uvs[idx[1]]), uv2(uvs[idx[2]]);
+    hit.uv = b0 * uv0 + best_b1 * uv1 + best_b2 * uv2;
+    hit.has_uv = true;
+    hit.dpdu = hit.dpdv = Vec3(0.0);
+    // The tangent frame of the uv parameterisation (pbrt's dp/du, dp/dv), for bump maps.
+    const glm::dvec2 d1 = uv1 - uv0, d2 = uv2 - uv0;
+    const double det = d1.x * d2.y - d1.y * d2.x;
+    if (std::abs(det) > 0.0 && std::isfinite(1.0 / det)) {
+      const double inv = 1.0 / det;
+      hit.dpdu = (d2.y * (v1 - v0) - d1.y * (v2 - v0)) * inv;
+      hit.dpdv = (-d2.x * (v1 - v0) + d1.x * (v2 - v0)) * inv;
+    }
+  } else {
+    hit.uv = {best_b1, best_b2};
+    hit.has_uv = false;
+    hit.dpdu = hit.dpdv = Vec3(0.0);
+  }
+  return true;
+}
+
+bool MeshAccel::vertex_material(uint32_t tri, glm::dvec2 bary, VertexMaterial& out) const {
+  const MeshData& m = *mesh_;
+  if (!m.has_vertex_material()) return false;
+  const uint32_t* idx = &m.indices[static_cast<std::size_t>(tri) * 3];
+  const double w[3] = {1.0 - bary.x - bary.y, bary.x, bary.y};
+  const std::size_t n = m.positions.size();
+  auto mix = [&](const std::vector<float>& values, double& result) {
+    if (values.size() != n) return false;
+    result = w[0] * values[idx[0]] + w[1] * values[idx[1]] + w[2] * values[idx[2]];
+    return true;
+  };
+  if (m.colors.size() == n) {
+    glm::dvec3 c = w[0] * glm::dvec3(m.colors[idx[0]]) + w[1] * glm::dvec3(m.colors[idx[1]]) +
+                   w[2] * glm::dvec3(m.colors[idx[2]]);
+    out.color = Color(c.x, c.y, c.z);
+    out.has_color = true;
+  }
+  out.has_diffuse = mix(m.diffuse, out.diffuse);
+  out.has_specular = mix(m.specular, out.specular);
+  out.has_shininess = mix(m.shininess, out.shininess);
+  return true;
+}
+
+bool MeshAccel::occluded(const Ray& object_ray, Interval ray_t) const {
+  const Ray ray = local_ray(object_ray);
+  const TriangleRay tri_ray(ray);
+  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t slot, Interval& t_range) {
+    const glm::vec3* v = &leaf_vertices_[static_cast<std::size_t>(slot) * 3];
+    double t, b1, b2;
+    return intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), tri_ray, t_range, t, b1, b2);
+  });
+}
+
+std::size_t MeshAccel::memory_bytes() const {
+  const MeshData& m = *mesh_;
+  return m.positions.size() * sizeof(m.positions[0]) + m.normals.size() * sizeof(m.normals[0]) +
+         m.uvs.size() * sizeof(m.uvs[0]) + m.indices.size() * sizeof(m.indices[0]) +
+         bvh_.nodes.size() * sizeof(BVHNode) + bvh_.order.size() * sizeof(uint32_t) +
+         leaf_vertices_.size() * sizeof(leaf_vertices_[0]);
+}
+
+}  // namespace rts::render

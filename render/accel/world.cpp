@@ -1,0 +1,357 @@
+#include "render/accel/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "render/geometry/shapes/box.hpp"
+#include "render/geometry/shapes/cone.hpp"
+#include "render/geometry/shapes/cylinder.hpp"
+#include "render/geometry/shapes/disc.hpp"
+#include "render/geometry/shapes/plane.hpp"
+#include "render/geometry/shapes/quad.hpp"
+#include "render/geometry/shapes/sphere.hpp"
+#include "render/geometry/shapes/triangle.hpp"
+#include "render/geometry/tolerances.hpp"
+
+namespace rts::render {
+namespace {
+
+bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
+
+// The infinity norm of the 3x3 linear part (largest row sum of absolute values): how much it
+// can stretch a per-component error bound.
+double linear_norm(const Mat4& m) {
+  double best = 0.0;
+  for (int row = 0; row < 3; ++row)
+    best = std::max(best, std::abs(m[0][row]) + std::abs(m[1][row]) + std::abs(m[2][row]));
+  return best;
+}
+
+}  // namespace
+
+World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
+  meshes_.resize(scene.meshes.size());
+  std::vector<Instance> bounded, unbounded;
+  std::vector<AABB> boxes;
+  for (const FlatShape& fs : flat.shapes) {
+    const ShapeDesc& shape = scene.shapes[fs.shape];
+    Instance inst;
+    inst.material = shape.material;
+    if (shape.material < scene.materials.size()) {
+      const Color& t = scene.materials[shape.material].transmit;
+      inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
+      has_transmissive_ = has_transmissive_ || inst.transmissive;
+    }
+    bool identity = is_identity(fs.to_world);
+    if (!identity) {
+      double det = glm::determinant(glm::dmat3(fs.to_world));
+      if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) continue;
+      InstanceTransform xf;
+      xf.to_world = fs.to_world;
+      xf.to_object = glm::inverse(fs.to_world);
+      xf.normal_to_world = glm::transpose(glm::dmat3(xf.to_object));
+      xf.vector_to_world = glm::dmat3(fs.to_world);
+      inst.transform = static_cast<uint32_t>(transforms_.size());
+      transforms_.push_back(xf);
+    }
+    AABB object_bounds;
+    bool unbounded_shape = false;
+    std::visit(
+        [&](const auto& g) {
+          using T = std::decay_t<decltype(g)>;
+          if constexpr (std::is_same_v<T, Sphere>) {
+            inst.kind = PrimKind::Sphere; inst.index = spheres_.size(); spheres_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Plane>) {
+            inst.kind = PrimKind::Plane; inst.index = plane_shapes_.size(); plane_shapes_.push_back(g);
+            unbounded_shape = true;
+          } else if constexpr (std::is_same_v<T, Triangle>) {
+            inst.kind = PrimKind::Triangle; inst.index = triangles_.size(); triangles_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Box>) {
+            inst.kind = PrimKind::Box; inst.index = boxes_.size(); boxes_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Cylinder>) {
+            inst.kind = PrimKind::Cylinder; inst.index = cylinders_.size(); cylinders_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Cone>) {
+            inst.kind = PrimKind::Cone; inst.index = cones_.size(); cones_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Disc>) {
+            inst.kind = PrimKind::Disc; inst.index = discs_.size(); discs_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, Quad>) {
+            inst.kind = PrimKind::Quad; inst.index = quads_.size(); quads_.push_back(g);
+            object_bounds = bounds(g);
+          } else if constexpr (std::is_same_v<T, MeshRef>) {
+            if (g.mesh >= scene.meshes.size() || !scene.meshes[g.mesh])
+              throw RenderError(shape.loc, "internal: shape refers to unknown mesh " + std::to_string(g.mesh));
+            meshes_[g.mesh] = mesh_accel(scene, g.mesh);
+            inst.kind = PrimKind::Mesh; inst.index = g.mesh; inst.smooth = g.smooth;
+            inst.vertex_material = scene.meshes[g.mesh]->has_vertex_material();
+            object_bounds = meshes_[g.mesh]->bounds();
+          }
+        },
+        shape.geometry);
+    if (unbounded_shape) {
+      unbounded.push_back(inst);
+      continue;
+    }
+    if (!object_bounds.valid()) continue;  // empty mesh, nothing to hit
+    AABB world_bounds = identity ? object_bounds : transform_bounds(fs.to_world, object_bounds);
+    if (!world_bounds.finite()) continue;  // NaN/inf coordinates: never hit
+    bounded.push_back(inst);
+    boxes.push_back(world_bounds);
+  }
+  bounded_count_ = bounded.size();
+  use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
+  if (use_bvh_) bvh_ = build_bvh(boxes);
+  instances_ = std::move(bounded);
+  for (Instance& p : unbounded) {
+    planes_.push_back(static_cast<uint32_t>(instances_.size()));
+    instances_.push_back(p);
+  }
+}
+
+namespace {
+bool same_mesh_data(const MeshData& a, const MeshData& b) {
+  return a.source == b.source && a.origin == b.origin && a.indices == b.indices && a.positions == b.positions &&
+         a.normals == b.normals && a.uvs == b.uvs && a.colors == b.colors &&
+         a.diffuse == b.diffuse && a.specular == b.specular && a.shininess == b.shininess;
+}
+}  // namespace
+
+std::shared_ptr<const MeshAccel> World::mesh_accel(const SceneDesc& scene, MeshId id) {
+  if (meshes_[id]) return meshes_[id];
+  const MeshData& data = *scene.meshes[id];
+  for (MeshId other = 0; other < meshes_.size(); ++other) {
+    // Comparing the arrays is far cheaper than building a second BVH over them.
+    if (meshes_[other] && (scene.meshes[other] == scene.meshes[id] ||
+                           same_mesh_data(*scene.meshes[other], data)))
+      return meshes_[other];
+  }
+  return std::make_shared<const MeshAccel>(scene.meshes[id]);
+}
+
+std::size_t World::mesh_bvh_count() const {
+  std::vector<const MeshAccel*> distinct;
+  for (const auto& m : meshes_)
+    if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) distinct.push_back(m.get());
+  return distinct.size();
+}
+
+Ray World::object_ray(const Instance& inst, const Ray& r) const {
+  if (inst.transform == kNoId) return r;
+  const Mat4& m = transforms_[inst.transform].to_object;
+  return Ray{Vec3(m * glm::dvec4(r.origin, 1.0)), Vec3(m * glm::dvec4(r.direction, 0.0))};
+}
+
+bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
+                               SurfaceHit& hit) const {
+  Ray ray = object_ray(inst, world_ray);
+  switch (inst.kind) {
+    case PrimKind::Sphere: return render::intersect(spheres_[inst.index], ray, ray_t, hit);
+    case PrimKind::Plane: return render::intersect(plane_shapes_[inst.index], ray, ray_t, hit);
+    case PrimKind::Triangle: return render::intersect(triangles_[inst.index], ray, ray_t, hit);
+    case PrimKind::Box: return render::intersect(boxes_[inst.index], ray, ray_t, hit);
+    case PrimKind::Cylinder: return render::intersect(cylinders_[inst.index], ray, ray_t, hit);
+    case PrimKind::Cone: return render::intersect(cones_[inst.index], ray, ray_t, hit);
+    case PrimKind::Disc: return render::intersect(discs_[inst.index], ray, ray_t, hit);
+    case PrimKind::Mesh: return meshes_[inst.index]->intersect(ray, ray_t, hit, inst.smooth);
+    case PrimKind::Quad: return render::intersect(quads_[inst.index], ray, ray_t, hit);
+  }
+  return false;
+}
+
+bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const {
+  if (inst.kind == PrimKind::Mesh) {
+    return meshes_[inst.index]->occluded(object_ray(inst, world_ray), ray_t);
+  }
+  if (inst.kind == PrimKind::Sphere) {  // the root alone: no hit point, normal or error bound
+    double t;
+    return sphere_root(spheres_[inst.index], object_ray(inst, world_ray), ray_t, t);
+  }
+  SurfaceHit scratch;
+  return intersect_instance(inst, world_ray, ray_t, scratch);
+}
+
+bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only) const {
+  SurfaceHit best;
+  uint32_t best_instance = 0;
+  bool have_best = false;
+  // Coincident surfaces (coplanar overlapping triangles, a box face on a plane) compute t's
+  // that differ only by rounding, so "closest" would pick one or the other pixel by pixel
+  // (speckles). Hits within `tie` of the closest count as the same distance and the lower
+  // instance index wins: one surface shows, the same for every ray and thread.
+  const double tie_scale =
+      tol::kCoincidentRelative * max_abs_component(ray.origin) / max_abs_component(ray.direction);
+  // Instance i hit within t_range: keep it as the closest so far and end the range there.
+  auto closer = [&](uint32_t i, Interval& t_range) {
+    if (transmissive_only && !instances_[i].transmissive) return false;
+    SurfaceHit h;
+    if (!intersect_instance(instances_[i], ray, t_range, h)) return false;
+    if (have_best) {
+      double tie = tie_scale + tol::kCoincidentRelative * best.t;
+      bool tied = std::abs(h.t - best.t) <= tie;
+      if (tied ? i > best_instance : h.t > best.t) return false;
+    }
+    best = h;
+    best_instance = i;
+    have_best = true;
+    t_range.max = h.t + tie_scale + tol::kCoincidentRelative * h.t;  // a tie may still follow
+    return true;
+  };
+  bool found = false;
+  if (use_bvh_) {
+    found = traverse_bvh<false>(bvh_, ray, ray_t,
+                                [&](uint32_t slot, Interval& t_range) { return closer(bvh_.order[slot], t_range); });
+  } else {
+    for (uint32_t i = 0; i < bounded_count_; ++i) found = closer(i, ray_t) || found;
+  }
+  for (uint32_t i : planes_) found = closer(i, ray_t) || found;
+  if (!found) return false;
+  const Instance& inst = instances_[best_instance];
+  hit.t = best.t;
+  hit.instance = best_instance;
+  hit.object_point = best.point;
+  hit.uv = best.uv;
+  // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
+  // texture asks for them.
+  hit.has_uv = best.has_uv || inst.kind == PrimKind::Sphere;
+  const bool mesh = inst.kind == PrimKind::Mesh;
+  hit.triangle = mesh ? best.triangle : 0;
+  hit.bary = mesh ? best.bary : glm::dvec2(0.0);
+  if (!mesh && inst.kind != PrimKind::Quad) best.dpdu = best.dpdv = Vec3(0.0);   // not set by the others
+  // The world point is the shape's own (refined) object point carried to world space, not
+  // ray.at(t): its error bound then stays relative to the shape, whatever the ray travelled.
+  if (inst.transform == kNoId) {
+    hit.point = best.point;
+    hit.error = best.error;
+    hit.normal = glm::normalize(best.normal);
+    hit.shading_normal = glm::normalize(best.shading_normal);
+    hit.dpdu = best.dpdu;
+    hit.dpdv = best.dpdv;
+  } else {
+    const InstanceTransform& xf = transforms_[inst.transform];
+    hit.point = Vec3(xf.to_world * glm::dvec4(best.point, 1.0));
+    // The linear part scales the object-space error; the product and the translation add
+    // rounding of their own (pbrt-v4's transformed-point error bound).
+    double linear = linear_norm(xf.to_world);
+    hit.error = linear * best.error * (1.0 + error_gamma(3)) +
+                error_gamma(3) * (linear * max_abs_component(best.point) +
+                                  max_abs_component(Vec3(xf.to_world[3])));
+    const glm::dmat3& nm = xf.normal_to_world;
+    hit.normal = glm::normalize(nm * best.normal);
+    hit.shading_normal = glm::normalize(nm * best.shading_normal);
+    // Tangents transform as vectors, unlike normals.
+    hit.dpdu = xf.vector_to_world * best.dpdu;
+    hit.dpdv = xf.vector_to_world * best.dpdv;
+  }
+  return true;
+}
+
+bool World::vertex_material(const WorldHit& hit, VertexMaterial& out) const {
+  const Instance& inst = instances_[hit.instance];
+  if (!inst.vertex_material) return false;
+  return meshes_[inst.index]->vertex_material(hit.triangle, hit.bary, out);
+}
+
+glm::dvec2 World::surface_uv(const WorldHit& hit) const {
+  const Instance& inst = instances_[hit.instance];
+  if (inst.kind != PrimKind::Sphere) return hit.uv;
+  const Sphere& sp = spheres_[inst.index];
+  return sphere_uv((hit.object_point - sp.center) / sp.radius);
+}
+
+bool World::occluded(const Ray& ray, Interval ray_t, bool opaque_only) const {
+  auto blocks = [&](uint32_t i, const Interval& t_range) {
+    return !(opaque_only && instances_[i].transmissive) && occluded_instance(instances_[i], ray, t_range);
+  };
+  for (uint32_t i : planes_)
+    if (blocks(i, ray_t)) return true;
+  if (!use_bvh_) {
+    for (uint32_t i = 0; i < bounded_count_; ++i)
+      if (blocks(i, ray_t)) return true;
+    return false;
+  }
+  return traverse_bvh<true>(bvh_, ray, ray_t,
+                            [&](uint32_t slot, Interval& t_range) { return blocks(bvh_.order[slot], t_range); });
+}
+
+bool World::shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& out) const {
+  out.count = 0;
+  // Instance i on the segment: an opaque one blocks; a transmissive one adds each of its own
+  // crossings (a sphere has two), stepping past each by the same offset as a closest-hit walk.
+  auto visit = [&](uint32_t i) {
+    const Instance& inst = instances_[i];
+    if (!inst.transmissive) return occluded_instance(inst, ray, ray_t);
+    Interval range = ray_t;
+    SurfaceHit h;
+    const Vec3 object_dir = object_ray(inst, ray).direction;
+    while (intersect_instance(inst, ray, range, h)) {
+      if (out.count == tol::kMaxShadowSurfaces) return true;  // too many: treated as blocked
+      out.t[out.count] = h.t;
+      out.instance[out.count] = i;
+      ++out.count;
+      // Step past the surface by the hit's own error bound, as offset_ray_origin moves a
+      // spawned ray's origin: that distance along the normal, converted to ray parameter.
+      Vec3 n = glm::normalize(h.normal);
+      double n1 = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+      double offset = std::max(tol::kOffsetErrorScale * h.error * n1, tol::kMinRayOffset);
+      double cos_dn = std::max(std::abs(glm::dot(n, object_dir)), tol::kParallelCosine);
+      range.min = h.t + offset / cos_dn;
+    }
+    return false;
+  };
+  for (uint32_t i : planes_)
+    if (visit(i)) return true;
+  if (!use_bvh_) {
+    for (uint32_t i = 0; i < bounded_count_; ++i)
+      if (visit(i)) return true;
+    return false;
+  }
+  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t slot, Interval&) { return visit(bvh_.order[slot]); });
+}
+
+std::size_t World::bvh_nodes() const {
+  std::size_t n = bvh_.nodes.size();
+  std::vector<const MeshAccel*> distinct;
+  for (const auto& m : meshes_)
+    if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {
+      distinct.push_back(m.get());
+      n += m->bvh_nodes();
+    }
+  return n;
+}
+
+std::size_t World::triangle_count() const {
+  std::size_t n = 0;
+  std::vector<const MeshAccel*> distinct;
+  for (const auto& m : meshes_)
+    if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {
+      distinct.push_back(m.get());
+      n += m->triangle_count();
+    }
+  return n;
+}
+
+WorldMemory World::memory() const {
+  WorldMemory w;
+  w.instances = instances_.capacity() * sizeof(Instance) + planes_.capacity() * sizeof(uint32_t);
+  w.transforms = transforms_.capacity() * sizeof(InstanceTransform);
+  w.shapes = spheres_.capacity() * sizeof(Sphere) + plane_shapes_.capacity() * sizeof(Plane) +
+             triangles_.capacity() * sizeof(Triangle) + boxes_.capacity() * sizeof(Box) +
+             cylinders_.capacity() * sizeof(Cylinder) + cones_.capacity() * sizeof(Cone) +
+             discs_.capacity() * sizeof(Disc);
+  w.bvh = bvh_.nodes.capacity() * sizeof(BVHNode) + bvh_.order.capacity() * sizeof(uint32_t);
+  std::vector<const MeshAccel*> distinct;
+  for (const auto& m : meshes_)
+    if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {
+      distinct.push_back(m.get());
+      w.meshes += m->memory_bytes();
+    }
+  return w;
+}
+
+}  // namespace rts::render

@@ -1,0 +1,130 @@
+// The traceable world: every shape instance with its world transform, a top-level BVH over
+// the bounded ones, unbounded planes kept aside, and one MeshAccel per referenced mesh.
+// Ray-primitive tests dispatch with a switch on the instance kind into per-kind arrays.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "render/accel/bvh.hpp"
+#include "render/scene/flatten.hpp"
+#include "render/accel/mesh_accel.hpp"
+#include "render/scene/scene.hpp"
+#include "render/geometry/surface_hit.hpp"
+#include "render/geometry/tolerances.hpp"
+
+namespace rts::render {
+
+enum class PrimKind : uint8_t { Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad };
+
+// 16 bytes, so the instances a BVH leaf points at share cache lines; transforms live apart
+// (only transformed instances have one).
+struct Instance {
+  PrimKind kind = PrimKind::Sphere;
+  bool smooth = true;          // meshes: interpolate vertex normals
+  bool transmissive = false;   // its material lets light through (shadow rays pass it)
+  bool vertex_material = false;  // meshes: its vertices carry material values
+  uint32_t index = 0;          // into the World's array for `kind` (meshes: the MeshId)
+  MaterialId material = kNoId;
+  uint32_t transform = kNoId;  // into World's transforms, or kNoId: trace the world ray as is
+};
+
+struct InstanceTransform {
+  Mat4 to_world{1.0};               // object → world
+  Mat4 to_object{1.0};              // world → object
+  glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
+  glm::dmat3 vector_to_world{1.0};  // the object → world linear part (tangents)
+};
+
+// A hit in world space, plus what shading needs from object space.
+struct WorldHit {
+  double t = 0.0;
+  uint32_t instance = 0;
+  Vec3 point{0.0};             // world
+  double error = 0.0;          // bound on the rounding error of `point`, per component
+  Vec3 normal{0, 1, 0};        // world geometric normal, unit, outward
+  Vec3 shading_normal{0, 1, 0};  // world, unit, outward
+  Vec3 object_point{0.0};      // for textures
+  glm::dvec2 uv{0.0};           // spheres: use World::surface_uv
+  bool has_uv = false;
+  Vec3 dpdu{0.0}, dpdv{0.0};    // world-space surface derivatives, zero when unknown
+  uint32_t triangle = 0;        // meshes: which triangle, and its barycentrics (b1, b2)
+  glm::dvec2 bary{0.0};
+};
+
+// A few bounded objects are tested one after another: a BVH over them is one leaf holding the
+// same objects behind an extra box test per ray.
+inline constexpr std::size_t kMaxObjectsWithoutBvh = kBvhMaxLeafSize;
+
+// The transmissive surfaces a shadow ray crosses, in no particular order (see shadow_crossings).
+struct ShadowCrossings {
+  int count = 0;
+  double t[tol::kMaxShadowSurfaces];
+  uint32_t instance[tol::kMaxShadowSurfaces];
+};
+
+// Bytes held by each part of the world, for --stats.
+struct WorldMemory {
+  std::size_t instances = 0, transforms = 0, shapes = 0, bvh = 0, meshes = 0;
+};
+
+class World {
+ public:
+  // `specialize`: a scene of at most kMaxObjectsWithoutBvh bounded objects gets no BVH.
+  World(const SceneDesc& scene, const FlatScene& flat, bool specialize = true);
+
+  // Closest hit; with `transmissive_only`, opaque instances are ignored.
+  bool intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only = false) const;
+  // Any hit (early exit); with `opaque_only`, transmissive instances are ignored.
+  bool occluded(const Ray& ray, Interval ray_t, bool opaque_only = false) const;
+  bool has_transmissive() const { return has_transmissive_; }
+  // One any-hit traversal of [ray_t]: true (blocked) at the first opaque hit, or when the ray
+  // crosses tol::kMaxShadowSurfaces transmissive surfaces or more; otherwise every crossing of
+  // a transmissive surface is in `out` (each instance is re-tested only along its own
+  // crossings, instead of re-walking the whole scene with closest-hit steps).
+  bool shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& out) const;
+  bool uses_bvh() const { return use_bvh_; }
+  std::size_t bvh_nodes() const;         // top level plus each distinct mesh BVH
+  std::size_t triangle_count() const;    // in each distinct mesh
+  WorldMemory memory() const;
+  // The hit's texture coordinates (spheres' are computed here, on demand).
+  glm::dvec2 surface_uv(const WorldHit& hit) const;
+  // The hit's per-vertex material values; false when its shape has none.
+  bool has_vertex_material(const WorldHit& hit) const { return instances_[hit.instance].vertex_material; }
+  bool vertex_material(const WorldHit& hit, VertexMaterial& out) const;
+
+  const Instance& instance(uint32_t i) const { return instances_[i]; }
+  std::size_t instance_count() const { return instances_.size(); }
+  std::size_t plane_count() const { return planes_.size(); }
+  std::size_t mesh_bvh_count() const;  // distinct mesh BVHs built
+  const BVH& top_level() const { return bvh_; }
+
+ private:
+  Ray object_ray(const Instance& inst, const Ray& world_ray) const;
+  bool intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
+                          SurfaceHit& hit) const;
+  bool occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const;
+  std::shared_ptr<const MeshAccel> mesh_accel(const SceneDesc& scene, MeshId id);
+
+  std::vector<Sphere> spheres_;
+  std::vector<Plane> plane_shapes_;
+  std::vector<Triangle> triangles_;
+  std::vector<Box> boxes_;
+  std::vector<Cylinder> cylinders_;
+  std::vector<Cone> cones_;
+  std::vector<Disc> discs_;
+  std::vector<Quad> quads_;
+  // By MeshId; null when unreferenced. MeshIds whose data are identical (the same OBJ file
+  // loaded by several statements) share one MeshAccel, so one BVH.
+  std::vector<std::shared_ptr<const MeshAccel>> meshes_;
+
+  std::vector<Instance> instances_;  // bounded instances first (BVH), then planes
+  std::vector<InstanceTransform> transforms_;
+  std::vector<uint32_t> planes_;     // instance indices of unbounded planes
+  BVH bvh_;
+  std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded
+  bool use_bvh_ = true;
+  bool has_transmissive_ = false;
+};
+
+}  // namespace rts::render

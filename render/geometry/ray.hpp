@@ -1,0 +1,51 @@
+// Rays, and spawning secondary rays off a surface without hitting it again.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "render/scene/scene.hpp"
+#include "render/geometry/tolerances.hpp"
+
+namespace rts::render {
+
+// The direction need not be unit length: object-space rays keep the world ray's parameter t,
+// so their direction carries the inverse transform's scale.
+struct Ray {
+  Vec3 origin{0.0};
+  Vec3 direction{0, 0, 1};
+  Vec3 at(double t) const { return origin + t * direction; }
+};
+
+inline double max_abs_component(const Vec3& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+// Higham's gamma(n) = n u / (1 - n u), u = 2^-53: the relative error bound of a result of n
+// rounded double operations (pbrt-v4 section 6.8).
+constexpr double error_gamma(int n) {
+  constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
+  return n * u / (1.0 - n * u);
+}
+
+// The absolute error bound (per component) of p = o + t d computed in doubles, for shapes
+// that do not re-derive the hit point from their own parameters; t's own rounding counts as
+// a few more operations.
+inline double ray_point_error(const Ray& ray, double t) {
+  return error_gamma(tol::kRayPointOps) *
+         (max_abs_component(ray.origin) + std::abs(t) * max_abs_component(ray.direction));
+}
+
+// Moves `point` off the surface with unit geometric normal `normal` towards the side that
+// `direction` leaves into, by the point's own rounding error bound `error` (pbrt-v4's
+// OffsetRayOrigin: the distance along the normal of the box of possible true points, with a
+// safety factor for the intersection routines' own rounding). The offset is relative to the
+// hit's own magnitude, not to the scene: 1e7 from the origin it is ~1e-7 units, not 1e-2.
+inline Vec3 offset_ray_origin(const Vec3& point, const Vec3& normal, const Vec3& direction, double error) {
+  double n1 = std::abs(normal.x) + std::abs(normal.y) + std::abs(normal.z);
+  double offset = std::max(tol::kOffsetErrorScale * error * n1, tol::kMinRayOffset);
+  return glm::dot(normal, direction) >= 0.0 ? point + offset * normal : point - offset * normal;
+}
+
+}  // namespace rts::render

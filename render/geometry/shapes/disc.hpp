@@ -1,0 +1,60 @@
+// Disc (annulus when inner_radius > 0): center, normal, radius. Also used for cylinder caps.
+#pragma once
+
+#include <cmath>
+
+#include "render/geometry/aabb.hpp"
+#include "render/geometry/ray.hpp"
+#include "render/geometry/surface_hit.hpp"
+
+namespace rts::render {
+
+// Some unit vector perpendicular to unit `n`.
+inline Vec3 any_perpendicular(const Vec3& n) {
+  Vec3 ref = std::abs(n.x) < tol::kReferenceAxisCosine ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  return glm::normalize(glm::cross(n, ref));
+}
+
+// Extent of a disc of `radius` perpendicular to unit `axis`, per world axis.
+inline Vec3 disc_extent(const Vec3& axis, double radius) {
+  return radius * glm::sqrt(glm::max(Vec3(0.0), Vec3(1.0) - axis * axis));
+}
+
+inline AABB bounds(const Disc& d) {
+  double len = glm::length(d.normal);
+  Vec3 n = len > tol::kTinyLength ? d.normal / len : Vec3(0, 1, 0);
+  Vec3 e = disc_extent(n, std::abs(d.radius));
+  return AABB{d.center - e, d.center + e};
+}
+
+// Hit of the plane through `center` with unit normal `n`, inside radii [inner, outer].
+inline bool intersect_disc(const Vec3& center, const Vec3& n, double inner, double outer,
+                           const Ray& ray, const Interval& ray_t, double& t_out) {
+  double denom = glm::dot(n, ray.direction);
+  if (std::abs(denom) <= tol::kParallelCosine * glm::length(ray.direction)) return false;
+  double t = glm::dot(center - ray.origin, n) / denom;
+  if (!ray_t.surrounds(t)) return false;
+  Vec3 r = ray.at(t) - center;
+  double d2 = glm::dot(r, r);
+  if (d2 > outer * outer || d2 < inner * inner) return false;
+  t_out = t;
+  return true;
+}
+
+inline bool intersect(const Disc& d, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  double len = glm::length(d.normal);
+  if (!(len > tol::kTinyLength) || !(d.radius > 0.0)) return false;
+  Vec3 n = d.normal / len;
+  double t;
+  if (!intersect_disc(d.center, n, std::max(0.0, d.inner_radius), d.radius, ray, ray_t, t))
+    return false;
+  hit.t = t;
+  hit.point = ray.at(t);
+  hit.error = ray_point_error(ray, t);
+  hit.normal = n;
+  hit.shading_normal = n;
+  hit.has_uv = false;
+  return true;
+}
+
+}  // namespace rts::render

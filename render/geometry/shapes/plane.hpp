@@ -1,0 +1,41 @@
+// Infinite plane dot(normal, p) = offset. Unbounded: kept outside the BVH. Planar UVs are the
+// point's coordinates along two tangents (x and z for a y-up plane).
+#pragma once
+
+#include <cmath>
+
+#include "render/geometry/interval.hpp"
+#include "render/geometry/ray.hpp"
+#include "render/geometry/surface_hit.hpp"
+
+namespace rts::render {
+
+// Two unit tangents of a unit normal; for n = +y they are +x and +z.
+inline void plane_tangents(const Vec3& n, Vec3& t1, Vec3& t2) {
+  // Project +x onto the plane unless the normal is (nearly) along x; then use +z instead.
+  Vec3 ref = std::abs(n.x) < tol::kReferenceAxisCosine ? Vec3(1, 0, 0) : Vec3(0, 0, 1);
+  t1 = glm::normalize(ref - n * glm::dot(n, ref));
+  t2 = glm::cross(t1, n);
+}
+
+inline bool intersect(const Plane& p, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  double len = glm::length(p.normal);
+  if (!(len > tol::kTinyLength)) return false;
+  Vec3 n = p.normal / len;
+  double denom = glm::dot(n, ray.direction);
+  if (std::abs(denom) <= tol::kParallelCosine * glm::length(ray.direction)) return false;
+  double t = (p.offset / len - glm::dot(n, ray.origin)) / denom;
+  if (!ray_t.surrounds(t)) return false;
+  hit.t = t;
+  hit.point = ray.at(t);
+  hit.error = ray_point_error(ray, t);
+  hit.normal = n;
+  hit.shading_normal = n;
+  Vec3 t1, t2;
+  plane_tangents(n, t1, t2);
+  hit.uv = {glm::dot(hit.point, t1), glm::dot(hit.point, t2)};
+  hit.has_uv = true;
+  return true;
+}
+
+}  // namespace rts::render

@@ -1,0 +1,50 @@
+// Quad: the parallelogram corner + s*edge_u + t*edge_v, s and t in [0, 1], one-sided only in
+// its normal's direction (cross(edge_u, edge_v)); both sides are hit. Its texture coordinates
+// are (s, t), so an image covers it exactly once (UW CSE 457's `square`).
+#pragma once
+
+#include <cmath>
+
+#include "render/geometry/aabb.hpp"
+#include "render/geometry/ray.hpp"
+#include "render/geometry/surface_hit.hpp"
+#include "render/geometry/tolerances.hpp"
+
+namespace rts::render {
+
+inline AABB bounds(const Quad& q) {
+  AABB b;
+  b.extend(q.corner);
+  b.extend(q.corner + q.edge_u);
+  b.extend(q.corner + q.edge_v);
+  b.extend(q.corner + q.edge_u + q.edge_v);
+  return b;
+}
+
+inline bool intersect(const Quad& q, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  const Vec3 n = glm::cross(q.edge_u, q.edge_v);
+  const double n2 = glm::dot(n, n);
+  if (!(n2 > 0.0)) return false;   // degenerate (parallel or zero edges): never hit
+  const double denom = glm::dot(n, ray.direction);
+  if (std::abs(denom) <= tol::kParallelCosine * std::sqrt(n2) * glm::length(ray.direction)) return false;
+  const double t = glm::dot(q.corner - ray.origin, n) / denom;
+  if (!ray_t.surrounds(t)) return false;
+  const Vec3 p = ray.at(t);
+  const Vec3 d = p - q.corner;
+  // Coordinates along the (not necessarily orthogonal) edges: solve d = s*eu + t*ev with the
+  // dual basis cross(ev, n) / n2 and cross(n, eu) / n2.
+  const double s = glm::dot(d, glm::cross(q.edge_v, n)) / n2;
+  const double tv = glm::dot(d, glm::cross(n, q.edge_u)) / n2;
+  if (!(s >= 0.0 && s <= 1.0 && tv >= 0.0 && tv <= 1.0)) return false;
+  hit.t = t;
+  hit.point = p;
+  hit.normal = n / std::sqrt(n2);
+  hit.shading_normal = hit.normal;
+  hit.uv = {s, tv};
+  hit.has_uv = true;
+  hit.dpdu = q.edge_u;
+  hit.dpdv = q.edge_v;
+  return true;
+}
+
+}  // namespace rts::render

@@ -1,0 +1,86 @@
+// Every numeric tolerance the renderer uses, in one place, with the reason for each value.
+// Geometry is intersected in double precision; mesh vertices are stored as float relative to
+// the mesh's own centre (MeshData::origin, a double), so storage error is relative to the
+// mesh's size, not to its distance from the world origin.
+#pragma once
+
+namespace rts::render::tol {
+
+// Spawned rays start off the surface by the hit point's own rounding error bound (see
+// offset_ray_origin in render/geometry/ray.hpp), times this safety factor: the bound covers the hit
+// point, the factor covers the rounding of the next intersection test from the new origin
+// (pbrt-v4 instead re-checks t against a bound in each test). 16 keeps offsets ~1e-14
+// relative, invisible at any scale, and the stability suite finds no acne with it.
+inline constexpr double kOffsetErrorScale = 16.0;
+// Rounded operations counted for p = o + t d including t's own computation.
+inline constexpr int kRayPointOps = 8;
+// A hit computed exactly (error bound 0, e.g. at the origin) still moves off by this, the
+// smallest normal double: a ray starting exactly on a surface could hit it at t = 0+.
+inline constexpr double kMinRayOffset = 2.2250738585072014e-308;
+
+// A ray parallel to a plane/disc/cap within this cosine is treated as missing it.
+inline constexpr double kParallelCosine = 1e-14;
+
+// Triangles whose determinant (in units of |e1 x e2| |d|) is below this are edge-on or
+// degenerate (zero area): they are never hit, so they can never produce NaN normals.
+inline constexpr double kTriangleDeterminant = 1e-14;
+
+// Two hits whose t differ by less than this (relative to t and to the ray origin's distance
+// from the world origin, over |d|) are treated as coincident surfaces: the lower instance
+// index wins (World::intersect). Rounding of t is ~1e-16 of those scales, divided by the
+// cosine of incidence; 1e-12 covers incidence down to ~1e-3 and is far below any gap a scene
+// can mean (a box 1e-9 above a plane seen from 5 units differs by 4e-10 relative).
+inline constexpr double kCoincidentRelative = 1e-12;
+
+// Camera `up` counts as parallel to the view direction when |up x forward| is below this
+// fraction of |up|: the image would have no defined "up".
+inline constexpr double kParallelVectors = 1e-12;
+
+// Building a perpendicular vector by crossing with a reference axis: the axis is used only
+// when the vector's component along it is below this, so the cross product is well scaled.
+inline constexpr double kReferenceAxisCosine = 0.9;
+
+// An instance transform whose 3x3 determinant is below this (e.g. `scale 0`) cannot be
+// inverted: flatten_scene reports it as a located RenderError (World also skips such an
+// instance, as a last guard).
+inline constexpr double kSingularDeterminant = 1e-300;
+
+// Lengths below this are treated as zero (degenerate axes, zero radii, null vectors).
+inline constexpr double kTinyLength = 1e-300;
+
+// A shadow ray stops this far (relative to the light distance) before a point light, so the
+// light's own position never counts as an occluder.
+inline constexpr double kShadowEndRelative = 1e-9;
+
+// Shadow rays pass through at most this many transmissive surfaces before giving up (and
+// treating the light as blocked): bounds the cost of stacked glass.
+inline constexpr int kMaxShadowSurfaces = 64;
+
+// A path whose remaining weight is below this in every channel contributes nothing visible
+// in an 8- or 16-bit image: recursion stops.
+inline constexpr double kMinPathWeight = 1e-4;
+
+// max_depth above this is capped (with a located warning): the bounce loop is iterative, so
+// depth costs only time, and between two perfect mirrors every extra level is one more ray
+// per pixel. 10,000 bounces are a few seconds for a small image; 1e9 would never finish.
+inline constexpr int kMaxDepth = 10000;
+
+// Transmissive objects a path can be inside at once (the medium stack of nested dielectrics).
+// Deeper nesting keeps refracting with the innermost tracked media.
+inline constexpr int kMaxNestedMedia = 8;
+
+// Radiance, light power and path weights saturate here: far below double's overflow, so sums
+// over lights, samples and bounces stay finite, and below float's 3.4e38 so the stored image
+// holds it. A light of intensity 1e300 then renders as the brightest possible light, not as
+// infinity times zero (NaN, black).
+inline constexpr double kMaxRadiance = 1e30;
+
+// Group nesting deeper than this is treated as a cycle in the scene graph.
+inline constexpr int kMaxGroupDepth = 1024;
+
+// Bump maps take the slope of a procedural height texture by finite differences this far
+// apart (in uv units, or scene units without uvs): small beside a texture's features, large
+// beside double rounding. Image textures step one texel instead.
+inline constexpr double kBumpDifference = 1e-4;
+
+}  // namespace rts::render::tol

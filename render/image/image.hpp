@@ -1,0 +1,44 @@
+// Images: linear RGB float pixels in memory; PNG reading and atomic PNG writing.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "render/scene/scene.hpp"
+#include "render/scene/source_ref.hpp"
+
+namespace rts::render {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgb;  // 3 floats per pixel, row-major, top row first
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0.0f) {}
+  float* at(int x, int y) { return &rgb[(static_cast<std::size_t>(y) * width + x) * 3]; }
+  const float* at(int x, int y) const { return &rgb[(static_cast<std::size_t>(y) * width + x) * 3]; }
+};
+
+enum class Encoding { SRGB, Linear };
+
+// Writes `path` atomically: to a temporary file in the same directory, renamed over `path`
+// only once complete, so a failure never leaves a partial file nor replaces a good one.
+// bits: 8 or 16. Values are clamped to [0,1] after encoding. Throws RenderError.
+void write_png(const std::string& path, const Image& image, int bits = 8,
+               Encoding encoding = Encoding::SRGB);
+
+// Reads any PNG (gray, gray+alpha, RGB, RGBA, palette, 8 or 16 bit) into linear RGB: sRGB
+// values are decoded to linear when `encoding` is SRGB. Throws RenderError at `where`.
+Image read_png(const std::string& path, SourceRef where = {}, Encoding encoding = Encoding::SRGB);
+
+// Reads PNG (through read_png), BMP, JPEG, TGA or Radiance HDR, told apart by their content,
+// not their names. 8-bit data are decoded from sRGB when `encoding` is SRGB; HDR is linear.
+// Throws RenderError at `where`.
+Image read_image(const std::string& path, SourceRef where = {}, Encoding encoding = Encoding::SRGB);
+
+float srgb_to_linear(float v);
+float linear_to_srgb(float v);
+
+}  // namespace rts::render

@@ -1,0 +1,65 @@
+// What a placed scene actually uses, found after evaluation (flattening) and before tracing:
+// primitive kinds, material channels, light kinds, shadows, area-light sampling, depth of
+// field, antialiasing and AOVs. A channel at zero strength (reflect = 0, an area light of
+// intensity 0...) counts as unused. The renderer picks the path specialised to this set, and
+// `--stats` reports it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/scene/flatten.hpp"
+#include "render/scene/scene.hpp"
+
+namespace rts::render {
+
+enum class Feature : uint8_t {
+  // primitive kinds
+  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad,
+  // material channels
+  Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Emission, Specular, Ambient,
+  // lights
+  PointLight, SpotLight, DirectionalLight, AreaLight, Shadows, TransmissiveShadows, AreaSampling,
+  // camera and image
+  DepthOfField, Antialiasing, Aovs,
+  // acceleration
+  Bvh,
+  Count
+};
+
+inline constexpr std::size_t kFeatureCount = static_cast<std::size_t>(Feature::Count);
+
+// "sphere", "reflection", "area_light"... (the names --stats and the JSON report use).
+std::string_view feature_name(Feature f);
+
+struct FeatureSet {
+  uint64_t bits = 0;
+  bool has(Feature f) const { return bits >> static_cast<unsigned>(f) & 1u; }
+  void add(Feature f) { bits |= uint64_t{1} << static_cast<unsigned>(f); }
+  std::vector<std::string_view> used() const;
+  std::vector<std::string_view> left_out() const;
+};
+
+// What the renderer is told beyond the scene.
+struct FeatureContext {
+  int samples = 1;           // per pixel, after command-line overrides
+  int max_depth = 5;
+  bool aovs = false;
+};
+
+// Does this light send any light (color * intensity not zero)?
+bool light_emits(const LightDesc& light);
+// Does this material reflect / transmit at all (a zero weight is no reflection)?
+bool reflects(const MaterialDesc& m);
+bool transmits(const MaterialDesc& m);
+
+// The features the placed scene uses. `bvh` is decided by the World (see World::uses_bvh) and
+// added by the caller.
+FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const FeatureContext& ctx);
+
+// Which textures placed materials refer to (by TextureId): the others are never loaded.
+std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat);
+
+}  // namespace rts::render

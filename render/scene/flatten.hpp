@@ -1,0 +1,30 @@
+// Flattens the scene graph (groups of groups, shared nodes placed many times) into a list of
+// shape instances and lights, each with its composed child → world transform.
+#pragma once
+
+#include <vector>
+
+#include "render/scene/scene.hpp"
+
+namespace rts::render {
+
+struct FlatShape {
+  uint32_t shape = 0;          // index into SceneDesc::shapes
+  Mat4 to_world{1.0};
+  SourceRef loc;               // where the instance was placed
+};
+
+struct FlatScene {
+  std::vector<FlatShape> shapes;
+  std::vector<LightDesc> lights;  // already in world space
+};
+
+// Throws RenderError when a node index is out of range, groups nest deeper than
+// tol::kMaxGroupDepth (a cycle), or an instance's composed transform is not finite or is
+// singular ("transform is singular (scale 0?)", located at the instance's placement).
+FlatScene flatten_scene(const SceneDesc& scene);
+
+// The light moved into world space by `m` (positions as points, directions as vectors).
+LightDesc transform_light(const LightDesc& light, const Mat4& m);
+
+}  // namespace rts::render

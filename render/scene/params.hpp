@@ -1,0 +1,87 @@
+// Parameters of a scene block, as the runtime hands them to SceneBuilder (pbrt's
+// ParameterDictionary): typed values with the location of each, lookups that mark them used,
+// and a final check that reports unknown (unused) names with a "did you mean" suggestion.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "render/scene/scene.hpp"
+
+namespace rts::render {
+
+struct TextureRef  { TextureId id = kNoId; };
+struct MaterialRef { MaterialId id = kNoId; };
+
+// The value kinds a block property can hold. The runtime converts its own values:
+// number → double, bool, string, vector → Vec3, color → Color, list of vectors → vector<Vec3>,
+// list of numbers → vector<double>, a texture value → TextureRef, a material → MaterialRef.
+using ParamValue = std::variant<double, bool, std::string, Vec3, Color, TextureRef, MaterialRef,
+                                std::vector<Vec3>, std::vector<double>>;
+
+// "number", "vector", ... for messages.
+const char* param_type_name(const ParamValue& v);
+
+struct Param {
+  std::string name;
+  ParamValue value;
+  SourceRef loc;          // the property's location (its name)
+  bool used = false;
+};
+
+class ParamSet {
+ public:
+  ParamSet() = default;
+  ParamSet(std::string block_kind, SourceRef block_loc)
+      : kind_(std::move(block_kind)), loc_(block_loc) {}
+
+  void add(std::string name, ParamValue value, SourceRef loc);  // a later add overrides
+  void reserve(std::size_t n) { params_.reserve(n); }            // capacity for n adds
+  const std::string& kind() const { return kind_; }
+  SourceRef loc() const { return loc_; }
+  const std::vector<Param>& params() const { return params_; }
+
+  bool has(std::string_view name) const;
+  const Param* find(std::string_view name);  // marks used
+
+  // Typed getters: a missing name gives `def`; a value of the wrong type throws SceneError at
+  // the property ("property 'radius' of sphere expects a number, got a vector").
+  // Conversions: number → Color (gray); Vec3 → Color; number → bool is NOT allowed.
+  double number(std::string_view name, double def);
+  int integer(std::string_view name, int def);          // also checks it is a whole number
+  bool boolean(std::string_view name, bool def);
+  std::string string(std::string_view name, const std::string& def);
+  Vec3 vec3(std::string_view name, Vec3 def);
+  Color color(std::string_view name, Color def);
+  // Required variants throw SceneError at the block: "sphere needs property 'radius'".
+  double require_number(std::string_view name);
+  Vec3 require_vec3(std::string_view name);
+  std::string require_string(std::string_view name);
+  // Raw access for properties that accept several types (e.g. color or texture).
+  const ParamValue* value(std::string_view name);       // marks used
+
+  // Throws SceneError at the first property never looked up: "unknown property 'raduis' for
+  // sphere; did you mean 'radius'?" `valid` lists every name this kind accepts.
+  void check_unused(const std::vector<std::string_view>& valid) const;
+
+  [[noreturn]] void fail(const Param& p, const std::string& message) const;
+  // A block-level error (a missing property...). When the valid names are known, an unknown
+  // property is reported instead: `sphere { raduis = 1 }` is a misspelling, not a missing radius.
+  [[noreturn]] void fail_block(const std::string& message) const;
+  // The names this kind accepts, for fail_block (the list must outlive the ParamSet).
+  void set_valid_names(const std::vector<std::string_view>* names) { valid_ = names; }
+
+ private:
+  std::string kind_;
+  SourceRef loc_;
+  std::vector<Param> params_;
+  const std::vector<std::string_view>* valid_ = nullptr;
+};
+
+// The closest candidate by edit distance, or "" when none is close enough to suggest.
+std::string closest_name(std::string_view word, const std::vector<std::string_view>& candidates);
+
+}  // namespace rts::render

@@ -1,0 +1,239 @@
+// The scene description: plain data that the runtime builds through SceneBuilder and the
+// renderer compiles into acceleration structures. Knows nothing of syntax.
+//
+// Conventions (the same as POV-Ray, so the same scene looks the same in both):
+//  - y is up; a camera at <0,0,-z> looking at the origin sees +x to its right
+//    (right = normalize(cross(up, forward))): a left-handed view.
+//  - rotate <a,b,c> rotates by a degrees about x, then b about y, then c about z
+//    (glm::rotate's matrices; rotating <1,0,0> by 90 about y gives <0,0,-1>).
+//  - Transforms compose in the order written: `s scale 2 translate <1,0,0>` scales first.
+//    A Child's transform maps the child's space into its parent's space.
+//  - Colors are linear RGB; the image writer encodes sRGB.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/sample/sampler.hpp"
+#include "render/scene/source_ref.hpp"
+
+namespace rts::render {
+
+using Vec3 = glm::dvec3;
+using Mat4 = glm::dmat4;
+
+struct Color {
+  double r = 0, g = 0, b = 0;
+  Color() = default;
+  constexpr Color(double r_, double g_, double b_) : r(r_), g(g_), b(b_) {}
+  constexpr explicit Color(double gray) : r(gray), g(gray), b(gray) {}
+  bool operator==(const Color&) const = default;
+};
+
+using TextureId = uint32_t;
+using MaterialId = uint32_t;
+using NodeId = uint32_t;
+using MeshId = uint32_t;
+inline constexpr uint32_t kNoId = std::numeric_limits<uint32_t>::max();
+
+// ---- textures ---------------------------------------------------------------------------
+// LatLong and CubeMap are environment maps: looked up by direction (the background, rays that
+// leave the scene, image-based ambient light); on a surface they use the direction from the
+// texture-space origin to the point.
+enum class TextureKind : uint8_t { Checker, Stripes, Gradient, Image, LatLong, CubeMap };
+enum class TextureFilter : uint8_t { Bilinear, Nearest };
+struct TextureDesc {
+  TextureKind kind = TextureKind::Checker;
+  Color color1{1.0}, color2{0.0};
+  double scale = 1.0;        // size of one checker cell / stripe period, in texture space
+  int axis = 0;              // stripes/gradient: 0 = x, 1 = y, 2 = z
+  std::string image_path;    // Image: already resolved against the scene file's directory
+  // Image: how surface points map to image coordinates when the surface has no UVs:
+  // "uv" (use surface UVs), "planar" (x,z → u,v), "spherical".
+  std::string mapping = "uv";
+  bool linear = false;       // images: the file holds linear values (not sRGB-encoded)
+  TextureFilter filter = TextureFilter::Bilinear;
+  // CubeMap: the faces' files in the order +x, -x, +y, -y, +z, -z, resolved like image_path.
+  std::vector<std::string> face_paths;
+  Mat4 transform{1.0};       // object space → texture space is inverse(transform)
+  SourceRef loc;
+};
+
+// ---- materials --------------------------------------------------------------------------
+// Phong: emission + ambient*color*ambient_light + sum over lights of
+// diffuse*color*(n·l) + specular*specular_color*(r·v)^shininess, then reflect and transmit
+// recursively.
+struct MaterialDesc {
+  Color color{0.8};
+  TextureId texture = kNoId;   // when set, replaces `color`
+  // A texture on a channel gives that channel's value at each point: emission, reflect and
+  // transmit take its color; specular its mean of r, g, b; on diffuse it is the diffuse color
+  // itself (the diffuse term becomes texture * (N·L), the ambient term keeps `color`).
+  TextureId diffuse_texture = kNoId;
+  TextureId specular_texture = kNoId;
+  TextureId reflect_texture = kNoId;
+  TextureId transmit_texture = kNoId;
+  TextureId emission_texture = kNoId;
+  // Surface detail: a height texture (its luminance) perturbs the normal by `bump_scale` times
+  // its slope; a normal map holds tangent-space normals as rgb = (n + 1) / 2.
+  TextureId bump = kNoId;
+  double bump_scale = 1.0;
+  TextureId normal_map = kNoId;
+  Color emission{0.0};
+  double ambient = 0.1;
+  double diffuse = 0.7;
+  double specular = 0.0;
+  Color specular_color{1.0};   // tints the highlight (`specular = rgb(...)` sets it, specular = 1)
+  double shininess = 32.0;
+  Color reflect{0.0};          // mirror reflection weight per channel
+  Color transmit{0.0};         // transmission weight per channel (also filters shadows)
+  double ior = 1.0;            // absolute index of the inside (the medium stack pairs media)
+  bool ior_relative = false;   // `ior` is the ratio to the surrounding medium instead
+  bool fresnel = false;        // Schlick's approximation scales reflect/transmit
+  double roughness = 0.0;      // > 0: glossy (blurred) reflection, sampled
+  SourceRef loc;
+};
+
+// ---- meshes -----------------------------------------------------------------------------
+struct MeshData {
+  // Relative to `origin` (the centre of the mesh's bounds): float storage then keeps 24 bits
+  // of the mesh's own size wherever it sits, instead of losing a whole unit at 1e7.
+  std::vector<glm::vec3> positions;
+  Vec3 origin{0.0};
+  std::vector<glm::vec3> normals;     // empty, or one per position (smooth shading)
+  std::vector<glm::vec2> uvs;         // empty, or one per position
+  std::vector<uint32_t> indices;      // 3 per triangle, into the arrays above
+  // Per-vertex material values, each empty or one per position, interpolated across each
+  // triangle with its barycentric coordinates; where present they replace the material's
+  // color, diffuse, specular and shininess.
+  std::vector<glm::vec3> colors;
+  std::vector<float> diffuse, specular, shininess;
+  bool has_vertex_material() const {
+    return !colors.empty() || !diffuse.empty() || !specular.empty() || !shininess.empty();
+  }
+  std::string source;                 // file it came from, or "" for inline meshes
+};
+
+// ---- shapes (each in its own object space) ------------------------------------------------
+struct Sphere   { Vec3 center{0.0}; double radius = 1.0; };
+struct Plane    { Vec3 normal{0, 1, 0}; double offset = 0.0; };          // dot(normal, p) = offset
+struct Triangle { Vec3 v0, v1, v2; bool has_normals = false; Vec3 n0, n1, n2; };
+struct Box      { Vec3 min{-1.0}, max{1.0}; };
+struct Cylinder { Vec3 from{0, 0, 0}, to{0, 1, 0}; double radius = 1.0; bool capped = true; };
+struct Cone     { Vec3 from{0, 0, 0}, to{0, 1, 0}; double radius_from = 1.0, radius_to = 0.0; bool capped = true; };
+struct Disc     { Vec3 center{0.0}, normal{0, 1, 0}; double radius = 1.0, inner_radius = 0.0; };
+struct MeshRef  { MeshId mesh = kNoId; bool smooth = true; };
+// A parallelogram corner + s*edge_u + t*edge_v, s,t in [0,1], with uv = (s, t): UW's `square`
+// is the quad corner <-0.5,-0.5,0>, edges <1,0,0> and <0,1,0>.
+struct Quad     { Vec3 corner{-0.5, -0.5, 0}, edge_u{1, 0, 0}, edge_v{0, 1, 0}; };
+
+using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad>;
+
+struct ShapeDesc {
+  ShapeGeometry geometry;
+  MaterialId material = kNoId;   // kNoId: the default material
+  SourceRef loc;
+};
+
+// ---- lights (in their own space; placement transforms them) --------------------------------
+enum class LightKind : uint8_t { Point, Spot, Directional, Area };
+struct LightDesc {
+  LightKind kind = LightKind::Point;
+  Color color{1.0};
+  double intensity = 1.0;
+  Vec3 position{0, 10, 0};
+  Vec3 direction{0, -1, 0};        // directional: the direction light travels
+  Vec3 point_at{0, 0, 0};          // spot: where the spot points
+  double radius = 30.0;            // spot: full-intensity half-angle, degrees
+  double falloff = 45.0;           // spot: zero-intensity half-angle, degrees
+  Vec3 attenuation{1, 0, 0};       // constant, linear, quadratic: I / (c + l d + q d^2)
+  bool attenuation_clamp = false;  // the factor is min(1, 1 / (c + l d + q d^2)) (UW CSE 457)
+  Vec3 u{1, 0, 0}, v{0, 0, 1};     // area: edge vectors (rectangle centred on position)
+  bool disc = false;               // area: an ellipse inscribed in the u,v rectangle
+  int samples = 16;                // area: shadow samples per shading point
+  bool shadows = true;
+  SourceRef loc;
+};
+
+// ---- camera and settings ----------------------------------------------------------------
+enum class Projection : uint8_t { Perspective, Orthographic };
+struct CameraDesc {
+  Projection projection = Projection::Perspective;
+  Vec3 position{0, 0, -5};
+  Vec3 look_at{0, 0, 0};
+  Vec3 up{0, 1, 0};
+  double fov = 60.0;               // perspective: field of view, degrees, across fov_axis
+  bool fov_vertical = false;       // fov spans the image's height instead of its width
+  bool right_handed = false;       // right = cross(forward, up): +x to the left seen from -z
+  double view_width = 4.0;         // orthographic: width of the view in scene units
+  double aperture = 0.0;           // > 0: depth of field (lens diameter)
+  double focus_distance = 0.0;     // 0: distance to look_at
+  SourceRef loc;
+};
+
+// Samples per pixel allowed (settings and --samples): 65536 on a 16x16 image is already
+// minutes; beyond it a typo (an extra zero or three) would run for ever.
+inline constexpr int kMaxSamplesPerPixel = 65536;
+
+struct Settings {
+  int width = 640;
+  int height = 480;
+  int samples = 1;                 // samples per pixel (antialiasing), stratified
+  int max_depth = 5;               // reflection/refraction recursion limit
+  Color background{0.0};
+  Color ambient_light{1.0};        // multiplies each material's ambient term
+  // An environment map (LatLong or CubeMap texture): what rays that leave the scene see,
+  // instead of `background`; with `environment_ambient`, also the ambient light, looked up
+  // along each shading normal (times ambient_light).
+  TextureId environment = kNoId;
+  bool environment_ambient = false;
+  uint64_t seed = 0;
+  SamplerKind sampler = SamplerKind::Sobol;  // how pixel samples are placed
+  SourceRef loc;
+};
+
+// ---- the graph ----------------------------------------------------------------------------
+enum class NodeKind : uint8_t { Shape, Light, Group };
+struct Node {
+  NodeKind kind = NodeKind::Shape;
+  uint32_t index = 0;              // into shapes, lights or groups
+  SourceRef loc;
+};
+
+struct Child {
+  NodeId node = kNoId;
+  Mat4 transform{1.0};             // child space → parent space
+  SourceRef loc;                   // where this instance was placed
+};
+
+struct GroupDesc {
+  std::vector<Child> children;
+};
+
+struct SceneDesc {
+  Settings settings;
+  CameraDesc camera;
+  bool has_camera = false;
+
+  std::vector<TextureDesc> textures;
+  std::vector<MaterialDesc> materials;
+  std::vector<std::shared_ptr<const MeshData>> meshes;
+  std::vector<ShapeDesc> shapes;
+  std::vector<LightDesc> lights;
+  std::vector<GroupDesc> groups;
+  std::vector<Node> nodes;
+  std::vector<Child> roots;        // instances placed in the world
+  std::vector<Warning> warnings;   // from building: what is skipped (not part of dump())
+
+  // A deterministic, human-readable dump (`rts eval`); golden tests compare it.
+  void dump(std::ostream& out) const;
+};
+
+}  // namespace rts::render

@@ -1,0 +1,778 @@
+// SceneBuilder: validates block parameters and fills the SceneDesc.
+#include "render/scene/scene_builder.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "render/geometry/aabb.hpp"
+#include "render/shade/lights.hpp"
+#include "render/scene/obj_loader.hpp"
+#include "render/geometry/tolerances.hpp"
+
+namespace rts::render {
+
+namespace {
+
+// Vectors shorter than this cannot give a direction (normals, axes, light directions).
+constexpr double kMinDirectionLength = 1e-12;
+constexpr double kMaxFovDegrees = 180.0;
+
+struct KindInfo {
+  std::string_view name;
+  BlockCategory category;
+};
+constexpr KindInfo kKinds[] = {
+    {"settings", BlockCategory::Settings},
+    {"camera", BlockCategory::Camera},
+    {"material", BlockCategory::Material},
+    {"checker", BlockCategory::Texture},
+    {"stripes", BlockCategory::Texture},
+    {"gradient", BlockCategory::Texture},
+    {"image_texture", BlockCategory::Texture},
+    {"latlong_map", BlockCategory::Texture},
+    {"cube_map", BlockCategory::Texture},
+    {"sphere", BlockCategory::Shape},
+    {"plane", BlockCategory::Shape},
+    {"triangle", BlockCategory::Shape},
+    {"box", BlockCategory::Shape},
+    {"cylinder", BlockCategory::Shape},
+    {"cone", BlockCategory::Shape},
+    {"disc", BlockCategory::Shape},
+    {"mesh", BlockCategory::Shape},
+    {"quad", BlockCategory::Shape},
+    {"point_light", BlockCategory::Light},
+    {"spot_light", BlockCategory::Light},
+    {"directional_light", BlockCategory::Light},
+    {"area_light", BlockCategory::Light},
+    {"group", BlockCategory::Group},
+};
+
+// The property names each block kind accepts (for unknown-name checks and suggestions).
+const std::vector<std::string_view> kSettingsNames = {"width",         "height",      "samples",
+                                                      "max_depth",     "background",  "ambient_light",
+                                                      "seed",          "sampler",     "environment",
+                                                      "environment_ambient"};
+const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
+                                                    "fov",        "fov_axis",   "handedness", "view_width",
+                                                    "aperture",   "focus_distance"};
+const std::vector<std::string_view> kImageTextureNames = {"file", "mapping", "color_space", "filter"};
+const std::vector<std::string_view> kLatLongNames = {"file", "color_space", "filter"};
+const std::vector<std::string_view> kCubeMapNames = {"directory", "color_space", "filter"};
+const std::vector<std::string_view> kCheckerNames = {"color1", "color2", "scale"};
+const std::vector<std::string_view> kPatternTextureNames = {"color1", "color2", "scale", "axis"};
+const std::vector<std::string_view> kMaterialNames = {"color",    "texture",  "emission",  "ambient",
+                                                      "diffuse",  "specular", "shininess", "reflect",
+                                                      "transmit", "ior",      "fresnel",   "roughness",
+                                                      "ior_relative", "bump", "bump_scale", "normal_map"};
+const std::vector<std::string_view> kSphereNames = {"material", "center", "radius"};
+const std::vector<std::string_view> kPlaneNames = {"material", "normal", "offset"};
+const std::vector<std::string_view> kTriangleNames = {"material",      "v0",           "v1",
+                                                      "v2",            "n0",           "n1",
+                                                      "n2",            "vertex_colors", "vertex_diffuse",
+                                                      "vertex_specular", "vertex_shininess"};
+const std::vector<std::string_view> kBoxNames = {"material", "min", "max"};
+const std::vector<std::string_view> kCylinderNames = {"material", "from", "to", "radius", "capped"};
+const std::vector<std::string_view> kConeNames = {"material", "from", "to", "radius_from", "radius_to", "capped"};
+const std::vector<std::string_view> kDiscNames = {"material", "center", "normal", "radius", "inner_radius"};
+const std::vector<std::string_view> kMeshNames = {"material",       "file",           "smooth",
+                                                  "vertices",       "faces",          "normals",
+                                                  "vertex_colors",  "vertex_diffuse", "vertex_specular",
+                                                  "vertex_shininess"};
+const std::vector<std::string_view> kQuadNames = {"material", "corner", "edge_u", "edge_v"};
+const std::vector<std::string_view> kPointLightNames = {"position",          "color",  "intensity", "attenuation",
+                                                        "attenuation_clamp", "shadows"};
+const std::vector<std::string_view> kSpotLightNames = {"position",  "point_at",    "radius",            "falloff", "color",
+                                                       "intensity", "attenuation", "attenuation_clamp", "shadows"};
+const std::vector<std::string_view> kDirectionalLightNames = {"direction", "color", "intensity", "shadows"};
+const std::vector<std::string_view> kAreaLightNames = {"position", "u",         "v",           "samples", "disc",
+                                                       "color",    "intensity", "attenuation", "shadows"};
+
+// The names a shape or light kind takes, or null for other kinds.
+const std::vector<std::string_view>* names_of(std::string_view kind) {
+  static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
+      {"sphere", &kSphereNames},           {"plane", &kPlaneNames},          {"triangle", &kTriangleNames},
+      {"box", &kBoxNames},                 {"cylinder", &kCylinderNames},    {"cone", &kConeNames},
+      {"disc", &kDiscNames},               {"mesh", &kMeshNames},            {"point_light", &kPointLightNames},
+      {"spot_light", &kSpotLightNames},    {"area_light", &kAreaLightNames},
+      {"directional_light", &kDirectionalLightNames}};
+  for (const auto& [name, names] : kTable)
+    if (name == kind) return names;
+  return nullptr;
+}
+
+SourceRef loc_of(ParamSet& ps, std::string_view name) {
+  const Param* p = ps.find(name);
+  return p ? p->loc : ps.loc();
+}
+
+// Range checks: "property 'radius' of sphere must be > 0, got -1".
+void require(ParamSet& ps, std::string_view name, bool ok, std::string_view what, double got) {
+  if (ok) return;
+  throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be {}, got {}", name, ps.kind(), what, got));
+}
+double positive(ParamSet& ps, std::string_view name, double v) {
+  require(ps, name, v > 0, "> 0", v);
+  return v;
+}
+double non_negative(ParamSet& ps, std::string_view name, double v) {
+  require(ps, name, v >= 0, ">= 0", v);
+  return v;
+}
+Vec3 direction(ParamSet& ps, std::string_view name, Vec3 v) {
+  if (glm::length(v) < kMinDirectionLength)
+    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be a non-zero vector", name, ps.kind()));
+  return v;
+}
+void non_negative_color(ParamSet& ps, std::string_view name, const Color& c) {
+  if (c.r < 0 || c.g < 0 || c.b < 0)
+    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must not be negative", name, ps.kind()));
+}
+
+// Texture axis: 0/1/2 or "x"/"y"/"z".
+int axis_of(ParamSet& ps) {
+  const ParamValue* v = ps.value("axis");
+  if (!v) return 0;
+  if (auto* s = std::get_if<std::string>(v)) {
+    if (*s == "x") return 0;
+    if (*s == "y") return 1;
+    if (*s == "z") return 2;
+    throw SceneError(loc_of(ps, "axis"),
+                     fmt::format("property 'axis' of {} must be \"x\", \"y\" or \"z\", got \"{}\"", ps.kind(), *s));
+  }
+  int a = ps.integer("axis", 0);
+  require(ps, "axis", a >= 0 && a <= 2, "0, 1 or 2", a);
+  return a;
+}
+
+// Paths in a scene are relative to the file that names them.
+std::string resolve_path(const std::string& path, SourceRef where) {
+  namespace fs = std::filesystem;
+  fs::path p(path);
+  if (p.is_absolute() || where.file == nullptr || where.file[0] == '\0') return path;
+  return (fs::path(where.file).parent_path() / p).lexically_normal().string();
+}
+
+// The same file however a scene spells it ("a/../m.obj", "./m.obj", through a symlink).
+std::string cache_key(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::path(path), ec);
+  if (ec) p = fs::absolute(fs::path(path), ec).lexically_normal();
+  return ec ? path : p.string();
+}
+
+bool is_obj_name(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj";
+}
+
+// The reference in property `name` (a shape's material, a material's texture), or null when
+// it is absent: "property 'material' of sphere expects a material, got a number".
+template <typename Ref>
+const Ref* reference(ParamSet& ps, std::string_view name, std::string_view block, std::string_view what) {
+  const ParamValue* v = ps.value(name);
+  if (!v) return nullptr;
+  auto* ref = std::get_if<Ref>(v);
+  if (!ref)
+    ps.fail(*ps.find(name),
+            fmt::format("property '{}' of {} expects a {}, got a {}", name, block, what, param_type_name(*v)));
+  return ref;
+}
+
+// Appends a scene node for the shape, light or group at `index`; returns its id.
+NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef loc) {
+  scene.nodes.push_back(Node{kind, static_cast<uint32_t>(index), loc});
+  return static_cast<NodeId>(scene.nodes.size() - 1);
+}
+
+// The six face files of a cube-map directory, in the order +x, -x, +y, -y, +z, -z: named
+// posx/negx/posy/negy/posz/negz (the OpenGL convention) or right/left/up/down/front/back (MIT
+// 6.837's cubeMap directories), each .png, .bmp, .jpg, .jpeg, .tga or .hdr.
+std::vector<std::string> cube_map_faces(const std::string& dir, const std::string& shown, SourceRef where) {
+  namespace fs = std::filesystem;
+  static const char* kSchemes[2][6] = {{"posx", "negx", "posy", "negy", "posz", "negz"},
+                                       {"right", "left", "up", "down", "front", "back"}};
+  static const char* kExtensions[] = {".png", ".bmp", ".jpg", ".jpeg", ".tga", ".hdr"};
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw SceneError(where, fmt::format("cube_map directory '{}' does not exist", shown));
+  for (const auto& scheme : kSchemes) {
+    std::vector<std::string> faces;
+    for (const char* name : scheme) {
+      for (const char* ext : kExtensions) {
+        fs::path p = fs::path(dir) / (std::string(name) + ext);
+        if (fs::is_regular_file(p, ec)) {
+          faces.push_back(p.string());
+          break;
+        }
+      }
+    }
+    if (faces.size() == 6) return faces;
+    if (!faces.empty())
+      throw SceneError(where, fmt::format("cube_map directory '{}' has {} of the six faces {}, {}, {}, {}, {}, {}", shown,
+                                          faces.size(), scheme[0], scheme[1], scheme[2], scheme[3], scheme[4], scheme[5]));
+  }
+  throw SceneError(where, fmt::format("cube_map directory '{}' has no faces: expected posx, negx, posy, negy, posz, "
+                                      "negz or right, left, up, down, front, back (.png, .bmp, .jpg, .tga or .hdr)",
+                                      shown));
+}
+
+}  // namespace
+
+BlockCategory SceneBuilder::category(std::string_view kind) {
+  for (const KindInfo& k : kKinds)
+    if (k.name == kind) return k.category;
+  return BlockCategory::Unknown;
+}
+
+std::vector<std::string_view> SceneBuilder::block_kinds() {
+  std::vector<std::string_view> out;
+  for (const KindInfo& k : kKinds) out.push_back(k.name);
+  return out;
+}
+
+void SceneBuilder::settings(ParamSet& ps) {
+  Settings& s = scene_.settings;
+  s.width = ps.integer("width", s.width);
+  require(ps, "width", s.width >= 1, ">= 1", s.width);
+  s.height = ps.integer("height", s.height);
+  require(ps, "height", s.height >= 1, ">= 1", s.height);
+  s.samples = ps.integer("samples", s.samples);
+  require(ps, "samples", s.samples >= 1 && s.samples <= kMaxSamplesPerPixel,
+          fmt::format("from 1 to {}", kMaxSamplesPerPixel), s.samples);
+  s.max_depth = ps.integer("max_depth", s.max_depth);
+  require(ps, "max_depth", s.max_depth >= 0, ">= 0", s.max_depth);
+  s.background = ps.color("background", s.background);
+  s.ambient_light = ps.color("ambient_light", s.ambient_light);
+  non_negative_color(ps, "ambient_light", s.ambient_light);
+  if (const TextureRef* env = reference<TextureRef>(ps, "environment", "settings", "texture")) s.environment = env->id;
+  s.environment_ambient = ps.boolean("environment_ambient", s.environment_ambient);
+  if (s.environment_ambient && s.environment == kNoId)
+    throw SceneError(loc_of(ps, "environment_ambient"), "environment_ambient needs an 'environment' texture");
+  if (ps.has("seed")) {
+    double seed = ps.number("seed", 0);
+    constexpr double kMaxExactWhole = 9007199254740992.0;  // 2^53: larger doubles skip integers
+    require(ps, "seed", seed >= 0 && seed <= kMaxExactWhole && std::floor(seed) == seed,
+            "a whole number from 0 to 2^53", seed);
+    s.seed = static_cast<uint64_t>(seed);
+  }
+  if (ps.has("sampler")) {
+    std::string name = ps.string("sampler", "sobol");
+    if (!parse_sampler(name, s.sampler))
+      throw SceneError(loc_of(ps, "sampler"),
+                       fmt::format("unknown sampler '{}' (expected random, stratified or sobol)", name));
+  }
+  s.loc = ps.loc();
+  ps.check_unused(kSettingsNames);
+}
+
+void SceneBuilder::camera(ParamSet& ps) {
+  CameraDesc& c = scene_.camera;
+  std::string proj = ps.string("projection", c.projection == Projection::Perspective ? "perspective" : "orthographic");
+  if (proj == "perspective")
+    c.projection = Projection::Perspective;
+  else if (proj == "orthographic")
+    c.projection = Projection::Orthographic;
+  else
+    throw SceneError(
+        loc_of(ps, "projection"),
+        fmt::format("property 'projection' of camera must be \"perspective\" or \"orthographic\", got \"{}\"", proj));
+  c.position = ps.vec3("position", c.position);
+  c.look_at = ps.vec3("look_at", c.look_at);
+  c.up = direction(ps, "up", ps.vec3("up", c.up));
+  c.fov = ps.number("fov", c.fov);
+  std::string axis = ps.string("fov_axis", c.fov_vertical ? "vertical" : "horizontal");
+  if (axis != "horizontal" && axis != "vertical")
+    throw SceneError(loc_of(ps, "fov_axis"),
+                     fmt::format("property 'fov_axis' of camera must be \"horizontal\" or \"vertical\", got \"{}\"", axis));
+  c.fov_vertical = axis == "vertical";
+  std::string hand = ps.string("handedness", c.right_handed ? "right" : "left");
+  if (hand != "left" && hand != "right")
+    throw SceneError(loc_of(ps, "handedness"),
+                     fmt::format("property 'handedness' of camera must be \"left\" or \"right\", got \"{}\"", hand));
+  c.right_handed = hand == "right";
+  require(ps, "fov", c.fov > 0 && c.fov < kMaxFovDegrees, "between 0 and 180 (exclusive)", c.fov);
+  c.view_width = positive(ps, "view_width", ps.number("view_width", c.view_width));
+  c.aperture = non_negative(ps, "aperture", ps.number("aperture", c.aperture));
+  c.focus_distance = non_negative(ps, "focus_distance", ps.number("focus_distance", c.focus_distance));
+  if (glm::length(c.look_at - c.position) < kMinDirectionLength)
+    ps.fail_block("camera position and look_at must differ");
+  if (glm::length(glm::cross(glm::normalize(c.look_at - c.position), glm::normalize(c.up))) < kMinDirectionLength)
+    ps.fail_block("camera up must not be parallel to the viewing direction");
+  c.loc = ps.loc();
+  scene_.has_camera = true;
+  ps.check_unused(kCameraNames);
+}
+
+TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4& transform) {
+  TextureDesc t;
+  t.transform = transform;
+  t.loc = ps.loc();
+  auto image_options = [&] {
+    std::string space = ps.string("color_space", "srgb");
+    if (space != "srgb" && space != "linear")
+      throw SceneError(loc_of(ps, "color_space"),
+                       fmt::format("property 'color_space' of {} must be \"srgb\" or \"linear\", got \"{}\"", kind, space));
+    t.linear = space == "linear";
+    std::string filter = ps.string("filter", "bilinear");
+    if (filter != "bilinear" && filter != "nearest")
+      throw SceneError(loc_of(ps, "filter"),
+                       fmt::format("property 'filter' of {} must be \"bilinear\" or \"nearest\", got \"{}\"", kind, filter));
+    t.filter = filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
+  };
+  if (kind == "latlong_map") {
+    t.kind = TextureKind::LatLong;
+    std::string file = ps.require_string("file");
+    t.image_path = resolve_path(file, loc_of(ps, "file"));
+    check_readable(t.image_path, file, "image", loc_of(ps, "file"));
+    image_options();
+    ps.check_unused(kLatLongNames);
+  } else if (kind == "cube_map") {
+    t.kind = TextureKind::CubeMap;
+    std::string shown = ps.require_string("directory");
+    std::string dir = resolve_path(shown, loc_of(ps, "directory"));
+    // The folder itself is checked against the read rule (its faces lie inside it).
+    if (!read_policy_.allows(dir)) throw SceneError(loc_of(ps, "directory"), read_policy_.refusal(shown, dir));
+    t.face_paths = cube_map_faces(dir, shown, loc_of(ps, "directory"));
+    for (const std::string& face : t.face_paths) check_readable(face, face, "cube_map face", loc_of(ps, "directory"));
+    image_options();
+    ps.check_unused(kCubeMapNames);
+  } else if (kind == "image_texture") {
+    t.kind = TextureKind::Image;
+    std::string file = ps.require_string("file");
+    t.image_path = resolve_path(file, loc_of(ps, "file"));
+    check_readable(t.image_path, file, "image", loc_of(ps, "file"));
+    image_options();
+    t.mapping = ps.string("mapping", "uv");
+    if (t.mapping != "uv" && t.mapping != "planar" && t.mapping != "spherical")
+      throw SceneError(
+          loc_of(ps, "mapping"),
+          fmt::format("property 'mapping' of image_texture must be \"uv\", \"planar\" or \"spherical\", got \"{}\"",
+                      t.mapping));
+    ps.check_unused(kImageTextureNames);
+  } else {
+    if (kind == "checker")
+      t.kind = TextureKind::Checker;
+    else if (kind == "stripes")
+      t.kind = TextureKind::Stripes;
+    else if (kind == "gradient")
+      t.kind = TextureKind::Gradient;
+    else
+      ps.fail_block(fmt::format("'{}' is not a texture", kind));
+    t.color1 = ps.color("color1", t.color1);
+    t.color2 = ps.color("color2", t.color2);
+    t.scale = positive(ps, "scale", ps.number("scale", t.scale));
+    if (kind == "checker") {
+      ps.check_unused(kCheckerNames);
+    } else {
+      t.axis = axis_of(ps);
+      ps.check_unused(kPatternTextureNames);
+    }
+  }
+  scene_.textures.push_back(std::move(t));
+  return static_cast<TextureId>(scene_.textures.size() - 1);
+}
+
+MaterialId SceneBuilder::material(ParamSet& ps) {
+  MaterialDesc m;
+  m.loc = ps.loc();
+  if (const ParamValue* c = ps.value("color")) {
+    if (auto* t = std::get_if<TextureRef>(c))
+      m.texture = t->id;
+    else
+      m.color = ps.color("color", m.color);
+  }
+  if (const TextureRef* ref = reference<TextureRef>(ps, "texture", "material", "texture")) m.texture = ref->id;
+  // A channel holding a texture takes its value from the texture at each point.
+  auto channel_texture = [&](std::string_view name, TextureId& id) {
+    const ParamValue* v = ps.value(name);
+    if (auto* t = v ? std::get_if<TextureRef>(v) : nullptr) {
+      id = t->id;
+      return true;
+    }
+    return false;
+  };
+  if (!channel_texture("emission", m.emission_texture)) {
+    m.emission = ps.color("emission", m.emission);
+    non_negative_color(ps, "emission", m.emission);
+  }
+  m.ambient = non_negative(ps, "ambient", ps.number("ambient", m.ambient));
+  if (channel_texture("diffuse", m.diffuse_texture))
+    m.diffuse = 1.0;
+  else
+    m.diffuse = non_negative(ps, "diffuse", ps.number("diffuse", m.diffuse));
+  if (channel_texture("specular", m.specular_texture)) {
+    m.specular = 1.0;
+  } else if (const ParamValue* sv = ps.value("specular")) {
+    if (const double* d = std::get_if<double>(sv)) {
+      m.specular = non_negative(ps, "specular", *d);
+    } else {
+      // A color tints the highlight (the courses' `specularColor`): weight 1, that color.
+      m.specular = 1.0;
+      m.specular_color = ps.color("specular", m.specular_color);
+      non_negative_color(ps, "specular", m.specular_color);
+    }
+  }
+  m.shininess = non_negative(ps, "shininess", ps.number("shininess", m.shininess));
+  if (!channel_texture("reflect", m.reflect_texture)) {
+    m.reflect = ps.color("reflect", m.reflect);
+    non_negative_color(ps, "reflect", m.reflect);
+  }
+  if (!channel_texture("transmit", m.transmit_texture)) {
+    m.transmit = ps.color("transmit", m.transmit);
+    non_negative_color(ps, "transmit", m.transmit);
+  } else {
+    // Where the texture is black the surface is opaque, but shadow rays must still test it.
+    m.transmit = Color(1.0);
+  }
+  if (const TextureRef* b = reference<TextureRef>(ps, "bump", "material", "texture")) m.bump = b->id;
+  m.bump_scale = ps.number("bump_scale", m.bump_scale);
+  if (!std::isfinite(m.bump_scale)) require(ps, "bump_scale", false, "finite", m.bump_scale);
+  if (const TextureRef* n = reference<TextureRef>(ps, "normal_map", "material", "texture")) m.normal_map = n->id;
+  if (m.bump != kNoId && m.normal_map != kNoId) ps.fail_block("material takes 'bump' or 'normal_map', not both");
+  m.ior = positive(ps, "ior", ps.number("ior", m.ior));
+  m.ior_relative = ps.boolean("ior_relative", m.ior_relative);
+  m.fresnel = ps.boolean("fresnel", m.fresnel);
+  m.roughness = non_negative(ps, "roughness", ps.number("roughness", m.roughness));
+  ps.check_unused(kMaterialNames);
+  scene_.materials.push_back(std::move(m));
+  return static_cast<MaterialId>(scene_.materials.size() - 1);
+}
+
+namespace {
+
+uint32_t mesh_index(ParamSet& ps, double v, std::size_t vertex_count) {
+  if (std::floor(v) != v || v < 0 || v >= static_cast<double>(vertex_count))
+    throw SceneError(loc_of(ps, "faces"),
+                     fmt::format("mesh face index {} out of range ({} vertices)", v, vertex_count));
+  return static_cast<uint32_t>(v);
+}
+
+// `vertices`/`faces`/`normals` are lists of vectors; an empty list arrives as numbers.
+std::vector<Vec3> vector_list(ParamSet& ps, std::string_view name) {
+  const ParamValue* v = ps.value(name);
+  if (!v) return {};
+  if (auto* l = std::get_if<std::vector<Vec3>>(v)) return *l;
+  if (auto* l = std::get_if<std::vector<double>>(v); l && l->empty()) return {};
+  throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} expects a list of vectors, got a {}", name,
+                                                 ps.kind(), param_type_name(*v)));
+}
+
+// Per-vertex material lists of a triangle or mesh (`vertex_colors`, `vertex_diffuse`,
+// `vertex_specular`, `vertex_shininess`), each absent or one entry per vertex; false when the
+// block has none of them.
+bool vertex_material(ParamSet& ps, std::size_t vertex_count, MeshData& mesh) {
+  bool any = false;
+  auto count_check = [&](std::string_view name, std::size_t n) {
+    if (n != vertex_count)
+      throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} has {} entries for {} vertices", name,
+                                                     ps.kind(), n, vertex_count));
+    any = true;
+  };
+  if (ps.has("vertex_colors")) {
+    std::vector<Vec3> colors = vector_list(ps, "vertex_colors");
+    count_check("vertex_colors", colors.size());
+    for (const Vec3& c : colors) {
+      if (c.x < 0 || c.y < 0 || c.z < 0)
+        throw SceneError(loc_of(ps, "vertex_colors"), "property 'vertex_colors' must not be negative");
+      mesh.colors.emplace_back(c);
+    }
+  }
+  for (auto [name, out] : {std::pair<std::string_view, std::vector<float>*>{"vertex_diffuse", &mesh.diffuse},
+                           {"vertex_specular", &mesh.specular},
+                           {"vertex_shininess", &mesh.shininess}}) {
+    if (!ps.has(name)) continue;
+    const ParamValue* v = ps.value(name);
+    auto* list = std::get_if<std::vector<double>>(v);
+    if (!list)
+      throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} expects a list of numbers, got a {}", name,
+                                                     ps.kind(), param_type_name(*v)));
+    count_check(name, list->size());
+    for (double x : *list) {
+      require(ps, name, x >= 0 && std::isfinite(x), ">= 0", x);
+      out->push_back(static_cast<float>(x));
+    }
+  }
+  return any;
+}
+
+// Zero area by the renderer's own test (the angle between the edges below
+// tol::kTriangleDeterminant): such triangles are never hit.
+bool degenerate_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  Vec3 e1 = b - a, e2 = c - a;
+  Vec3 n = glm::cross(e1, e2);
+  double k = tol::kTriangleDeterminant;
+  return !(glm::dot(n, n) > k * k * glm::dot(e1, e1) * glm::dot(e2, e2));
+}
+
+// One warning per mesh: how many faces are skipped and how many vertex normals cannot be
+// used (zero length or NaN: the face normal shades there instead).
+void warn_degenerate(const MeshData& mesh, SourceRef where, std::vector<Warning>& warnings) {
+  std::size_t faces = mesh.indices.size() / 3, skipped = 0, first = 0;
+  for (std::size_t f = 0; f < faces; ++f) {
+    const uint32_t* i = &mesh.indices[f * 3];
+    if (i[0] >= mesh.positions.size() || i[1] >= mesh.positions.size() || i[2] >= mesh.positions.size()) continue;
+    if (degenerate_triangle(Vec3(mesh.positions[i[0]]), Vec3(mesh.positions[i[1]]), Vec3(mesh.positions[i[2]])) &&
+        skipped++ == 0)
+      first = f;
+  }
+  if (skipped > 0)
+    warnings.push_back({where, fmt::format("mesh: {} of {} faces have zero area (collinear or repeated vertices; "
+                                           "first: face {}): they are skipped",
+                                           skipped, faces, first)});
+  std::size_t bad_normals = 0;
+  for (const glm::vec3& n : mesh.normals) {
+    float len2 = glm::dot(n, n);
+    if (!(len2 > 0.0f) || !std::isfinite(len2)) ++bad_normals;
+  }
+  if (bad_normals > 0)
+    warnings.push_back({where, fmt::format("mesh: {} of {} vertex normals are zero or not finite: the face normal "
+                                           "is used there",
+                                           bad_normals, mesh.normals.size())});
+}
+
+}  // namespace
+
+NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
+  ShapeDesc s;
+  s.loc = ps.loc();
+  ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
+  if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) s.material = ref->id;
+  if (kind == "sphere") {
+    Sphere g;
+    g.center = ps.vec3("center", g.center);
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    s.geometry = g;
+    ps.check_unused(kSphereNames);
+  } else if (kind == "plane") {
+    Plane g;
+    g.normal = glm::normalize(direction(ps, "normal", ps.require_vec3("normal")));
+    g.offset = ps.number("offset", g.offset);
+    s.geometry = g;
+    ps.check_unused(kPlaneNames);
+  } else if (kind == "triangle") {
+    Triangle g;
+    g.v0 = ps.require_vec3("v0");
+    g.v1 = ps.require_vec3("v1");
+    g.v2 = ps.require_vec3("v2");
+    int normals = ps.has("n0") + ps.has("n1") + ps.has("n2");
+    if (normals != 0 && normals != 3) ps.fail_block("triangle needs all of n0, n1, n2 or none of them");
+    if (normals == 3) {
+      g.has_normals = true;
+      g.n0 = ps.vec3("n0", Vec3(0.0));
+      g.n1 = ps.vec3("n1", Vec3(0.0));
+      g.n2 = ps.vec3("n2", Vec3(0.0));
+    }
+    auto mesh = std::make_shared<MeshData>();
+    if (vertex_material(ps, 3, *mesh)) {
+      // A triangle whose vertices carry material values is traced as a one-triangle mesh,
+      // which knows how to interpolate them.
+      for (const Vec3& v : {g.v0, g.v1, g.v2}) mesh->positions.emplace_back(v);
+      if (g.has_normals)
+        for (const Vec3& n : {g.n0, g.n1, g.n2}) mesh->normals.emplace_back(glm::normalize(n));
+      mesh->indices = {0, 1, 2};
+      scene_.meshes.push_back(std::move(mesh));
+      s.geometry = MeshRef{static_cast<MeshId>(scene_.meshes.size() - 1), g.has_normals};
+    } else {
+      if (degenerate_triangle(g.v0, g.v1, g.v2))
+        scene_.warnings.push_back({ps.loc(), "triangle has zero area (collinear or repeated vertices): it is skipped"});
+      s.geometry = g;
+    }
+    ps.check_unused(kTriangleNames);
+  } else if (kind == "quad") {
+    Quad g;
+    g.corner = ps.vec3("corner", g.corner);
+    g.edge_u = direction(ps, "edge_u", ps.vec3("edge_u", g.edge_u));
+    g.edge_v = direction(ps, "edge_v", ps.vec3("edge_v", g.edge_v));
+    if (glm::length(glm::cross(glm::normalize(g.edge_u), glm::normalize(g.edge_v))) < kMinDirectionLength)
+      throw SceneError(loc_of(ps, "edge_v"), "quad edge_u and edge_v must not be parallel");
+    s.geometry = g;
+    ps.check_unused(kQuadNames);
+  } else if (kind == "box") {
+    Box g;
+    g.min = ps.require_vec3("min");
+    g.max = ps.require_vec3("max");
+    if (g.min.x > g.max.x || g.min.y > g.max.y || g.min.z > g.max.z)
+      throw SceneError(loc_of(ps, "max"), "box max must be >= min in every component");
+    s.geometry = g;
+    ps.check_unused(kBoxNames);
+  } else if (kind == "cylinder") {
+    Cylinder g;
+    g.from = ps.require_vec3("from");
+    g.to = ps.require_vec3("to");
+    direction(ps, "to", g.to - g.from);
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    g.capped = ps.boolean("capped", g.capped);
+    s.geometry = g;
+    ps.check_unused(kCylinderNames);
+  } else if (kind == "cone") {
+    Cone g;
+    g.from = ps.require_vec3("from");
+    g.to = ps.require_vec3("to");
+    direction(ps, "to", g.to - g.from);
+    g.radius_from = non_negative(ps, "radius_from", ps.require_number("radius_from"));
+    g.radius_to = non_negative(ps, "radius_to", ps.number("radius_to", g.radius_to));
+    if (g.radius_from == 0 && g.radius_to == 0) ps.fail_block("cone needs a non-zero radius_from or radius_to");
+    g.capped = ps.boolean("capped", g.capped);
+    s.geometry = g;
+    ps.check_unused(kConeNames);
+  } else if (kind == "disc") {
+    Disc g;
+    g.center = ps.vec3("center", g.center);
+    g.normal = glm::normalize(direction(ps, "normal", ps.vec3("normal", g.normal)));
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    g.inner_radius = non_negative(ps, "inner_radius", ps.number("inner_radius", g.inner_radius));
+    require(ps, "inner_radius", g.inner_radius < g.radius, "< radius", g.inner_radius);
+    s.geometry = g;
+    ps.check_unused(kDiscNames);
+  } else if (kind == "mesh") {
+    MeshRef g;
+    g.smooth = ps.boolean("smooth", g.smooth);
+    std::shared_ptr<MeshData> mesh;
+    std::optional<std::pair<std::string, bool>> obj_key;
+    if (ps.has("file")) {
+      if (ps.has("vertices") || ps.has("faces"))
+        ps.fail_block("mesh takes either 'file' or 'vertices' and 'faces', not both");
+      SourceRef where = loc_of(ps, "file");
+      std::string file = ps.string("file", "");
+      std::string path = resolve_path(file, where);
+      check_readable(path, file, "mesh file", where);
+      obj_key = std::make_pair(cache_key(path), g.smooth);
+      // Errors quote lines of a malformed OBJ, so no other kind of file is read as one
+      // (`file = "/etc/shadow"` must not show its lines). Checked after links are resolved.
+      if (!is_obj_name(obj_key->first))
+        throw SceneError(where, fmt::format("cannot read mesh file '{}': mesh files must be Wavefront OBJ files named "
+                                            "*.obj",
+                                            file));
+      if (auto it = obj_meshes_.find(*obj_key); it != obj_meshes_.end()) {
+        g.mesh = it->second;  // already loaded (and counted against the triangle limit): share it
+      } else {
+        ObjLimits limits;
+        limits.max_triangles = limits_.max_mesh_triangles - std::min(mesh_triangles_, limits_.max_mesh_triangles);
+        limits.max_memory = limits_.max_memory;
+        mesh = load_obj(path, file, g.smooth, where, limits);
+      }
+      for (std::string_view name : {"vertex_colors", "vertex_diffuse", "vertex_specular", "vertex_shininess"})
+        if (ps.has(name))
+          throw SceneError(loc_of(ps, name), fmt::format("property '{}' of mesh needs inline 'vertices' (OBJ files "
+                                                         "carry their own vertex colors: v x y z r g b)", name));
+    } else {
+      if (!ps.has("vertices")) ps.fail_block("mesh needs property 'file' or 'vertices' and 'faces'");
+      if (!ps.has("faces")) ps.fail_block("mesh needs property 'faces'");
+      std::vector<Vec3> vertices = vector_list(ps, "vertices");
+      std::vector<Vec3> faces = vector_list(ps, "faces");
+      std::vector<Vec3> normals = vector_list(ps, "normals");
+      if (faces.empty()) throw SceneError(loc_of(ps, "faces"), "mesh needs at least one face");
+      if (!normals.empty() && normals.size() != vertices.size())
+        throw SceneError(loc_of(ps, "normals"),
+                         fmt::format("mesh has {} vertices but {} normals", vertices.size(), normals.size()));
+      mesh = std::make_shared<MeshData>();
+      // Stored as float relative to the centre of the vertices' bounds (MeshData::origin).
+      AABB box;
+      for (const Vec3& v : vertices) box.extend(v);
+      if (box.valid() && box.finite()) mesh->origin = box.centroid();
+      for (const Vec3& v : vertices) mesh->positions.emplace_back(v - mesh->origin);
+      for (const Vec3& n : normals) mesh->normals.emplace_back(glm::normalize(n));
+      for (const Vec3& f : faces)
+        for (int k = 0; k < 3; ++k) mesh->indices.push_back(mesh_index(ps, f[k], vertices.size()));
+      if (normals.empty() && g.smooth) compute_smooth_normals(*mesh);
+      vertex_material(ps, vertices.size(), *mesh);
+    }
+    if (mesh) warn_degenerate(*mesh, ps.loc(), scene_.warnings);
+    if (mesh) {  // newly built or loaded
+      mesh_triangles_ += mesh->indices.size() / 3;
+      if (mesh_triangles_ > limits_.max_mesh_triangles)
+        ps.fail_block(fmt::format("meshes have more than {} triangles in total (raise with --max-mesh-triangles)",
+                                  limits_.max_mesh_triangles));
+      scene_.meshes.push_back(std::move(mesh));
+      g.mesh = static_cast<MeshId>(scene_.meshes.size() - 1);
+      if (obj_key) obj_meshes_.emplace(std::move(*obj_key), g.mesh);
+    }
+    s.geometry = g;
+    ps.check_unused(kMeshNames);
+  } else {
+    ps.fail_block(fmt::format("'{}' is not a shape", kind));
+  }
+  scene_.shapes.push_back(std::move(s));
+  return add_node(scene_, NodeKind::Shape, scene_.shapes.size() - 1, ps.loc());
+}
+
+NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
+  LightDesc l;
+  l.loc = ps.loc();
+  ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
+  l.color = ps.color("color", l.color);
+  non_negative_color(ps, "color", l.color);
+  l.intensity = non_negative(ps, "intensity", ps.number("intensity", l.intensity));
+  l.shadows = ps.boolean("shadows", l.shadows);
+  auto attenuation = [&] {
+    l.attenuation = ps.vec3("attenuation", l.attenuation);
+    const Vec3& a = l.attenuation;
+    if (a.x < 0 || a.y < 0 || a.z < 0 || a.x + a.y + a.z <= 0)
+      throw SceneError(loc_of(ps, "attenuation"),
+                       "property 'attenuation' must have non-negative components, not all zero");
+    l.attenuation_clamp = ps.boolean("attenuation_clamp", l.attenuation_clamp);
+  };
+  if (kind == "point_light") {
+    l.kind = LightKind::Point;
+    l.position = ps.require_vec3("position");
+    attenuation();
+    ps.check_unused(kPointLightNames);
+  } else if (kind == "spot_light") {
+    l.kind = LightKind::Spot;
+    l.position = ps.require_vec3("position");
+    l.point_at = ps.require_vec3("point_at");
+    direction(ps, "point_at", l.point_at - l.position);
+    l.radius = ps.number("radius", l.radius);
+    require(ps, "radius", l.radius > 0 && l.radius < 90, "between 0 and 90 degrees", l.radius);
+    l.falloff = ps.number("falloff", std::max(l.falloff, l.radius));
+    require(ps, "falloff", l.falloff >= l.radius && l.falloff <= 90, ">= radius and <= 90 degrees", l.falloff);
+    attenuation();
+    ps.check_unused(kSpotLightNames);
+  } else if (kind == "directional_light") {
+    l.kind = LightKind::Directional;
+    l.direction = glm::normalize(direction(ps, "direction", ps.require_vec3("direction")));
+    ps.check_unused(kDirectionalLightNames);
+  } else if (kind == "area_light") {
+    l.kind = LightKind::Area;
+    l.position = ps.require_vec3("position");
+    l.u = direction(ps, "u", ps.require_vec3("u"));
+    l.v = direction(ps, "v", ps.require_vec3("v"));
+    l.samples = ps.integer("samples", l.samples);
+    require(ps, "samples", l.samples >= 1, ">= 1", l.samples);
+    if (l.samples > kMaxAreaSamples) {
+      warnings_.push_back(SceneWarning{loc_of(ps, "samples"),
+                                       fmt::format("area_light samples {} is more than {}; {} are used",
+                                                   l.samples, kMaxAreaSamples, kMaxAreaSamples)});
+      l.samples = kMaxAreaSamples;
+    }
+    l.disc = ps.boolean("disc", l.disc);
+    attenuation();
+    ps.check_unused(kAreaLightNames);
+  } else {
+    ps.fail_block(fmt::format("'{}' is not a light", kind));
+  }
+  scene_.lights.push_back(std::move(l));
+  return add_node(scene_, NodeKind::Light, scene_.lights.size() - 1, ps.loc());
+}
+
+NodeId SceneBuilder::group(std::vector<Child> children, SourceRef loc) {
+  scene_.groups.push_back(GroupDesc{std::move(children)});
+  return add_node(scene_, NodeKind::Group, scene_.groups.size() - 1, loc);
+}
+
+void SceneBuilder::place(const Child& instance) { scene_.roots.push_back(instance); }
+
+void SceneBuilder::check_readable(const std::string& path, const std::string& shown, std::string_view what,
+                                  SourceRef where) const {
+  if (!read_policy_.allows(path)) throw SceneError(where, read_policy_.refusal(shown, path));
+  if (std::string kind = non_regular_kind(path); !kind.empty())
+    throw SceneError(where, fmt::format("cannot read {} '{}': it is {}, not a file", what, shown, kind));
+}
+
+}  // namespace rts::render

@@ -1,0 +1,75 @@
+// The narrow interface through which the evaluator builds a scene (pbrt's ParserTarget).
+// Each call takes the block's parameters and location; it validates names and types, fills
+// the SceneDesc, and throws SceneError (located) on anything wrong. Nothing here knows the
+// scene language's syntax.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "render/scene/params.hpp"
+#include "render/scene/resource_limits.hpp"
+#include "render/scene/scene.hpp"
+
+namespace rts::render {
+
+enum class BlockCategory { Settings, Camera, Material, Texture, Shape, Light, Group, Unknown };
+
+struct BuilderLimits {
+  std::size_t max_mesh_triangles = 50'000'000;  // OBJ / inline meshes, in total
+  std::size_t max_memory = 0;                   // bytes the process may hold (0: no limit)
+};
+
+// Something valid but probably not what the scene meant (a clamped value), located.
+struct SceneWarning {
+  SourceRef where;
+  std::string message;
+};
+
+class SceneBuilder {
+ public:
+  explicit SceneBuilder(BuilderLimits limits = {}) : limits_(limits) {}
+
+  // What a block kind name means: "sphere" → Shape, "point_light" → Light, "checker" →
+  // Texture, "material", "group", "camera", "settings"; anything else → Unknown.
+  static BlockCategory category(std::string_view kind);
+  // Every block kind name, for "did you mean" suggestions.
+  static std::vector<std::string_view> block_kinds();
+
+  void settings(ParamSet& params);                            // may be called more than once;
+  void camera(ParamSet& params);                              // later values override
+  TextureId texture(std::string_view kind, ParamSet& params, const Mat4& transform = Mat4(1.0));
+  MaterialId material(ParamSet& params);
+  NodeId shape(std::string_view kind, ParamSet& params);      // not placed yet
+  NodeId light(std::string_view kind, ParamSet& params);      // not placed yet
+  NodeId group(std::vector<Child> children, SourceRef loc);
+  void place(const Child& instance);                          // into the world
+
+  // Files (meshes, image textures) outside the policy's folders are refused (SceneError).
+  void set_read_policy(ReadPolicy policy) { read_policy_ = std::move(policy); }
+  // Warnings since the last call, oldest first.
+  std::vector<SceneWarning> take_warnings() { return std::exchange(warnings_, {}); }
+
+  std::size_t object_count() const { return scene_.shapes.size(); }
+  const SceneDesc& scene() const { return scene_; }
+  SceneDesc finish() { return std::move(scene_); }
+
+ private:
+  // Checks that the scene may read `path` (as the scene wrote it: `shown`) and that it is a
+  // regular file, not a FIFO or device that would block or never end.
+  void check_readable(const std::string& path, const std::string& shown, std::string_view what, SourceRef where) const;
+
+  BuilderLimits limits_;
+  ReadPolicy read_policy_;
+  std::vector<SceneWarning> warnings_;
+  SceneDesc scene_;
+  std::size_t mesh_triangles_ = 0;
+  // OBJ files already loaded, by (absolute resolved path, smooth): every `mesh { file }` naming
+  // the same file shares one MeshId, so the file is read once and one BVH is built for it.
+  std::map<std::pair<std::string, bool>, MeshId> obj_meshes_;
+};
+
+}  // namespace rts::render

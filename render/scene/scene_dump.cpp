@@ -1,0 +1,204 @@
+// SceneDesc::dump: a deterministic text form of the scene for `rts eval` and golden tests.
+// Numbers use fmt's shortest round-trip form with tiny values (floating-point noise from
+// rotations) rounded to 0, so dumps are stable; file names are printed without folders.
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "render/scene/scene.hpp"
+
+namespace rts::render {
+
+namespace {
+
+// |x| below this prints as 0: cos(90°) is 6e-17, not a value anyone wrote.
+constexpr double kDumpZero = 1e-12;
+
+std::string num(double x) {
+  if (std::fabs(x) < kDumpZero) x = 0.0;  // also turns -0 into 0
+  return fmt::format("{}", x);
+}
+std::string vec(const Vec3& v) { return fmt::format("<{}, {}, {}>", num(v.x), num(v.y), num(v.z)); }
+std::string col(const Color& c) { return fmt::format("rgb({}, {}, {})", num(c.r), num(c.g), num(c.b)); }
+std::string id(uint32_t i) { return i == kNoId ? std::string("none") : fmt::format("{}", i); }
+std::string base(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+std::string where(const SourceRef& r) {
+  if (r.file == nullptr || r.file[0] == '\0') return "";
+  return fmt::format(" @{}:{}:{}", base(r.file), r.line, r.col);
+}
+std::string yes(bool b) { return b ? "true" : "false"; }
+
+// A transform as "identity" or its 3x4 rows [a b c tx; d e f ty; g h i tz].
+std::string mat(const Mat4& m) {
+  if (m == Mat4(1.0)) return "identity";
+  std::string s = "[";
+  for (int row = 0; row < 3; ++row) {
+    if (row) s += "; ";
+    s += fmt::format("{} {} {} {}", num(m[0][row]), num(m[1][row]), num(m[2][row]), num(m[3][row]));
+  }
+  return s + "]";
+}
+
+const char* texture_kind(TextureKind k) {
+  switch (k) {
+    case TextureKind::Checker:
+      return "checker";
+    case TextureKind::Stripes:
+      return "stripes";
+    case TextureKind::Gradient:
+      return "gradient";
+    case TextureKind::Image:
+      return "image_texture";
+    case TextureKind::LatLong:
+      return "latlong_map";
+    case TextureKind::CubeMap:
+      return "cube_map";
+  }
+  return "?";
+}
+
+std::string shape_text(const ShapeDesc& s) {
+  struct Visitor {
+    std::string operator()(const Sphere& g) {
+      return fmt::format("sphere center {} radius {}", vec(g.center), num(g.radius));
+    }
+    std::string operator()(const Plane& g) {
+      return fmt::format("plane normal {} offset {}", vec(g.normal), num(g.offset));
+    }
+    std::string operator()(const Triangle& g) {
+      std::string s = fmt::format("triangle v0 {} v1 {} v2 {}", vec(g.v0), vec(g.v1), vec(g.v2));
+      if (g.has_normals) s += fmt::format(" n0 {} n1 {} n2 {}", vec(g.n0), vec(g.n1), vec(g.n2));
+      return s;
+    }
+    std::string operator()(const Box& g) { return fmt::format("box min {} max {}", vec(g.min), vec(g.max)); }
+    std::string operator()(const Cylinder& g) {
+      return fmt::format("cylinder from {} to {} radius {} capped {}", vec(g.from), vec(g.to), num(g.radius),
+                         yes(g.capped));
+    }
+    std::string operator()(const Cone& g) {
+      return fmt::format("cone from {} to {} radius_from {} radius_to {} capped {}", vec(g.from), vec(g.to),
+                         num(g.radius_from), num(g.radius_to), yes(g.capped));
+    }
+    std::string operator()(const Disc& g) {
+      return fmt::format("disc center {} normal {} radius {} inner_radius {}", vec(g.center), vec(g.normal),
+                         num(g.radius), num(g.inner_radius));
+    }
+    std::string operator()(const MeshRef& g) { return fmt::format("mesh {} smooth {}", id(g.mesh), yes(g.smooth)); }
+    std::string operator()(const Quad& g) {
+      return fmt::format("quad corner {} edge_u {} edge_v {}", vec(g.corner), vec(g.edge_u), vec(g.edge_v));
+    }
+  };
+  return std::visit(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material));
+}
+
+std::string light_text(const LightDesc& l) {
+  std::string common = fmt::format("color {} intensity {} shadows {}{}", col(l.color), num(l.intensity), yes(l.shadows),
+                                   l.attenuation_clamp ? " attenuation_clamp true" : "");
+  switch (l.kind) {
+    case LightKind::Point:
+      return fmt::format("point_light position {} attenuation {} {}", vec(l.position), vec(l.attenuation), common);
+    case LightKind::Spot:
+      return fmt::format("spot_light position {} point_at {} radius {} falloff {} attenuation {} {}", vec(l.position),
+                         vec(l.point_at), num(l.radius), num(l.falloff), vec(l.attenuation), common);
+    case LightKind::Directional:
+      return fmt::format("directional_light direction {} {}", vec(l.direction), common);
+    case LightKind::Area:
+      return fmt::format("area_light position {} u {} v {} samples {} disc {} attenuation {} {}", vec(l.position),
+                         vec(l.u), vec(l.v), l.samples, yes(l.disc), vec(l.attenuation), common);
+  }
+  return "?";
+}
+
+}  // namespace
+
+void SceneDesc::dump(std::ostream& out) const {
+  const Settings& s = settings;
+  out << fmt::format("settings width {} height {} samples {} max_depth {} background {} ambient_light {} seed {}",
+                     s.width, s.height, s.samples, s.max_depth, col(s.background), col(s.ambient_light), s.seed);
+  if (s.environment != kNoId)
+    out << fmt::format(" environment texture {} environment_ambient {}", s.environment, yes(s.environment_ambient));
+  out << '\n';
+  const CameraDesc& c = camera;
+  out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}{}{}\n",
+                     has_camera ? "" : " (default)",
+                     c.projection == Projection::Perspective ? "perspective" : "orthographic", vec(c.position),
+                     vec(c.look_at), vec(c.up), num(c.fov), num(c.view_width), num(c.aperture), num(c.focus_distance),
+                     c.fov_vertical ? " fov_axis vertical" : "", c.right_handed ? " handedness right" : "");
+  out << fmt::format("textures {}\n", textures.size());
+  for (std::size_t i = 0; i < textures.size(); ++i) {
+    const TextureDesc& t = textures[i];
+    out << fmt::format("  texture {}: {}", i, texture_kind(t.kind));
+    if (t.kind == TextureKind::Image)
+      out << fmt::format(" file {} mapping {}", base(t.image_path), t.mapping);
+    else if (t.kind == TextureKind::LatLong)
+      out << fmt::format(" file {}", base(t.image_path));
+    else if (t.kind == TextureKind::CubeMap)
+      for (const std::string& f : t.face_paths) out << ' ' << base(f);
+    else
+      out << fmt::format(" color1 {} color2 {} scale {} axis {}", col(t.color1), col(t.color2), num(t.scale), t.axis);
+    // Newer options print only when not their defaults, so older dumps stay as they were.
+    if (t.linear) out << " color_space linear";
+    if (t.filter == TextureFilter::Nearest) out << " filter nearest";
+    out << fmt::format(" transform {}{}\n", mat(t.transform), where(t.loc));
+  }
+  out << fmt::format("materials {}\n", materials.size());
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    const MaterialDesc& m = materials[i];
+    out << fmt::format(
+        "  material {}: color {} texture {} emission {} ambient {} diffuse {} specular {} shininess {} reflect {} "
+        "transmit {} ior {}{} fresnel {} roughness {}{}\n",
+        i, col(m.color), id(m.texture), col(m.emission), num(m.ambient), num(m.diffuse),
+        m.specular_color == Color(1.0)
+            ? num(m.specular)
+            : col(Color(m.specular * m.specular_color.r, m.specular * m.specular_color.g, m.specular * m.specular_color.b)),
+        num(m.shininess), col(m.reflect), col(m.transmit), num(m.ior), m.ior_relative ? " (relative)" : "",
+        yes(m.fresnel), num(m.roughness), where(m.loc));
+    const std::pair<const char*, TextureId> maps[] = {
+        {"diffuse", m.diffuse_texture}, {"specular", m.specular_texture}, {"reflect", m.reflect_texture},
+        {"transmit", m.transmit_texture}, {"emission", m.emission_texture}, {"bump", m.bump},
+        {"normal_map", m.normal_map}};
+    std::string extra;
+    for (const auto& [name, tex] : maps)
+      if (tex != kNoId) extra += fmt::format(" {} texture {}", name, tex);
+    if (m.bump != kNoId) extra += fmt::format(" bump_scale {}", num(m.bump_scale));
+    if (!extra.empty()) out << "    maps" << extra << '\n';
+  }
+  out << fmt::format("meshes {}\n", meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const MeshData& m = *meshes[i];
+    out << fmt::format("  mesh {}: vertices {} triangles {} normals {} uvs {} source {}", i, m.positions.size(),
+                       m.indices.size() / 3, m.normals.size(), m.uvs.size(),
+                       m.source.empty() ? "inline" : base(m.source));
+    if (m.has_vertex_material())
+      out << fmt::format(" vertex colors {} diffuse {} specular {} shininess {}", m.colors.size(), m.diffuse.size(),
+                         m.specular.size(), m.shininess.size());
+    out << '\n';
+  }
+  out << fmt::format("nodes {}\n", nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const Node& n = nodes[i];
+    out << fmt::format("  node {}: ", i);
+    switch (n.kind) {
+      case NodeKind::Shape:
+        out << shape_text(shapes[n.index]);
+        break;
+      case NodeKind::Light:
+        out << light_text(lights[n.index]);
+        break;
+      case NodeKind::Group:
+        out << fmt::format("group children {}", groups[n.index].children.size());
+        break;
+    }
+    out << where(n.loc) << '\n';
+    if (n.kind == NodeKind::Group)
+      for (const Child& ch : groups[n.index].children)
+        out << fmt::format("    child node {} transform {}{}\n", ch.node, mat(ch.transform), where(ch.loc));
+  }
+  out << fmt::format("roots {}\n", roots.size());
+  for (const Child& ch : roots)
+    out << fmt::format("  root node {} transform {}{}\n", ch.node, mat(ch.transform), where(ch.loc));
+}
+
+}  // namespace rts::render

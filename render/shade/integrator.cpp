@@ -1,0 +1,370 @@
+#include "render/shade/integrator.hpp"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "render/shade/shading.hpp"
+#include "render/geometry/tolerances.hpp"
+
+namespace rts::render {
+namespace {
+
+Rgb to_rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
+double max_channel(const Rgb& c) { return std::max({c.x, c.y, c.z}); }
+bool is_black(const Rgb& c) { return !(max_channel(c) > 0.0); }
+// Clamps overflowing radiance to a large finite value (NaN passes through, to be counted).
+Rgb saturate(const Rgb& c) {
+  auto sat = [](double v) { return v > tol::kMaxRadiance ? tol::kMaxRadiance : v; };
+  return Rgb(sat(c.x), sat(c.y), sat(c.z));
+}
+
+// Uniform point in the unit ball from three uniforms (for glossy perturbation).
+Vec3 in_unit_ball(Sampler& s) {
+  double z = 2.0 * s.next() - 1.0;
+  double phi = 2.0 * std::numbers::pi * s.next();
+  double r = std::cbrt(s.next());
+  double xy = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return r * Vec3(xy * std::cos(phi), xy * std::sin(phi), z);
+}
+
+}  // namespace
+
+bool refract(const Vec3& incident, const Vec3& n, double eta, Vec3& refracted) {
+  double cos_i = -glm::dot(incident, n);
+  double sin2_t = eta * eta * std::max(0.0, 1.0 - cos_i * cos_i);
+  if (sin2_t >= 1.0) return false;
+  double cos_t = std::sqrt(1.0 - sin2_t);
+  refracted = glm::normalize(eta * incident + (eta * cos_i - cos_t) * n);
+  return true;
+}
+
+double schlick(double cos_theta, double f0) {
+  double m = std::clamp(1.0 - cos_theta, 0.0, 1.0);
+  double m2 = m * m;
+  return f0 + (1.0 - f0) * m2 * m2 * m;
+}
+
+namespace spec {
+unsigned mask_for(const FeatureSet& f) {
+  unsigned mask = 0;
+  if (f.has(Feature::Reflection) || f.has(Feature::Transmission)) mask |= kSecondary;
+  if (f.has(Feature::Texture)) mask |= kTexture;
+  if (f.has(Feature::Specular)) mask |= kSpecular;
+  if (f.has(Feature::AreaSampling) || f.has(Feature::Glossiness)) mask |= kRandom;
+  if (f.has(Feature::TransmissiveShadows)) mask |= kTransmissiveShadows;
+  return mask;
+}
+}  // namespace spec
+
+namespace {
+// The sampler values direct_light draws for one light: a permutation seed, and a 2D jitter
+// per sample of an area light.
+uint32_t sampler_values(const CompiledLight& l) {
+  return 1 + (l.kind == LightKind::Area ? 2 * static_cast<uint32_t>(l.samples) : 0);
+}
+}  // namespace
+
+Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lights,
+                       const std::vector<MaterialDesc>& materials,
+                       const std::vector<CompiledTexture>& textures, const Settings& settings,
+                       int max_depth, unsigned mask)
+    : world_(world), materials_(materials), textures_(textures),
+      background_(to_rgb(settings.background)), ambient_light_(to_rgb(settings.ambient_light)),
+      max_depth_(max_depth) {
+  // Shadow rays through glass whose `transmit` is a texture need the hit point, which the
+  // specialised one-pass crossing test does not keep: such scenes take the generic path.
+  bool textured_transmit = false;
+  for (std::size_t i = 0; i < world.instance_count(); ++i) {
+    MaterialId id = world.instance(i).material;
+    if (id < materials.size() && materials[id].transmit_texture != kNoId) textured_transmit = true;
+  }
+  bool generic = (mask & spec::kGeneric) != 0 || textured_transmit;
+  uint32_t skipped = 0;
+  for (const CompiledLight& l : lights) {
+    // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
+    if (!generic && l.power == Rgb(0.0)) {
+      skipped += sampler_values(l);
+      continue;
+    }
+    lights_.push_back(l);
+    skip_before_.push_back(skipped);
+    skipped = 0;
+  }
+  skip_after_ = skipped;
+  trace_ = trace_for(generic ? (spec::kGeneric | spec::kAll) : (mask & spec::kAll));
+  if (settings.environment < textures.size()) {
+    environment_ = &textures[settings.environment];
+    environment_ambient_ = settings.environment_ambient;
+  }
+}
+
+Rgb Integrator::background(const Vec3& direction) const {
+  return environment_ ? to_rgb(environment_->eval_direction(direction)) : background_;
+}
+
+Integrator::TraceFn Integrator::trace_for(unsigned mask) {
+  static constexpr auto table = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<TraceFn, sizeof...(I)>{&Integrator::trace_tree<static_cast<unsigned>(I)>...};
+  }(std::make_index_sequence<spec::kAll + 1>{});
+  if (mask & spec::kGeneric) return &Integrator::trace_tree<spec::kGeneric | spec::kAll>;
+  return table[mask & spec::kAll];
+}
+
+const MaterialDesc& Integrator::material(uint32_t instance) const {
+  MaterialId id = world_.instance(instance).material;
+  return id < materials_.size() ? materials_[id] : default_material_;
+}
+
+template <unsigned F>
+Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
+  if ((F & spec::kTexture) && m.texture != kNoId && m.texture < textures_.size()) {
+    TexturePoint p;
+    p.object_point = hit.object_point;
+    p.has_uv = hit.has_uv;
+    if (p.has_uv) p.uv = world_.surface_uv(hit);
+    return to_rgb(textures_[m.texture].eval(p));
+  }
+  return to_rgb(m.color);
+}
+
+Rgb Integrator::trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const {
+  ++counters.camera;
+  Path path{sampler, counters};
+  // One indirect call per camera sample, always to the same target; everything inside is direct.
+  return (this->*trace_)(ray, path);
+}
+
+template <unsigned F>
+Rgb Integrator::trace_tree(const Ray& ray, Path& path) const {
+  // The Whitted tree (a reflected and a refracted ray per transmissive hit) is walked with an
+  // explicit stack, not recursion, so max_depth is limited by time (tol::kMaxDepth), never by
+  // the worker threads' stacks. Popping the reflected ray before the refracted one visits the
+  // nodes in the recursive order, so the sampler hands out the same numbers. The stack is
+  // per thread and reused: no allocation per ray once it has grown.
+  thread_local std::vector<PendingRay> pending;
+  pending.clear();
+  if constexpr (!(F & spec::kSecondary)) {
+    // Nothing reflects or transmits: the tree is the camera ray's hit alone.
+    return shade<F>(PendingRay{ray, Rgb(1.0), 0, MediumStack{}}, path, pending);
+  }
+  pending.push_back(PendingRay{ray, Rgb(1.0), 0, MediumStack{}});
+  Rgb color(0.0);
+  while (!pending.empty()) {
+    PendingRay pr = pending.back();
+    pending.pop_back();
+    color += pr.weight * shade<F>(pr, path, pending);
+  }
+  return color;
+}
+
+FirstHit Integrator::first_hit(const Ray& ray) const {
+  FirstHit out;
+  WorldHit hit;
+  if (!world_.intersect(ray, Interval::positive(), hit)) return out;
+  out.hit = true;
+  out.normal = hit.shading_normal;
+  out.depth = hit.t * glm::length(ray.direction);
+  out.bounded = world_.instance(hit.instance).kind != PrimKind::Plane;
+  std::optional<MaterialDesc> scratch;   // vertex colors are the albedo too
+  out.albedo = albedo(shading_material(material(hit.instance), world_, hit, textures_, scratch), hit);
+  return out;
+}
+
+template <unsigned F>
+Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const {
+  ++path.counters.shadow;
+  Ray ray{origin, ls.direction};
+  double end = std::isinf(ls.distance) ? Interval::kInfinity
+                                        : ls.distance * (1.0 - tol::kShadowEndRelative);
+  if constexpr (!(F & spec::kTransmissiveShadows)) {
+    // Nothing lets light through.
+    return world_.occluded(ray, Interval(0.0, end)) ? Rgb(0.0) : Rgb(1.0);
+  } else if constexpr (!(F & spec::kGeneric)) {
+    // One traversal: stops at the first opaque hit, else collects the glass crossed, which is
+    // multiplied through in order along the ray (the same product as the closest-hit walk).
+    ShadowCrossings crossed;
+    if (world_.shadow_crossings(ray, Interval(0.0, end), crossed)) return Rgb(0.0);
+    for (int i = 1; i < crossed.count; ++i)  // insertion sort: a handful of crossings
+      for (int k = i; k > 0 && crossed.t[k] < crossed.t[k - 1]; --k) {
+        std::swap(crossed.t[k], crossed.t[k - 1]);
+        std::swap(crossed.instance[k], crossed.instance[k - 1]);
+      }
+    Rgb t(1.0);
+    for (int i = 0; i < crossed.count; ++i) {
+      t *= glm::clamp(to_rgb(material(crossed.instance[i]).transmit), 0.0, 1.0);
+      if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
+    }
+    return t;
+  }
+  // Any opaque occluder blocks the light whatever else lies on the segment: test those first
+  // with an early-exit traversal.
+  if (world_.occluded(ray, Interval(0.0, end), /*opaque_only=*/true)) return Rgb(0.0);
+  if (!world_.has_transmissive()) return Rgb(1.0);
+  // Only transmissive surfaces remain: multiply through each one up to the light, restarting
+  // just beyond each surface (offset by its own error bound, like any spawned ray).
+  Rgb t(1.0);
+  for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
+    WorldHit hit;
+    if (!world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true)) return t;
+    std::optional<MaterialDesc> scratch;
+    Rgb kt = to_rgb(shading_material(material(hit.instance), world_, hit, textures_, scratch).transmit);
+    t *= glm::clamp(kt, 0.0, 1.0);
+    if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
+    Vec3 next = offset_ray_origin(hit.point, hit.normal, ls.direction, hit.error);
+    end -= glm::dot(next - ray.origin, ls.direction);
+    ray.origin = next;
+  }
+  return Rgb(0.0);
+}
+
+template <unsigned F>
+Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo,
+                             const Vec3& n, const Vec3& shadow_origin, const Vec3& view,
+                             Path& path) const {
+  Sampler& sampler = path.sampler;
+  Rgb sum(0.0);
+  // Without kRandom no light is an area light and nothing later draws from the sampler: one
+  // sample per light, no permutation seed, no jitter.
+  constexpr bool kRandom = (F & spec::kRandom) != 0;
+  for (std::size_t k = 0; k < lights_.size(); ++k) {
+    const CompiledLight& light = lights_[k];
+    if constexpr (kRandom) sampler.skip(skip_before_[k]);
+    uint32_t perm = kRandom ? sampler.next_bits() : 0;
+    bool area = kRandom && light.kind == LightKind::Area;
+    int samples = kRandom ? light.samples : 1;
+    uint32_t col = 0, row = 0;  // the grid stratum of sample j, stepped without dividing
+    for (int j = 0; j < samples; ++j) {
+      glm::dvec2 on_light(0.5);
+      if (area) {
+        glm::dvec2 jitter = sampler.next2();
+        if (light.strata_side > 0) {
+          on_light = (glm::dvec2(col, row) + jitter) * light.inv_strata;
+          if (++col == light.strata_side) col = 0, ++row;
+        } else {
+          on_light = stratified_2d(static_cast<uint32_t>(j), static_cast<uint32_t>(light.samples), 0,
+                                   jitter, perm);
+        }
+      }
+      LightSample ls = sample_light(light, hit.point, on_light);
+      double n_dot_l = glm::dot(n, ls.direction);
+      if (n_dot_l <= 0.0 || is_black(ls.radiance)) continue;
+      Rgb shade = m.diffuse * n_dot_l * albedo;
+      if ((F & spec::kSpecular) && m.specular > 0.0) {
+        Vec3 r = 2.0 * n_dot_l * n - ls.direction;  // mirror of the light direction
+        double r_dot_v = glm::dot(r, view);
+        if (r_dot_v > 0.0) shade += m.specular * std::pow(r_dot_v, m.shininess) * to_rgb(m.specular_color);
+      }
+      if (is_black(shade)) continue;
+      Rgb transmittance = light.shadows ? shadow_transmittance<F>(shadow_origin, ls, path) : Rgb(1.0);
+      sum += shade * ls.radiance * transmittance;
+    }
+  }
+  if constexpr (kRandom) sampler.skip(skip_after_);
+  return sum;
+}
+
+Integrator::Interface Integrator::interface(const MediumStack& media, uint32_t instance,
+                                             const MaterialDesc& m, bool entering) {
+  // `ior` is absolute (the medium inside the object) unless `ior_relative` says it is the
+  // ratio to the medium around the object (the pre-medium-stack idiom `ior = 1/1.5`).
+  Interface f;
+  if (entering) {
+    f.n_from = media.current();
+    f.n_to = m.ior_relative ? f.n_from * m.ior : m.ior;
+  } else {
+    f.n_to = media.outside(instance);
+    if (!media.find(instance, f.n_from)) f.n_from = m.ior_relative ? f.n_to * m.ior : m.ior;
+  }
+  return f;
+}
+
+template <unsigned F>
+Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const {
+  const Ray& ray = pr.ray;
+  WorldHit hit;
+  if (!world_.intersect(ray, Interval::positive(), hit)) return background(ray.direction);
+  std::optional<MaterialDesc> scratch;
+  const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
+  Vec3 incident = glm::normalize(ray.direction);
+
+  // The geometric normal decides the side: face it towards the incoming ray (leaving a solid
+  // = hitting its back side). The shading normal is then put into the same hemisphere as the
+  // faced geometric normal on its own, so vertex normals that disagree with the triangle's
+  // winding (common in OBJ files and hand-written meshes) shade the same as consistent ones.
+  Vec3 ng = hit.normal, n = hit.shading_normal;
+  bool entering = glm::dot(ng, incident) < 0.0;
+  if (!entering) ng = -ng;
+  if (glm::dot(n, ng) < 0.0) n = -n;
+  n = detail_normal(m, world_, hit, n, textures_);
+  Vec3 view = -incident;
+  Rgb base = albedo<F>(m, hit);
+  Rgb ambient = environment_ambient_ ? ambient_light_ * background(n) : ambient_light_;
+  Rgb color = to_rgb(m.emission) + m.ambient * base * ambient;
+  Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, hit.error);
+  color += direct_light<F>(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, path);
+  color = saturate(color);
+
+  if constexpr (!(F & spec::kSecondary)) return color;  // nothing reflects or transmits
+  if (pr.depth >= max_depth_) return color;
+
+  Rgb kr = to_rgb(m.reflect), kt = to_rgb(m.transmit);
+  double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
+  Vec3 refracted(0.0);
+  Interface f;
+  if (!is_black(kt)) {
+    f = interface(pr.media, hit.instance, m, entering);
+    // With fresnel, the interface splits one budget, max(reflect, transmit) per channel,
+    // between the two directions: a fraction F reflects, 1 - F (filtered by `transmit`)
+    // passes, so kr + kt never exceeds the larger weight (1 for clear glass, whatever
+    // `reflect` adds). Without fresnel the two weights simply add, as documented.
+    if (!refract(incident, n, f.n_from / f.n_to, refracted)) {
+      // Total internal reflection: the transmitted energy is reflected (F = 1).
+      kr = m.fresnel ? glm::max(kr, kt) : kr + kt;
+      kt = Rgb(0.0);
+    } else if (m.fresnel) {
+      double f0 = (f.n_from - f.n_to) / (f.n_from + f.n_to);
+      f0 *= f0;
+      // Schlick uses the angle on the less dense side.
+      double cos_thin = f.n_from <= f.n_to ? cos_i : -glm::dot(refracted, n);
+      double fr = schlick(std::abs(cos_thin), f0);
+      kr = glm::max(kr, kt) * fr;
+      kt *= (1.0 - fr);
+    }
+  } else if (m.fresnel && !is_black(kr)) {
+    // Opaque: `reflect` is the reflectance at normal incidence, rising to 1 at grazing angles.
+    double f = schlick(cos_i, 0.0);
+    kr = kr + (Rgb(1.0) - kr) * f;
+  }
+
+  // Pushed refracted first so the reflected subtree is walked first (see trace()). Weights
+  // saturate so colors above 1 reflected thousands of times stay finite.
+  if (max_channel(kt * pr.weight) > tol::kMinPathWeight) {
+    ++path.counters.refraction;
+    Ray r{offset_ray_origin(hit.point, ng, refracted, hit.error), refracted};
+    pending.push_back(PendingRay{r, saturate(pr.weight * kt), pr.depth + 1, pr.media});
+    // The refracted ray is inside the object now, or has left it.
+    if (entering)
+      pending.back().media.enter(hit.instance, f.n_to);
+    else
+      pending.back().media.leave(hit.instance);
+  }
+  if (max_channel(kr * pr.weight) > tol::kMinPathWeight) {
+    Vec3 mirror = incident + 2.0 * cos_i * n;
+    Vec3 dir = mirror;
+    if (m.roughness > 0.0) {
+      Vec3 glossy = mirror + m.roughness * in_unit_ball(path.sampler);
+      // Perturbed below the surface: fall back to the mirror direction.
+      if (glm::dot(glossy, ng) > 0.0 && glm::length(glossy) > tol::kTinyLength) dir = glm::normalize(glossy);
+    }
+    ++path.counters.reflection;
+    Ray r{offset_ray_origin(hit.point, ng, dir, hit.error), dir};
+    pending.push_back(PendingRay{r, saturate(pr.weight * kr), pr.depth + 1, pr.media});
+  }
+  return color;
+}
+
+}  // namespace rts::render

@@ -1,0 +1,116 @@
+// Whitted ray tracing: Phong direct lighting with (transmission-filtered) shadow rays, then
+// mirror/glossy reflection and Snell refraction (through nested media) up to max_depth,
+// walked with an explicit stack of pending rays.
+#pragma once
+
+#include <vector>
+
+#include "render/scene/features.hpp"
+#include "render/shade/lights.hpp"
+#include "render/shade/medium_stack.hpp"
+#include "render/sample/sampler.hpp"
+#include "render/stats.hpp"
+#include "render/shade/texture.hpp"
+#include "render/accel/world.hpp"
+
+namespace rts::render {
+
+// What the first hit of a pixel's centre ray shows, for the AOV images.
+struct FirstHit {
+  bool hit = false;
+  Vec3 normal{0.0};     // world shading normal, outward
+  double depth = 0.0;   // distance from the camera
+  bool bounded = false; // the surface is bounded geometry (not an infinite plane)
+  Rgb albedo{0.0};
+};
+
+// The shading paths compiled for each set of these features (render/scene/features.hpp): a scene
+// runs through the one instantiated for the features it uses, so an unused feature costs
+// neither a branch nor a loop per ray. kGeneric (--no-specialize) is everything on, every light
+// kept, and shadow rays through glass re-walking the scene with closest-hit steps.
+namespace spec {
+inline constexpr unsigned kSecondary = 1;            // reflection or transmission rays
+inline constexpr unsigned kTexture = 2;              // texture lookups (else constant colors)
+inline constexpr unsigned kSpecular = 4;             // Phong highlights
+inline constexpr unsigned kRandom = 8;               // area-light sampling loops, glossy rays
+inline constexpr unsigned kTransmissiveShadows = 16; // shadow rays multiply through glass
+inline constexpr unsigned kGeneric = 32;             // --no-specialize
+inline constexpr unsigned kAll = 31;
+unsigned mask_for(const FeatureSet& features);
+}  // namespace spec
+
+class Integrator {
+ public:
+  // `mask`: spec::mask_for(the scene's features), or spec::kGeneric | spec::kAll.
+  Integrator(const World& world, const std::vector<CompiledLight>& lights,
+             const std::vector<MaterialDesc>& materials, const std::vector<CompiledTexture>& textures,
+             const Settings& settings, int max_depth, unsigned mask = spec::kGeneric | spec::kAll);
+
+  // Radiance arriving along a camera ray.
+  Rgb trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const;
+  FirstHit first_hit(const Ray& ray) const;
+
+ private:
+  // What one camera sample's path carries along.
+  struct Path {
+    Sampler& sampler;
+    RayCounters& counters;
+  };
+  // A ray still to trace, with the product of the reflect/transmit weights that lead to it
+  // and the media it is inside.
+  struct PendingRay {
+    Ray ray;
+    Rgb weight;
+    int depth;
+    MediumStack media;
+  };
+  // The indices on the two sides of a transmissive surface, from the side the ray comes from.
+  struct Interface {
+    double n_from = 1.0, n_to = 1.0;
+  };
+  using TraceFn = Rgb (Integrator::*)(const Ray&, Path&) const;
+  static TraceFn trace_for(unsigned mask);
+  // The whole Whitted tree of one camera ray, compiled for feature set F.
+  template <unsigned F>
+  Rgb trace_tree(const Ray& ray, Path& path) const;
+  static Interface interface(const MediumStack& media, uint32_t instance, const MaterialDesc& m,
+                             bool entering);
+  // The light a pending ray's hit sends back along it (emission, ambient, direct light); its
+  // reflected and refracted rays go onto `pending`.
+  template <unsigned F>
+  Rgb shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const;
+  template <unsigned F>
+  Rgb direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo, const Vec3& n,
+                   const Vec3& shadow_origin, const Vec3& view, Path& path) const;
+  template <unsigned F>
+  Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const;
+  const MaterialDesc& material(uint32_t instance) const;
+  template <unsigned F = spec::kAll>
+  Rgb albedo(const MaterialDesc& m, const WorldHit& hit) const;
+  // What a ray that leaves the scene sees: the environment map, else the background color.
+  Rgb background(const Vec3& direction) const;
+
+  const World& world_;
+  // The lights shading visits: all of them (generic), or those that send light, each with the
+  // sampler values the left-out lights before it would have drawn (so images stay the same).
+  std::vector<CompiledLight> lights_;
+  std::vector<uint32_t> skip_before_;
+  uint32_t skip_after_ = 0;
+  TraceFn trace_;
+  const std::vector<MaterialDesc>& materials_;
+  const std::vector<CompiledTexture>& textures_;
+  MaterialDesc default_material_;
+  Rgb background_, ambient_light_;
+  const CompiledTexture* environment_ = nullptr;   // settings.environment, if any
+  bool environment_ambient_ = false;
+  int max_depth_;
+};
+
+// Snell refraction of unit `incident` through unit normal `n` (facing the incident side) with
+// relative index eta = n_from / n_to. Returns false on total internal reflection.
+bool refract(const Vec3& incident, const Vec3& n, double eta, Vec3& refracted);
+
+// Schlick's approximation of Fresnel reflectance for reflectance at normal incidence f0.
+double schlick(double cos_theta, double f0);
+
+}  // namespace rts::render

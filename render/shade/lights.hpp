@@ -1,0 +1,60 @@
+// Lights in world space, precomputed for shading: point, spot (smooth falloff between the
+// `radius` and `falloff` half-angles), directional, and area (rectangle or inscribed disc,
+// sampled with stratified samples for soft shadows).
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/sample/sampler.hpp"
+#include "render/scene/scene.hpp"
+
+namespace rts::render {
+
+using Rgb = glm::dvec3;
+
+struct CompiledLight {
+  LightKind kind = LightKind::Point;
+  Rgb power{1.0};              // color * intensity
+  Vec3 position{0.0};
+  Vec3 direction{0, -1, 0};    // directional: unit, the direction light travels
+  Vec3 spot_axis{0, -1, 0};    // spot: unit, from position towards point_at
+  double cos_inner = 1.0, cos_outer = 1.0;  // spot: cosines of radius / falloff half-angles
+  Vec3 attenuation{1, 0, 0};
+  bool attenuation_clamp = false;  // factor min(1, ...): never brighter than power
+  Vec3 u{1, 0, 0}, v{0, 0, 1};
+  bool disc = false;
+  int samples = 1;             // shading samples (area lights; 1 otherwise)
+  uint32_t strata_side = 1;    // square_side(samples): grid strata, or 0 for N-rooks
+  double inv_strata = 1.0;     // 1 / strata_side, or 1 / samples for N-rooks
+  bool constant_attenuation = true;  // attenuation = <c, 0, 0>: no distance falloff
+  Rgb sample_power{1.0};       // power / samples, times the attenuation when constant
+  bool shadows = true;
+};
+
+struct LightSample {
+  Vec3 direction{0, 1, 0};     // unit, from the shaded point towards the light
+  double distance = 0.0;       // to the light sample; infinity for directional lights
+  Rgb radiance{0.0};           // arriving light, already weighted by 1/samples
+};
+
+// Area lights' sample count is clamped to [1, kMaxAreaSamples].
+inline constexpr int kMaxAreaSamples = 4096;
+
+std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_lights);
+
+// The light seen from `point` through the light position `on_light` in [0,1)^2 (area lights:
+// across u and v; ignored by the others).
+LightSample sample_light(const CompiledLight& light, const Vec3& point, glm::dvec2 on_light);
+
+// Sample `index` of light.samples: `jitter` in [0,1)^2 places it within its stratum;
+// `perm_seed` pairs strata when samples is not a square.
+LightSample sample_light(const CompiledLight& light, const Vec3& point, int index,
+                         glm::dvec2 jitter, uint32_t perm_seed);
+
+// 1 / (c + l d + q d^2), guarded against non-positive denominators; with `clamp`,
+// min(1, 1 / (c + l d + q d^2)) (UW CSE 457's point lights).
+double attenuation_factor(const Vec3& coefficients, double distance, bool clamp = false);
+
+}  // namespace rts::render

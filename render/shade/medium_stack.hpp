@@ -1,0 +1,69 @@
+// The media a path is inside (POV-Ray's and pbrt's "nested dielectrics"): a small stack of
+// the transmissive instances the path has entered, each with its absolute index of
+// refraction, so a surface refracts with the ratio of the media on its two sides (water 1.33
+// inside glass 1.5 bends by 1.5/1.33, not by 1/1.33). Outside everything is vacuum/air, 1.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "render/geometry/tolerances.hpp"
+
+namespace rts::render {
+
+class MediumStack {
+ public:
+  // The index of the medium the path is in now.
+  double current() const { return size_ > 0 ? entries_[size_ - 1].ior : 1.0; }
+
+  // The absolute index of `instance` if the path is inside it.
+  bool find(uint32_t instance, double& ior) const {
+    for (int i = size_ - 1; i >= 0; --i)
+      if (entries_[i].instance == instance) {
+        ior = entries_[i].ior;
+        return true;
+      }
+    return false;
+  }
+
+  // The index of the medium around `instance`: what the path is in once it leaves it.
+  double outside(uint32_t instance) const {
+    for (int i = size_ - 1; i >= 0; --i)
+      if (entries_[i].instance == instance) {
+        // The innermost other medium still entered (media may overlap, not only nest).
+        for (int j = size_ - 1; j >= 0; --j)
+          if (j != i) return entries_[j].ior;
+        return 1.0;
+      }
+    return current();
+  }
+
+  // Deeper nesting than the stack holds is not tracked: the path keeps the ratio of the
+  // innermost media it does track (documented in docs/rendering.md).
+  void enter(uint32_t instance, double ior) {
+    if (size_ < tol::kMaxNestedMedia) entries_[size_++] = Entry{instance, static_cast<float>(ior)};
+  }
+
+  void leave(uint32_t instance) {
+    for (int i = size_ - 1; i >= 0; --i)
+      if (entries_[i].instance == instance) {
+        for (int j = i; j + 1 < size_; ++j) entries_[j] = entries_[j + 1];
+        --size_;
+        return;
+      }
+  }
+
+  int size() const { return size_; }
+
+ private:
+  // Float indices keep a pending ray small (it is copied on every bounce); 1e-7 relative is
+  // far below any index a scene states.
+  struct Entry {
+    uint32_t instance;
+    float ior;
+  };
+  std::array<Entry, tol::kMaxNestedMedia> entries_{};
+  int size_ = 0;
+};
+
+}  // namespace rts::render

@@ -1,0 +1,57 @@
+// What a material is at one surface point: channel textures, per-vertex material values, and
+// bump or normal maps applied to a MaterialDesc before the integrator shades with it. Kept
+// apart from the integrator so its recursion reads as Whitted's algorithm only.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "render/shade/lights.hpp"
+#include "render/shade/texture.hpp"
+#include "render/accel/world.hpp"
+
+namespace rts::render {
+
+// Where a texture is looked up for a hit (object point, and uv when the surface has them).
+TexturePoint texture_point(const World& world, const WorldHit& hit);
+
+// True when `m` has anything to evaluate per point (a channel texture).
+inline bool has_channel_textures(const MaterialDesc& m) {
+  return m.diffuse_texture != kNoId || m.specular_texture != kNoId || m.reflect_texture != kNoId ||
+         m.transmit_texture != kNoId || m.emission_texture != kNoId;
+}
+
+// `m` itself when nothing varies over the surface; otherwise `scratch`, a copy with the
+// channel textures evaluated and the mesh's per-vertex values interpolated into it.
+// `diffuse_color`: the color the diffuse term uses (diffuse texture, else the albedo given).
+// `scratch` is filled only when needed, so the common case costs two inline tests.
+const MaterialDesc& varying_material(const MaterialDesc& m, const World& world, const WorldHit& hit,
+                                     const std::vector<CompiledTexture>& textures,
+                                     std::optional<MaterialDesc>& scratch);
+inline const MaterialDesc& shading_material(const MaterialDesc& m, const World& world, const WorldHit& hit,
+                                            const std::vector<CompiledTexture>& textures,
+                                            std::optional<MaterialDesc>& scratch) {
+  if (!has_channel_textures(m) && !world.has_vertex_material(hit)) return m;
+  return varying_material(m, world, hit, textures, scratch);
+}
+
+// The diffuse term's color: `diffuse_texture` when set, else `albedo` (color or texture).
+Rgb textured_diffuse(const MaterialDesc& m, const World& world, const WorldHit& hit,
+                     const std::vector<CompiledTexture>& textures);
+inline Rgb diffuse_color(const MaterialDesc& m, const Rgb& albedo, const World& world, const WorldHit& hit,
+                         const std::vector<CompiledTexture>& textures) {
+  if (m.diffuse_texture == kNoId) return albedo;
+  return textured_diffuse(m, world, hit, textures);
+}
+
+// The shading normal `n` perturbed by the material's bump or normal map (unit, on n's side
+// of the surface); `n` itself when the material has neither.
+Vec3 perturbed_normal(const MaterialDesc& m, const World& world, const WorldHit& hit, const Vec3& n,
+                      const std::vector<CompiledTexture>& textures);
+inline Vec3 detail_normal(const MaterialDesc& m, const World& world, const WorldHit& hit, const Vec3& n,
+                          const std::vector<CompiledTexture>& textures) {
+  if (m.bump == kNoId && m.normal_map == kNoId) return n;
+  return perturbed_normal(m, world, hit, n, textures);
+}
+
+}  // namespace rts::render

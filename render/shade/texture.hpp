@@ -1,0 +1,60 @@
+// Texture evaluation. compile_textures() turns the scene's TextureDescs into samplers once
+// (loading image files), then the integrator asks each for a color at a surface point.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/image/image.hpp"
+#include "render/scene/scene.hpp"
+
+namespace rts::render {
+
+// What a texture needs to know about the surface point being shaded.
+struct TexturePoint {
+  Vec3 object_point;     // hit point in the shape's object space
+  glm::dvec2 uv{0.0};    // surface parameterisation, when has_uv
+  bool has_uv = false;
+};
+
+class CompiledTexture {
+ public:
+  // images: one for Image and LatLong textures, six (+x, -x, +y, -y, +z, -z) for CubeMap.
+  CompiledTexture(const TextureDesc& desc, std::vector<std::shared_ptr<const Image>> images);
+  // One image, or none (null) for procedural kinds.
+  CompiledTexture(const TextureDesc& desc, std::shared_ptr<const Image> image)
+      : CompiledTexture(desc, image ? std::vector<std::shared_ptr<const Image>>{std::move(image)}
+                                    : std::vector<std::shared_ptr<const Image>>{}) {}
+  Color eval(const TexturePoint& p) const;
+  // Bytes of decoded image data this texture holds (0 for procedural ones).
+  std::size_t image_bytes() const {
+    std::size_t bytes = 0;
+    for (const auto& image : images_) bytes += image ? image->rgb.size() * sizeof(float) : 0;
+    return bytes;
+  }
+  // Environment lookup along a world direction (need not be unit length); any texture kind
+  // answers, procedural ones at the point `direction` itself.
+  Color eval_direction(const Vec3& direction) const;
+  bool is_environment() const {
+    return desc_.kind == TextureKind::LatLong || desc_.kind == TextureKind::CubeMap;
+  }
+  // The size of one texel in uv units (0 for procedural textures), for bump-map differences.
+  double texel_size() const;
+
+ private:
+  Color sample(const Image& image, double u, double v) const;
+  Color lookup_direction(const Vec3& texture_space_direction) const;
+
+  TextureDesc desc_;
+  Mat4 inverse_;                                       // object space → texture space
+  std::vector<std::shared_ptr<const Image>> images_;   // image kinds only (linear RGB)
+};
+
+// Loads each distinct image once. Throws RenderError located at the texture's SourceRef when
+// an image is missing or unreadable. With `used` (by TextureId), images no placed material
+// refers to are never opened (their CompiledTexture has no image and is never evaluated).
+std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used = nullptr);
+
+}  // namespace rts::render
