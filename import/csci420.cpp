@@ -37,18 +37,14 @@ struct Csci {
     return tk.vec3();
   }
 
-  std::string specular_note(const glm::dvec3& s) {
-    return s.x == s.y && s.y == s.z ? "" : "  // spe " + rgb(s) + " (rts's specular is one weight: their mean)";
-  }
-
   std::string material(const glm::dvec3& dif, const glm::dvec3& spe, double shi) {
     std::string body = fmt::format("material {{ color = {}  ambient = 0  diffuse = 1  specular = {}  shininess = {}  "
                                    "emission = {} }}",
-                                   rgb(dif), num(mean(spe)), num(shi), rgb(amb));
+                                   rgb(dif), specular_value(spe), num(shi), rgb(amb));
     auto it = materials.find(body);
     if (it != materials.end()) return it->second;
     std::string name = fmt::format("material{}", materials.size());
-    out.top.line(fmt::format("let {} = {}{}", name, body, specular_note(spe)));
+    out.top.line(fmt::format("let {} = {}", name, body));
     materials.emplace(body, name);
     return name;
   }
@@ -80,8 +76,11 @@ struct Csci {
     out.world.open("triangle");
     out.world.line(geometry);
     out.world.line(fmt::format("vertex_colors = [{}, {}, {}]", rgb(v[0].dif), rgb(v[1].dif), rgb(v[2].dif)));
-    out.world.line(fmt::format("vertex_specular = [{}, {}, {}]", num(mean(v[0].spe)), num(mean(v[1].spe)),
-                               num(mean(v[2].spe))));
+    const bool gray_spe = v[0].spe == glm::dvec3(v[0].spe.x) && v[1].spe == glm::dvec3(v[1].spe.x) &&
+                          v[2].spe == glm::dvec3(v[2].spe.x);
+    // All gray: numbers; else every vertex as a color (one list holds one kind).
+    auto spe = [&](const glm::dvec3& s) { return gray_spe ? num(s.x) : fmt::format("rgb({}, {}, {})", num(s.x), num(s.y), num(s.z)); };
+    out.world.line(fmt::format("vertex_specular = [{}, {}, {}]", spe(v[0].spe), spe(v[1].spe), spe(v[2].spe)));
     out.world.line(fmt::format("vertex_shininess = [{}, {}, {}]", num(v[0].shi), num(v[1].shi), num(v[2].shi)));
     out.world.line("material = " + base);
     out.world.close();
@@ -92,10 +91,7 @@ struct Csci {
     tk.expect("amb:");
     amb = tk.vec3();
     out.top.line("settings { width = 640  height = 480 }");
-    // Horizontal field of view of a 60° vertical one on a 4:3 image.
-    const double hfov = 2.0 * std::atan(640.0 / 480.0 * std::tan(30.0 * std::numbers::pi / 180.0)) * 180.0 /
-                        std::numbers::pi;
-    write_camera(out.top, glm::dvec3(0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0), std::round(hfov * 1e4) / 1e4,
+    write_camera(out.top, glm::dvec3(0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0), 60, FovAxis::Vertical,
                  "CSCI 420's fixed camera: 60° vertical field of view on 640x480");
     for (int i = 0; i < count; ++i) {
       Token kind = tk.next();

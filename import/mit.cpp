@@ -39,13 +39,12 @@ struct Mit {
       else tk.fail(key, fmt::format("unknown {} field '{}'", kind, key.text));
     }
     if (kind == "PerspectiveCamera") {
-      write_camera(out.top, center, center + direction, up, angle,
-                   "MIT's angle spans the square image: rts's horizontal fov is the same angle");
+      write_camera(out.top, center, center + direction, up, angle, FovAxis::Vertical,
+                   "MIT's angle spans the (square) image from top to bottom");
     } else {
-      const glm::dvec3 flip(-1, 1, 1);
       out.top.line(fmt::format("camera {{ projection = \"orthographic\"  position = {}  look_at = {}  up = {}  "
-                               "view_width = {} }}",
-                               vec(center * flip), vec((center + direction) * flip), vec(up * flip), num(size)));
+                               "view_width = {}  handedness = \"right\" }}",
+                               vec(center), vec(center + direction), vec(up), num(size)));
     }
   }
 
@@ -100,8 +99,9 @@ struct Mit {
       Token key = tk.next();
       if (key.text == "diffuseColor") color = "color = " + rgb(tk.vec3());
       else if (key.text == "specularColor") {
-        glm::dvec3 s = tk.vec3();
-        parts.push_back("specular = " + num(mean(s)) + (s.x == s.y && s.y == s.z ? "" : "  // specularColor " + rgb(s)));
+        const glm::dvec3 s = tk.vec3();
+        // A gray specularColor is a plain weight; a tinted one becomes a colored highlight.
+        parts.push_back("specular = " + specular_value(s));
       } else if (key.text == "exponent" || key.text == "shininess") parts.push_back("shininess = " + num(tk.number()));
       else if (key.text == "reflectiveColor") parts.push_back("reflect = " + rgb(tk.vec3()));
       else if (key.text == "transparentColor") parts.push_back("transmit = " + rgb(tk.vec3()));

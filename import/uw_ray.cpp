@@ -161,11 +161,11 @@ struct Uw {
   }
 
   // The rts text of a material block (without `let`).
-  std::string material_text(const Value& m, std::string* note) {
+  std::string material_text(const Value& m) {
     std::string color = "rgb(1)";
     std::vector<std::string> parts;
     glm::dvec3 emission(0), ka(0);
-    double specular = 0;
+    glm::dvec3 specular(0);
     std::string specular_tex;
     for (const auto& [key, v] : m.props) {
       auto tex = map_texture(v);
@@ -179,11 +179,7 @@ struct Uw {
         ka = triple(v);
       } else if (key == "specular") {
         if (tex) specular_tex = *tex;
-        else {
-          glm::dvec3 s = triple(v);
-          specular = mean(s);
-          if (!(s.x == s.y && s.y == s.z)) *note = "specular " + rgb(s) + " (rts's specular is one weight: their mean)";
-        }
+        else specular = triple(v);
       } else if (key == "reflective") parts.push_back("reflect = " + (tex ? *tex : rgb(triple(v))));
       else if (key == "transmissive") parts.push_back("transmit = " + (tex ? *tex : rgb(triple(v))));
       else if (key == "shininess") parts.push_back("shininess = " + num(number(v)));
@@ -193,7 +189,7 @@ struct Uw {
     glm::dvec3 e = emission + ka * ambient_light;
     std::string text = fmt::format("material {{ color = {}  ambient = 0  diffuse = 1", color);
     if (!specular_tex.empty()) text += "  specular = " + specular_tex;
-    else if (specular > 0) text += "  specular = " + num(specular);
+    else if (specular != glm::dvec3(0)) text += "  specular = " + specular_value(specular);
     for (const std::string& p : parts) text += "  " + p;
     if (e != glm::dvec3(0)) text += "  emission = " + rgb(e);
     return text + " }";
@@ -207,8 +203,7 @@ struct Uw {
       return it->second;
     }
     if (m.kind != Value::Block) fail(m, "expected a material { ... }");
-    std::string note;
-    std::string text = material_text(m, &note);
+    std::string text = material_text(m);
     auto it = materials.find(text);
     std::string name;
     if (it != materials.end()) {
@@ -217,7 +212,7 @@ struct Uw {
       const Value* uw_name = m.prop("name");
       name = uw_name && uw_name->kind == Value::Str ? sanitize(uw_name->text) : fmt::format("material{}", materials.size());
       out.top.comments(m.at.comments);
-      out.top.line(fmt::format("let {} = {}{}", name, text, note.empty() ? "" : "   // " + note));
+      out.top.line(fmt::format("let {} = {}", name, text));
       materials.emplace(text, name);
     }
     if (const Value* uw_name = m.prop("name"); uw_name && uw_name->kind == Value::Str) named[uw_name->text] = name;
@@ -305,15 +300,21 @@ struct Uw {
       if (per_vertex->kind != Value::Tuple || per_vertex->items.size() != p.size())
         fail(*per_vertex, "expected one material per point");
       std::vector<std::string> colors, spec, shin;
+      std::vector<glm::dvec3> spec_colors;
       for (const Value& m : per_vertex->items) {
         if (m.kind != Value::Block) fail(m, "expected a material { ... }");
         const Value* d = m.prop("diffuse");
         const Value* s = m.prop("specular");
         const Value* sh = m.prop("shininess");
         colors.push_back(rgb(d ? triple(*d) : glm::dvec3(1)));
-        spec.push_back(num(s ? mean(triple(*s)) : 0.0));
+        spec_colors.push_back(s ? triple(*s) : glm::dvec3(0));
         shin.push_back(num(sh ? number(*sh) : 32.0));
       }
+      // Numbers when every vertex's specular is gray, else colors (one list holds one kind).
+      bool gray = true;
+      for (const glm::dvec3& s : spec_colors) gray = gray && s == glm::dvec3(s.x);
+      for (const glm::dvec3& s : spec_colors)
+        spec.push_back(gray ? num(s.x) : fmt::format("rgb({}, {}, {})", num(s.x), num(s.y), num(s.z)));
       auto join = [](const std::vector<std::string>& v) {
         std::string s;
         for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
@@ -410,12 +411,10 @@ struct Uw {
       else fail(v, fmt::format("unknown camera property '{}'", key));
     }
     if (!(aspect > 0)) fail(c, "aspectratio must be > 0");
-    const double hfov =
-        2.0 * std::atan(aspect * std::tan(fov * std::numbers::pi / 360.0)) * 180.0 / std::numbers::pi;
     out.top.comments(c.at.comments);
     out.top.line(fmt::format("settings {{ width = 512  height = {} }}", static_cast<int>(std::lround(512 / aspect))));
-    write_camera(out.top, position, look_at ? *look_at : position + viewdir, up, std::round(hfov * 1e4) / 1e4,
-                 fmt::format("UW's fov = {} is vertical: the horizontal angle at aspect ratio {}", num(fov), num(aspect)));
+    write_camera(out.top, position, look_at ? *look_at : position + viewdir, up, fov, FovAxis::Vertical,
+                 fmt::format("UW's fov is vertical; the image keeps its aspect ratio {}", num(aspect)));
   }
 
   void light(const Value& l) {
@@ -430,13 +429,15 @@ struct Uw {
       else if (key == "quadratic_attenuation_coeff" && l.text == "point_light") atten.z = number(v), has_atten = true;
       else fail(v, fmt::format("unknown {} property '{}'", l.text, key));
     }
+    // All three zero: UW's min(1, 1/0) is 1, no falloff at all.
+    if (atten == glm::dvec3(0)) has_atten = false;
     out.world.comments(l.at.comments);
     if (l.text == "directional_light") {
       out.world.line(fmt::format("directional_light {{ direction = {}  color = {} }}", vec(direction), rgb(color)));
     } else {
-      if (has_atten) out.world.line("// UW caps the attenuation at 1: min(1, 1 / (a + b d + c d^2))");
+      // UW's falloff is min(1, 1 / (a + b d + c d^2)): rts's attenuation with the clamp.
       out.world.line(fmt::format("point_light {{ position = {}  color = {}{} }}", vec(position), rgb(color),
-                                 has_atten ? "  attenuation = " + vec(atten) : ""));
+                                 has_atten ? "  attenuation = " + vec(atten) + "  attenuation_clamp = true" : ""));
     }
   }
 
@@ -490,7 +491,8 @@ struct Uw {
     }
     if (!has_camera) {
       out.top.line("settings { width = 512  height = 512 }");
-      write_camera(out.top, glm::dvec3(0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0), 30, "UW's default camera");
+      write_camera(out.top, glm::dvec3(0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0), 30, FovAxis::Vertical,
+                   "UW's default camera");
     }
     out.world.comments(tk.trailing_comments());
   }

@@ -37,6 +37,8 @@ std::string matrix_list(const double m[4][4]) {
 
 double mean(const glm::dvec3& c) { return (c.x + c.y + c.z) / 3.0; }
 
+std::string specular_value(const glm::dvec3& c) { return c.x == c.y && c.y == c.z ? num(c.x) : rgb(c); }
+
 void Writer::line(const std::string& text) {
   out_.append(static_cast<std::size_t>(depth_) * 4, ' ');
   out_ += text;
@@ -65,17 +67,17 @@ std::string SceneText::finish() const {
   std::string out;
   for (const std::string& h : header) out += h.empty() ? "//\n" : "// " + h + "\n";
   out += "\n" + top.text();
-  out += "\n// The course's right-handed coordinates, mirrored into rts's left-handed view.\n";
-  out += "group {\n" + world.text() + "} scale <-1, 1, 1>\n";
+  out += "\n// Objects and lights in the course's right-handed coordinates (the camera is right-handed).\n";
+  out += world.text();
   return out;
 }
 
 void write_camera(Writer& w, const glm::dvec3& position, const glm::dvec3& look_at, const glm::dvec3& up,
-                  double horizontal_fov, const std::string& note) {
-  const glm::dvec3 flip(-1, 1, 1);
+                  double fov, FovAxis axis, const std::string& note) {
   if (!note.empty()) w.line("// " + note);
-  w.line(fmt::format("camera {{ position = {}  look_at = {}  up = {}  fov = {} }}", vec(position * flip),
-                     vec(look_at * flip), vec(up * flip), num(horizontal_fov)));
+  w.line(fmt::format("camera {{ position = {}  look_at = {}  up = {}  fov = {}{}  handedness = \"right\" }}",
+                     vec(position), vec(look_at), vec(up), num(fov),
+                     axis == FovAxis::Vertical ? "  fov_axis = \"vertical\"" : ""));
 }
 
 }  // namespace rts::import

@@ -17,6 +17,8 @@ std::string rts_string(const std::string& s);  // "s" with \ and " escaped
 // by column, then the translation: the order POV-Ray and rts use).
 std::string matrix_list(const double m[4][4]);
 double mean(const glm::dvec3& c);
+// A course's specular color as rts's `specular` value: a number when gray, else rgb(r, g, b).
+std::string specular_value(const glm::dvec3& c);
 
 class Writer {
  public:
@@ -34,18 +36,20 @@ class Writer {
 };
 
 // What every translation produces: the course scenes are right-handed (camera looking down
-// -z, +x to its right), rts's view is left-handed; the objects and lights go into one group
-// mirrored by `scale <-1, 1, 1>`, and the camera is written in the mirrored coordinates, so the
-// course's numbers appear unchanged and the picture is not mirrored.
+// -z, +x to its right); the camera says so (`handedness = "right"`), so objects, lights and
+// camera keep the course's own numbers and the picture is not mirrored.
 struct SceneText {
   std::vector<std::string> header;   // comment lines
   Writer top;                        // settings, camera, materials
-  Writer world{1};                   // objects and lights, course coordinates
+  Writer world;                      // objects and lights, course coordinates
   std::string finish() const;
 };
 
-// The camera block, mirrored into rts's view (x negated).
+// Which image extent a perspective camera's angle spans.
+enum class FovAxis { Horizontal, Vertical };
+
+// A right-handed perspective camera block in the course's coordinates.
 void write_camera(Writer& w, const glm::dvec3& position, const glm::dvec3& look_at, const glm::dvec3& up,
-                  double horizontal_fov, const std::string& note);
+                  double fov, FovAxis axis, const std::string& note);
 
 }  // namespace rts::import

@@ -129,14 +129,16 @@ bool MeshAccel::vertex_material(uint32_t tri, glm::dvec2 bary, VertexMaterial& o
     result = w[0] * values[idx[0]] + w[1] * values[idx[1]] + w[2] * values[idx[2]];
     return true;
   };
-  if (m.colors.size() == n) {
-    glm::dvec3 c = w[0] * glm::dvec3(m.colors[idx[0]]) + w[1] * glm::dvec3(m.colors[idx[1]]) +
-                   w[2] * glm::dvec3(m.colors[idx[2]]);
-    out.color = Color(c.x, c.y, c.z);
-    out.has_color = true;
-  }
+  auto mix_rgb = [&](const std::vector<glm::vec3>& values, Color& result) {
+    if (values.size() != n) return false;
+    glm::dvec3 c = w[0] * glm::dvec3(values[idx[0]]) + w[1] * glm::dvec3(values[idx[1]]) +
+                   w[2] * glm::dvec3(values[idx[2]]);
+    result = Color(c.x, c.y, c.z);
+    return true;
+  };
+  out.has_color = mix_rgb(m.colors, out.color);
+  out.has_specular = mix_rgb(m.specular, out.specular);
   out.has_diffuse = mix(m.diffuse, out.diffuse);
-  out.has_specular = mix(m.specular, out.specular);
   out.has_shininess = mix(m.shininess, out.shininess);
   return true;
 }

@@ -28,8 +28,8 @@ struct SurfaceHit {
 // Per-vertex material values interpolated at a hit (each only when the mesh has it).
 struct VertexMaterial {
   bool has_color = false, has_diffuse = false, has_specular = false, has_shininess = false;
-  Color color;
-  double diffuse = 0, specular = 0, shininess = 0;
+  Color color, specular;   // specular: the highlight's color (weight per channel)
+  double diffuse = 0, shininess = 0;
 };
 
 }  // namespace rts::render

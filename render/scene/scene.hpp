@@ -74,7 +74,7 @@ struct MaterialDesc {
   Color color{0.8};
   TextureId texture = kNoId;   // when set, replaces `color`
   // A texture on a channel gives that channel's value at each point: emission, reflect and
-  // transmit take its color; specular its mean of r, g, b; on diffuse it is the diffuse color
+  // transmit take its color; specular its color as the highlight's tint; on diffuse it is the diffuse color
   // itself (the diffuse term becomes texture * (N·L), the ambient term keeps `color`).
   TextureId diffuse_texture = kNoId;
   TextureId specular_texture = kNoId;
@@ -112,9 +112,9 @@ struct MeshData {
   std::vector<uint32_t> indices;      // 3 per triangle, into the arrays above
   // Per-vertex material values, each empty or one per position, interpolated across each
   // triangle with its barycentric coordinates; where present they replace the material's
-  // color, diffuse, specular and shininess.
-  std::vector<glm::vec3> colors;
-  std::vector<float> diffuse, specular, shininess;
+  // color, diffuse, specular (the highlight's color: a number x is rgb(x)) and shininess.
+  std::vector<glm::vec3> colors, specular;
+  std::vector<float> diffuse, shininess;
   bool has_vertex_material() const {
     return !colors.empty() || !diffuse.empty() || !specular.empty() || !shininess.empty();
   }

@@ -483,8 +483,31 @@ bool vertex_material(ParamSet& ps, std::size_t vertex_count, MeshData& mesh) {
       mesh.colors.emplace_back(c);
     }
   }
+  // `vertex_specular`: numbers (white highlights of that weight) or colors (tinted ones, as
+  // CSCI 420's per-vertex `spe` and UW's per-vertex `specular`).
+  if (ps.has("vertex_specular")) {
+    const ParamValue* v = ps.value("vertex_specular");
+    if (const auto* numbers = std::get_if<std::vector<double>>(v)) {
+      count_check("vertex_specular", numbers->size());
+      for (double x : *numbers) {
+        require(ps, "vertex_specular", x >= 0 && std::isfinite(x), ">= 0", x);
+        mesh.specular.emplace_back(static_cast<float>(x));
+      }
+    } else if (std::get_if<std::vector<Vec3>>(v)) {
+      std::vector<Vec3> colors = vector_list(ps, "vertex_specular");
+      count_check("vertex_specular", colors.size());
+      for (const Vec3& c : colors) {
+        if (!(c.x >= 0 && c.y >= 0 && c.z >= 0) || !std::isfinite(c.x + c.y + c.z))
+          throw SceneError(loc_of(ps, "vertex_specular"), "property 'vertex_specular' must not be negative");
+        mesh.specular.emplace_back(c);
+      }
+    } else {
+      throw SceneError(loc_of(ps, "vertex_specular"),
+                       fmt::format("property 'vertex_specular' of {} expects a list of numbers or colors, got a {}",
+                                   ps.kind(), param_type_name(*v)));
+    }
+  }
   for (auto [name, out] : {std::pair<std::string_view, std::vector<float>*>{"vertex_diffuse", &mesh.diffuse},
-                           {"vertex_specular", &mesh.specular},
                            {"vertex_shininess", &mesh.shininess}}) {
     if (!ps.has(name)) continue;
     const ParamValue* v = ps.value(name);

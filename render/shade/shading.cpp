@@ -9,7 +9,6 @@ namespace rts::render {
 namespace {
 
 Rgb rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
-double mean(const Color& c) { return (c.r + c.g + c.b) / 3.0; }
 double luminance(const Color& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 bool valid(TextureId id, const std::vector<CompiledTexture>& textures) { return id < textures.size(); }
@@ -49,13 +48,22 @@ const MaterialDesc& varying_material(const MaterialDesc& m, const World& world, 
       scratch.texture = kNoId;   // the vertex colors are the surface's color
     }
     if (vm.has_diffuse) scratch.diffuse = std::max(0.0, vm.diffuse);
-    if (vm.has_specular) scratch.specular = std::max(0.0, vm.specular);
+    if (vm.has_specular) {
+      // The vertex value is the whole highlight, weight and tint: 1 times its color.
+      scratch.specular = 1.0;
+      scratch.specular_color = Color(std::max(0.0, vm.specular.r), std::max(0.0, vm.specular.g),
+                                     std::max(0.0, vm.specular.b));
+    }
     if (vm.has_shininess) scratch.shininess = std::max(0.0, vm.shininess);
   }
   if (has_channel_textures(m)) {
     const TexturePoint p = texture_point(world, hit);
     auto eval = [&](TextureId id) { return textures[id].eval(p); };
-    if (valid(m.specular_texture, textures)) scratch.specular = m.specular * mean(eval(m.specular_texture));
+    if (valid(m.specular_texture, textures)) {
+      // The texture is the highlight's color, channel by channel (UW's map() on specular).
+      const Color c = eval(m.specular_texture);
+      scratch.specular_color = Color(m.specular_color.r * c.r, m.specular_color.g * c.g, m.specular_color.b * c.b);
+    }
     if (valid(m.reflect_texture, textures)) scratch.reflect = eval(m.reflect_texture);
     if (valid(m.transmit_texture, textures)) scratch.transmit = eval(m.transmit_texture);
     if (valid(m.emission_texture, textures)) scratch.emission = eval(m.emission_texture);

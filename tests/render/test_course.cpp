@@ -11,6 +11,7 @@
 #include "render/image/frame.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/shade/lights.hpp"
+#include "render/shade/texture.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"
 
@@ -32,6 +33,7 @@ struct Tracer {
     flat = flatten_scene(scene);
     world = std::make_unique<World>(scene, flat);
     lights = compile_lights(flat.lights);
+    textures = compile_textures(scene);
     integrator = std::make_unique<Integrator>(*world, lights, scene.materials, textures, scene.settings, 5);
   }
   Rgb trace(const Ray& r) const {
@@ -59,6 +61,48 @@ Rgb highlight_seen_from_above(double specular, Color specular_color) {
   return t.trace(Ray{Vec3(0, 2, 0), Vec3(0, -1, 0)});
 }
 
+// The same highlight where it comes from per-vertex values (a two-triangle floor mesh whose
+// four corners all carry `spec`) or from a texture on `specular` (a checker whose two colors
+// are both `tex`).
+Rgb vertex_highlight(glm::vec3 spec) {
+  SceneDesc s;
+  MaterialDesc m;
+  m.ambient = 0;
+  m.diffuse = 0;
+  m.shininess = 7;
+  auto mesh = std::make_shared<MeshData>();
+  mesh->positions = {{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}};
+  mesh->indices = {0, 2, 1, 0, 3, 2};
+  mesh->specular.assign(4, spec);
+  s.meshes.push_back(mesh);
+  place(s, add_shape(s, MeshRef{0, false}, add_material(s, m)));
+  LightDesc l;
+  l.position = Vec3(0, 4, 0);
+  place(s, add_light(s, l));
+  Tracer t(std::move(s));
+  return t.trace(Ray{Vec3(0.01, 2, 0.02), Vec3(0, -1, 0)});
+}
+
+Rgb textured_highlight(Color tex, Color specular_color) {
+  SceneDesc s;
+  TextureDesc checker;
+  checker.color1 = checker.color2 = tex;
+  s.textures.push_back(checker);
+  MaterialDesc m;
+  m.ambient = 0;
+  m.diffuse = 0;
+  m.specular = 1.0;   // what the builder sets for a texture
+  m.specular_color = specular_color;
+  m.specular_texture = 0;
+  m.shininess = 7;
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, m)));
+  LightDesc l;
+  l.position = Vec3(0, 4, 0);
+  place(s, add_light(s, l));
+  Tracer t(std::move(s));
+  return t.trace(Ray{Vec3(0, 2, 0), Vec3(0, -1, 0)});
+}
+
 double angle_between(const Vec3& a, const Vec3& b) {
   return std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0, 1.0));
 }
@@ -76,6 +120,28 @@ TEST_CASE("a colored specular weights the highlight per channel", "[course]") {
   CHECK(white.z == Approx(0.5));
   Rgb both = highlight_seen_from_above(0.5, Color(0.2, 0.5, 1.0));
   CHECK(both.y == Approx(0.25));
+}
+
+TEST_CASE("per-vertex specular colors tint the highlight; numbers are gray colors", "[course]") {
+  // Seen from (almost) straight above: R·V is 1 to within 1e-5, so the pixel is the color.
+  Rgb tinted = vertex_highlight({0.2f, 0.5f, 1.0f});
+  CHECK(tinted.x == Approx(0.2).epsilon(1e-3));
+  CHECK(tinted.y == Approx(0.5).epsilon(1e-3));
+  CHECK(tinted.z == Approx(1.0).epsilon(1e-3));
+  Rgb gray = vertex_highlight(glm::vec3(0.5f));
+  CHECK(gray.x == Approx(0.5).epsilon(1e-3));
+  CHECK(gray.z == Approx(0.5).epsilon(1e-3));
+}
+
+TEST_CASE("a texture on specular gives the highlight's color channel by channel", "[course]") {
+  Rgb tinted = textured_highlight(Color(0.2, 0.5, 1.0), Color(1.0));
+  CHECK(tinted.x == Approx(0.2));
+  CHECK(tinted.y == Approx(0.5));
+  CHECK(tinted.z == Approx(1.0));
+  // It multiplies a colored specular's tint.
+  Rgb both = textured_highlight(Color(0.5), Color(0.2, 0.5, 1.0));
+  CHECK(both.x == Approx(0.1));
+  CHECK(both.z == Approx(0.5));
 }
 
 TEST_CASE("clamped attenuation is min(1, 1 / (a + b d + c d^2))", "[course]") {

@@ -231,6 +231,22 @@ TEST_CASE("inline meshes from lists", "[eval]") {
   CHECK(s.meshes[0]->indices.size() == 6);
 }
 
+TEST_CASE("vertex_specular takes numbers or colors", "[eval][course]") {
+  const std::string tri = "triangle { v0 = <0,0,0>  v1 = <1,0,0>  v2 = <0,1,0>  vertex_specular = ";
+  SceneDesc colors = eval_text(tri + "[rgb(1, 0.5, 0), rgb(0), rgb(0.25)] }");
+  REQUIRE(colors.meshes.size() == 1);
+  REQUIRE(colors.meshes[0]->specular.size() == 3);
+  CHECK(colors.meshes[0]->specular[0] == glm::vec3(1.0f, 0.5f, 0.0f));
+  CHECK(colors.meshes[0]->specular[2] == glm::vec3(0.25f));
+  // A number x is the gray color rgb(x).
+  SceneDesc numbers = eval_text(tri + "[0.5, 0, 1] }");
+  REQUIRE(numbers.meshes.size() == 1);
+  CHECK(numbers.meshes[0]->specular[0] == glm::vec3(0.5f));
+  CHECK(rts::test::eval_error(tri + "[rgb(1), rgb(-1, 0, 0), rgb(0)] }").find("must not be negative") != std::string::npos);
+  CHECK(rts::test::eval_error(tri + "[1, 2] }").find("has 2 entries for 3 vertices") != std::string::npos);
+  CHECK(rts::test::eval_error(tri + "\"shiny\" }").find("expects a list of numbers or colors") != std::string::npos);
+}
+
 TEST_CASE("defines replace the first top-level let of the main file", "[eval][defines]") {
   EvalOptions opts;
   opts.defines = {{"q", "2"}, {"v", "<1, 2, 3>"}};
