@@ -33,9 +33,14 @@ class NullBuffer : public std::streambuf {
 // budget, which `rts` sets from the machine's RAM and EvalOptions leaves unlimited: it is set
 // below libFuzzer's -rss_limit_mb (scripts/fuzz: 2048), so a scene that the budget allows is
 // never reported as an out-of-memory finding, and one that it refuses ends as a located error.
+//
+// RTS_FUZZ_MAX_STEPS lowers the step budget for the suite's replays only (CTest sets it), so a
+// runaway finding that the default budget ends after 100 million steps (20 s in a release
+// build, minutes under the sanitizers) ends within a second there. Fuzzing never sets it.
 inline rts::EvalOptions eval_options() {
   rts::EvalOptions options;
   options.limits.max_memory = std::size_t(1536) << 20;
+  if (const char* steps = std::getenv("RTS_FUZZ_MAX_STEPS")) options.limits.max_steps = std::strtoull(steps, nullptr, 10);
   return options;
 }
 
