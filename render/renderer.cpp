@@ -107,7 +107,7 @@ Prepared prepare(const SceneDesc& scene, const ResolvedSettings& rs, const Rende
   if (p.world->uses_bvh()) p.features.add(Feature::Bvh);
   p.lights = compile_lights(p.flat.lights);
   std::vector<bool> used = used_textures(scene, p.flat);
-  p.textures = compile_textures(scene, &used);
+  p.textures = compile_textures(scene, &used, options.max_memory);
   return p;
 }
 

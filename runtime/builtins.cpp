@@ -38,7 +38,13 @@ Value finite(const BuiltinCall& c, double r) {
     std::string args;
     for (std::size_t i = 0; i < c.argc; ++i) {
       if (i) args += ", ";
-      args += to_text(c.args[i], true);
+      // An excerpt: the arguments are there to recognise the call, and a list may be huge.
+      constexpr std::size_t kShown = 200;
+      if (!append_text(args, c.args[i], true, kShown)) {
+        args.resize(kShown);
+        args += "…";
+        break;
+      }
     }
     check_finite(r, c.call.loc, fmt::format("{}({})", c.def.name, args).c_str());
   }
@@ -140,11 +146,7 @@ Value len(BuiltinCall& c) {
   bad_arg(c, 0, "a list, a string or a range");
 }
 
-Value str_(BuiltinCall& c) {
-  std::string text = to_text(c.args[0]);
-  c.in.spend(text.size(), c.call.loc, "string bytes built");
-  return Value::string(std::move(text));
-}
+Value str_(BuiltinCall& c) { return Value::string(c.in.text_of(c.args[0], c.call.loc)); }
 
 Value format(BuiltinCall& c) {
   const std::string& f = str(c, 0);
@@ -161,7 +163,7 @@ Value format(BuiltinCall& c) {
       if (next >= c.argc)
         c.in.fail(arg_loc(c, 0), fmt::format("format string has more '{{}}' than the {} value{} given", c.argc - 1,
                                              c.argc == 2 ? "" : "s"));
-      out += to_text(c.args[next++]);
+      out += c.in.text_of(c.args[next++], c.call.loc);
       ++i;
     } else {
       out += f[i];
@@ -178,7 +180,7 @@ Value print(BuiltinCall& c) {
   std::string text;
   for (std::size_t i = 0; i < c.argc; ++i) {
     if (i) text += " ";
-    text += to_text(c.args[i]);
+    text += c.in.text_of(c.args[i], c.call.loc);
   }
   const SourceLoc& l = c.call.loc;
   std::cerr << fmt::format("{}:{}:{}: print: {}\n", l.file ? l.file->path() : "", l.line, l.col, text);
@@ -189,13 +191,13 @@ Value assert_(BuiltinCall& c) {
   if (c.args[0].type != Type::Bool) bad_arg(c, 0, "a bool");
   if (!c.args[0].truth()) {
     std::string msg = "assertion failed";
-    if (c.argc > 1) msg += ": " + to_text(c.args[1]);
+    if (c.argc > 1) msg += ": " + c.in.text_of(c.args[1], c.call.loc);
     c.in.fail(c.call.loc, msg);
   }
   return Value::none();
 }
 
-Value error(BuiltinCall& c) { c.in.fail(c.call.loc, to_text(c.args[0])); }
+Value error(BuiltinCall& c) { c.in.fail(c.call.loc, c.in.text_of(c.args[0], c.call.loc)); }
 
 // checker(c1, c2, scale), stripes(c1, c2, scale, axis), gradient(...), image_texture(file, mapping):
 // the same properties as the block forms, checked by the builder when the texture is used.

@@ -556,6 +556,30 @@ void Interpreter::check_budgets(SourceLoc loc, const char* what) {
   check_memory(0, loc, what);
 }
 
+std::string Interpreter::text_of(const Value& v, SourceLoc loc, bool quote_strings) {
+  const uint64_t left = steps_ < options_.limits.max_steps ? options_.limits.max_steps - steps_ : 0;
+  // And a third of what --max-memory leaves: while a string grows it briefly holds its old
+  // buffer and one twice as large.
+  const std::size_t max = options_.limits.max_memory;
+  std::size_t room = SIZE_MAX;
+  if (max > 0) {
+    const std::size_t held = render::resident_bytes();
+    room = held < max ? (max - held) / 3 : 0;
+  }
+  const std::size_t limit = static_cast<std::size_t>(std::min<uint64_t>(left, room));
+  std::string text;
+  if (!append_text(text, v, quote_strings, limit)) {
+    if (room < left)
+      fail(loc, fmt::format("this text would need more than {} more memory, past the memory limit of {} (raise it "
+                            "with --max-memory)",
+                            render::size_in_words(2 * room), render::size_in_words(max)));
+    // Past the step budget: spend it all and one more, which fails with the budget's message.
+    spend(left + 1, loc, "string bytes built");
+  }
+  spend(text.size(), loc, "string bytes built");
+  return text;
+}
+
 void Interpreter::check_memory(std::size_t bytes, SourceLoc loc, const char* what) {
   const std::size_t max = options_.limits.max_memory;
   if (render::memory_fits(max, bytes)) return;

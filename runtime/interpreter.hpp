@@ -91,6 +91,9 @@ class Interpreter {
   }
   // Fails (located) unless `bytes` more fit under --max-memory; `what` names the value.
   void check_memory(std::size_t bytes, SourceLoc loc, const char* what);
+  // The text of `v` (str, format, print, error, assert), its bytes counted as steps: a text
+  // past the steps left fails at `loc` before it is finished, so it never outgrows the budget.
+  std::string text_of(const Value& v, SourceLoc loc, bool quote_strings = false);
   // The lowest stack address evaluation may reach before failing cleanly (0: unchecked).
   void set_stack_floor(std::uintptr_t floor, std::size_t stack_bytes) {
     stack_floor_ = floor;

@@ -130,13 +130,9 @@ std::string to_text(const Value& v, bool quote_strings) {
     case Type::Color:
       return fmt::format("rgb({}, {}, {})", num_text(v.v.x), num_text(v.v.y), num_text(v.v.z));
     case Type::List: {
-      std::string s = "[";
-      const auto& items = as_list(v);
-      for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i) s += ", ";
-        s += to_text(items[i], true);
-      }
-      return s + "]";
+      std::string s;
+      append_text(s, v, quote_strings, SIZE_MAX);
+      return s;
     }
     case Type::Range:
       return fmt::format("{} {} {} step {}", num_text(v.v.x), v.inclusive ? "..=" : "..", num_text(v.v.y),
@@ -162,6 +158,22 @@ std::string to_text(const Value& v, bool quote_strings) {
       return "<random stream>";
   }
   return "?";
+}
+
+bool append_text(std::string& out, const Value& v, bool quote_strings, std::size_t limit) {
+  if (v.type != Type::List) {
+    out += to_text(v, quote_strings);
+    return out.size() <= limit;
+  }
+  // Lists append in place: no temporary per level, so the cost is the text's size.
+  out += '[';
+  const auto& items = as_list(v);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i) out += ", ";
+    if (!append_text(out, items[i], true, limit)) return false;
+  }
+  out += ']';
+  return out.size() <= limit;
 }
 
 bool equal(const Value& a, const Value& b) {

@@ -175,6 +175,10 @@ inline const render::Mat4& as_transform(const Value& v) { return static_cast<con
 // Text form used by str(), format() and print(): numbers in shortest form ("3", "0.25"),
 // vectors "<1, 2, 3>", colors "rgb(1, 0, 0)", lists "[1, \"a\"]" (strings quoted inside).
 std::string to_text(const Value& v, bool quote_strings = false);
+// The same text appended to `out`, stopping (false) once `out` holds more than `limit` bytes:
+// a list that holds itself many times over (`xs = [xs, xs]` 40 times) has a small value but a
+// text of 2^40 elements, so scenes convert through this with their step budget as the limit.
+bool append_text(std::string& out, const Value& v, bool quote_strings, std::size_t limit);
 
 // Structural equality (numbers, bools, strings, vectors, colors, lists, ranges); identity
 // for heap objects such as materials.

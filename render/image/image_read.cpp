@@ -9,6 +9,7 @@
 #include <stb_image.h>
 
 #include "render/image/image.hpp"
+#include "render/scene/resource_limits.hpp"
 
 namespace rts::render {
 
@@ -24,7 +25,7 @@ struct StbFree {
 
 }  // namespace
 
-Image read_image(const std::string& path, SourceRef where, Encoding encoding) {
+Image read_image(const std::string& path, SourceRef where, Encoding encoding, std::size_t max_memory) {
   auto fail = [&](const std::string& why) {
     return RenderError(where, fmt::format("cannot read image '{}': {}", path, why));
   };
@@ -34,7 +35,7 @@ Image read_image(const std::string& path, SourceRef where, Encoding encoding) {
   std::size_t got = std::fread(head, 1, sizeof head, file);
   if (got == sizeof head && std::memcmp(head, kPngSignature, sizeof head) == 0) {
     std::fclose(file);
-    return read_png(path, where, encoding);
+    return read_png(path, where, encoding, max_memory);
   }
   std::rewind(file);
   int w = 0, h = 0, channels = 0;
@@ -47,8 +48,17 @@ Image read_image(const std::string& path, SourceRef where, Encoding encoding) {
     throw fail(fmt::format("image too large ({}x{})", w, h));
   }
   std::rewind(file);
+  const bool hdr = stbi_is_hdr_from_file(file);
+  // stb's decoded pixels (bytes, or floats for HDR) and the float image, before either is made.
+  const std::size_t pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  const std::size_t needed = pixels * 3 * ((hdr ? sizeof(float) : 1) + sizeof(float));
+  if (!memory_fits(max_memory, needed)) {
+    std::fclose(file);
+    throw image_over_memory(path, where, w, h, needed, max_memory);
+  }
+  std::rewind(file);
   Image image(w, h);
-  if (stbi_is_hdr_from_file(file)) {
+  if (hdr) {
     // Radiance HDR stores linear radiance: no decoding, whatever the color space says.
     std::rewind(file);
     std::unique_ptr<float, StbFree> px(stbi_loadf_from_file(file, &w, &h, &channels, 3));

@@ -330,6 +330,9 @@ struct DecodedPng {
   std::vector<unsigned char> pixels;      // RGB rows, big-endian samples when 16-bit
   std::vector<png_bytep> row_pointers;
   bool too_large = false;
+  std::size_t max_memory = 0;             // in: --max-memory (0: no limit)
+  std::size_t needed = 0;                 // out, when over_memory: bytes decoding would take
+  bool over_memory = false;
 };
 
 // Decodes io.file into out. Returns false on any libpng error. Only trivially destructible
@@ -373,6 +376,14 @@ bool decode_png(PngIo& io, DecodedPng& out) {
   out.height = height;
   out.bits = png_get_bit_depth(png, info) == 16 ? 16 : 8;
   const std::size_t stride = png_get_rowbytes(png, info);
+  // The decoded rows, their pointers and the float image made from them, before any is made.
+  const std::size_t needed = (stride + sizeof(png_bytep)) * height + std::size_t(width) * height * 3 * sizeof(float);
+  if (!memory_fits(out.max_memory, needed)) {
+    out.over_memory = true;
+    out.needed = needed;
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
   out.pixels.resize(stride * height);
   out.row_pointers.resize(height);
   for (png_uint_32 y = 0; y < height; ++y) out.row_pointers[y] = out.pixels.data() + stride * y;
@@ -438,7 +449,14 @@ void write_png(const std::string& path, const Image& image, int bits, Encoding e
   }
 }
 
-Image read_png(const std::string& path, SourceRef where, Encoding encoding) {
+RenderError image_over_memory(const std::string& path, SourceRef where, long long width, long long height,
+                              std::size_t bytes, std::size_t max_memory) {
+  return RenderError(where, fmt::format("cannot read image '{}': its {}x{} pixels need {} more memory, past the memory "
+                                        "limit of {} (raise it with --max-memory)",
+                                        path, width, height, size_in_words(bytes), size_in_words(max_memory)));
+}
+
+Image read_png(const std::string& path, SourceRef where, Encoding encoding, std::size_t max_memory) {
   auto fail = [&](const std::string& why) -> RenderError {
     return RenderError(where, fmt::format("cannot read image '{}': {}", path, why));
   };
@@ -456,10 +474,13 @@ Image read_png(const std::string& path, SourceRef where, Encoding encoding) {
   PngIo io;
   io.file = file;
   DecodedPng decoded;
+  decoded.max_memory = max_memory;
   if (!decode_png(io, decoded)) {
     if (decoded.too_large) {
       throw fail(fmt::format("image too large ({}x{})", decoded.width, decoded.height));
     }
+    if (decoded.over_memory)
+      throw image_over_memory(path, where, decoded.width, decoded.height, decoded.needed, max_memory);
     throw fail(io_failure(io));
   }
 

@@ -228,7 +228,8 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
   return sample(*images_[0], uv.x, uv.y);
 }
 
-std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used) {
+std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used,
+                                              std::size_t max_memory) {
   // (path, linear) → image, each file loaded once per color space.
   std::map<std::pair<std::string, bool>, std::shared_ptr<const Image>> loaded;
   auto load = [&](const std::string& path, const TextureDesc& desc) {
@@ -236,7 +237,7 @@ std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std:
     auto it = loaded.find(key);
     if (it == loaded.end()) {
       auto fresh = std::make_shared<const Image>(
-          read_image(path, desc.loc, desc.linear ? Encoding::Linear : Encoding::SRGB));
+          read_image(path, desc.loc, desc.linear ? Encoding::Linear : Encoding::SRGB, max_memory));
       it = loaded.emplace(std::move(key), std::move(fresh)).first;
     }
     return it->second;

@@ -55,6 +55,9 @@ class CompiledTexture {
 // Loads each distinct image once. Throws RenderError located at the texture's SourceRef when
 // an image is missing or unreadable. With `used` (by TextureId), images no placed material
 // refers to are never opened (their CompiledTexture has no image and is never evaluated).
-std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used = nullptr);
+// `max_memory` (--max-memory, 0: no limit): each image file is checked against it from its
+// header before its pixels are decoded.
+std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used = nullptr,
+                                              std::size_t max_memory = 0);
 
 }  // namespace rts::render

@@ -48,6 +48,19 @@ expect_grep "$TMP/err" "list_bomb.rts:2:[0-9]+: error: .*list elements built.*--
 printf 'let s = "ab"\nfor i in 0 .. 64 { s = s + s }\n' > "$TMP/string_bomb.rts"
 expect_exit 1 "doubling string (defect 4)" -- "${T[@]}" "$RTS" check "$TMP/string_bomb.rts"
 expect_grep "$TMP/err" "string_bomb.rts:2:[0-9]+: error: " "string error is located"
+# A list that holds itself twice, 40 times over, is small, but its text has 2^40 elements:
+# print, str, format, error and assert stop converting it at the step or memory budget.
+for fn in print str error; do
+  printf 'let xs = [1]\nfor i in 0 .. 40 { xs = [xs, xs] }\n%s(xs)\n' "$fn" > "$TMP/text_bomb_$fn.rts"
+  expect_exit 1 "$fn of a self-doubled list, step budget" -- "${T[@]}" "$RTS" check "$TMP/text_bomb_$fn.rts" \
+    --max-steps 1000000
+  expect_grep "$TMP/err" "text_bomb_$fn.rts:3:1: error: evaluation ran more than 1000000 steps.*string bytes built" \
+    "$fn's runaway text is located"
+done
+expect_exit 1 "print of a self-doubled list, memory budget" -- "${T[@]}" "$RTS" check "$TMP/text_bomb_print.rts" \
+  --max-memory 64M --max-steps 100000000000
+expect_grep "$TMP/err" "text_bomb_print.rts:3:1: error: this text would need more than [0-9.]+ MiB more memory, past the memory limit of 64 MiB" \
+  "the text's memory error is located"
 # Under an address-space ulimit the system refuses first: still located, exit 1, never
 # "internal error: std::bad_alloc" (exit 70).
 if [[ $SANITIZED == 0 ]]; then
@@ -72,6 +85,29 @@ expect_exit 3 "image past the memory limit" -- "$RTS" render "$TMP/ok.rts" -o "$
   --width 20000 --height 5000 --aov normal,depth --max-memory 64M
 expect_grep "$TMP/err" "ok.rts:1:1: error: a 20000x5000 image and its AOVs needs [0-9.]+ GiB, past the memory limit of 64 MiB" \
   "image memory error is located"
+# So is an image texture, from its header, before its pixels are decoded: a 4000x4000 PNG of
+# 16 KB needs about 240 MiB as linear floats.
+python3 - "$TMP/huge_texture.png" <<'PY'
+import struct, sys, zlib
+w = h = 4000
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
+rows = zlib.compress((b"\0" + bytes(w)) * h, 9)
+png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 0, 0, 0, 0)) + chunk(b"IDAT", rows) + chunk(b"IEND", b"")
+open(sys.argv[1], "wb").write(png)
+PY
+printf 'settings { width = 8 height = 8 }
+point_light { position = <0, 5, -5> }
+sphere { radius = 1
+  material = material { texture = image_texture { file = "huge_texture.png" } } }
+' \
+  > "$TMP/huge_texture.rts"
+expect_exit 3 "image texture past the memory limit" -- "${T[@]}" "$RTS" render "$TMP/huge_texture.rts" \
+  -o "$TMP/huge_texture_out.png" --no-progress --max-memory 64M
+expect_grep "$TMP/err" "huge_texture.rts:4:[0-9]+: error: cannot read image .*huge_texture.png': its 4000x4000 pixels need [0-9.]+ MiB more memory, past the memory limit of 64 MiB \(raise it with --max-memory\)" \
+  "texture memory error is located"
+expect_exit 0 "the same texture within the default limit" -- "${T[@]}" "$RTS" render "$TMP/huge_texture.rts" \
+  -o "$TMP/huge_texture_out.png" --no-progress
 
 # ---- groups multiplying instances (defect 6) ------------------------------------------------
 printf 'let g = group { sphere { radius = 1 } }\nfor i in 0 .. 40 {\n  g = group { g  g translate <1,0,0> }\n}\ng\n' \
