@@ -204,11 +204,19 @@ struct Builder {
   }
 };
 
+template <class PrimRef>
+BVH build_from(std::vector<PrimRef> refs);
+
 template <class PrimRef, class Box>
 BVH build_with(const std::vector<Box>& primitive_bounds) {
-  BVH bvh;
   std::vector<PrimRef> refs(primitive_bounds.size());
   for (std::size_t i = 0; i < refs.size(); ++i) refs[i] = PrimRef(primitive_bounds[i], static_cast<uint32_t>(i));
+  return build_from(std::move(refs));
+}
+
+template <class PrimRef>
+BVH build_from(std::vector<PrimRef> refs) {
+  BVH bvh;
   // Room for the most nodes a tree can have (2n - 1), and no shrink_to_fit afterwards: capacity
   // never written is never resident, while growing by doubling (or trimming at the end) copies
   // the array at the peak, and the freed copies stay resident in the threads' heaps. Profile
@@ -235,6 +243,15 @@ BVH build_bvh(const std::vector<FloatBox>& primitive_bounds) {
   if (primitive_bounds.empty()) return BVH{};
   BVH bvh = build_with<CompactRef>(primitive_bounds);
   release_free_memory(primitive_bounds.size());
+  return bvh;
+}
+
+BVH build_bvh(std::size_t count, const std::function<FloatBox(std::size_t)>& box_of) {
+  if (count == 0) return BVH{};
+  std::vector<CompactRef> refs(count);
+  for (std::size_t i = 0; i < count; ++i) refs[i] = CompactRef(box_of(i), static_cast<uint32_t>(i));
+  BVH bvh = build_from(std::move(refs));
+  release_free_memory(count);
   return bvh;
 }
 

@@ -1,6 +1,7 @@
 // The BVHs against brute force: the same closest hit (and the same occlusion answer) for many
 // random rays, over random spheres (top level) and random triangles (a mesh's bottom level).
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -98,6 +99,30 @@ TEST_CASE("mesh BVH over random triangles finds the brute-force closest hit", "[
     CHECK(accel.occluded(ray, Interval(0.0, 0.5)) == (best <= 0.5));
   }
   CHECK(hits > kRays / 10);
+}
+
+TEST_CASE("mesh BVH: triangles left out (bad index, infinite vertex) keep the others' indices", "[bvh]") {
+  // Five unit triangles side by side along x; the second and fourth cannot be hit.
+  auto mesh = std::make_shared<MeshData>();
+  for (int i = 0; i < 5; ++i) {
+    const float x = static_cast<float>(2 * i);
+    mesh->positions.push_back({x, 0, 0});
+    mesh->positions.push_back({x + 1, 0, 0});
+    mesh->positions.push_back({x, 1, 0});
+    const uint32_t base = static_cast<uint32_t>(3 * i);
+    mesh->indices.insert(mesh->indices.end(), {base, base + 1, base + 2});
+  }
+  mesh->indices[3 * 1 + 2] = 999;                              // triangle 1: index out of range
+  mesh->positions[3 * 3 + 1].y = std::numeric_limits<float>::infinity();  // triangle 3: not finite
+  MeshAccel accel(mesh);
+  CHECK(accel.triangle_count() == 3);
+  for (int i = 0; i < 5; ++i) {
+    Ray ray{Vec3(2 * i + 0.25, 0.25, -1), Vec3(0, 0, 1)};
+    SurfaceHit h;
+    const bool found = accel.intersect(ray, Interval::positive(), h, false);
+    CHECK(found == (i % 2 == 0));
+    if (found) CHECK(h.triangle == static_cast<uint32_t>(i));  // the mesh's own index
+  }
 }
 
 TEST_CASE("BVH build: every primitive appears once; leaves are small", "[bvh]") {
