@@ -83,6 +83,8 @@ class Srgb8Encoder {
     return static_cast<unsigned>(std::upper_bound(starts_.begin(), starts_.end(), linear) -
                                  starts_.begin());
   }
+  // The linear value where code k + 1 starts (k < 255): encode(v) counts these at or below v.
+  double start(int k) const { return starts_[static_cast<std::size_t>(k)]; }
 
  private:
   std::array<double, kCodes8 - 1> starts_{};
@@ -97,9 +99,16 @@ class Srgb8Encoder {
 class FastSrgb8 {
  public:
   explicit FastSrgb8(const Srgb8Encoder& exact) : exact_(exact) {
+    // Both ends of the ranges grow with k, so their codes are counted by two cursors that only
+    // move forward over the 255 thresholds: what encode() answers, without a binary search per
+    // key. Profile finding (callgrind, a 16x12 render): the 2 x 260,097 searches were 49.5M of
+    // the process's 59M instructions, on every render.
+    int lo = 0, hi = 0;
     for (uint32_t k = 0; k < kKeys; ++k) {
-      const unsigned lo = exact.encode(std::bit_cast<float>(k << kShift));
-      const unsigned hi = exact.encode(std::bit_cast<float>((k << kShift) | ((1u << kShift) - 1)));
+      const double lo_value = std::bit_cast<float>(k << kShift);
+      const double hi_value = std::bit_cast<float>((k << kShift) | ((1u << kShift) - 1));
+      while (lo < kCodes8 - 1 && exact.start(lo) <= lo_value) ++lo;
+      while (hi < kCodes8 - 1 && exact.start(hi) <= hi_value) ++hi;
       table_[k] = lo == hi ? static_cast<uint16_t>(lo) : kSearch;
     }
   }
