@@ -14,6 +14,7 @@ RUNS="${RUNS:-3}"
 THREADS="${THREADS:-2}"
 MAX="${MAX:-4194304}"
 build="$root/${RTS_BUILD_DIR:-build}"
+load_at_start="$(cut -d' ' -f1-3 /proc/loadavg)"
 "$root/scripts/build" --target rts >&2
 rts="$build/cli/rts"
 data="$build/bench-growth"
@@ -67,7 +68,7 @@ for n in 23 45 91 181 362 724 1448; do
 done
 
 cpu_model="$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)"
-header="Measured $(date -u '+%Y-%m-%d %H:%M') UTC on $(nproc) CPUs ($cpu_model), load average at start $(cut -d' ' -f1-3 /proc/loadavg); 400x300, 1 spp, $THREADS threads, medians of $RUNS runs. Peak memory is the whole process's."
+header="Measured $(date -u '+%Y-%m-%d %H:%M') UTC on $(nproc) CPUs ($cpu_model), load average at start $load_at_start; 400x300, 1 spp, $THREADS threads, medians of $RUNS runs. Peak memory is the whole process's."
 python3 - "$series_file" "$data" "$header" "${NO_DOC:-0}" "$root" <<'PY'
 import json, os, subprocess, sys
 rows_file, data, header, no_doc, root = sys.argv[1:6]
@@ -94,13 +95,9 @@ for name, col, title, unit in plots:
     subprocess.run([sys.executable, os.path.join(root, "bench/plot_svg.py"),
                     os.path.join(root, f"docs/images/perf_growth_{name}.svg"), title, "primitives", unit,
                     "log", "log", path], check=True)
-doc = os.path.join(root, "docs/performance.md")
-s = open(doc).read()
-begin, end = "<!-- growth:begin (written by bench/growth.sh) -->", "<!-- growth:end -->"
-if begin in s and end in s:
-    s = s[:s.index(begin) + len(begin)] + "\n" + text + "\n" + s[s.index(end):]
-else:
-    s += "\n" + begin + "\n" + text + "\n" + end + "\n"
-open(doc, "w").write(s)
+table_file = os.path.join(data, "table.md")
+open(table_file, "w").write(text + "\n")
+subprocess.run([sys.executable, os.path.join(root, "bench/write_doc_section.py"), os.path.join(root, "docs/performance.md"),
+                "growth", "bench/growth.sh", table_file], check=True)
 print("wrote the table into docs/performance.md and docs/images/perf_growth_*.svg", file=sys.stderr)
 PY

@@ -132,17 +132,6 @@ cat "$table"
 
 if [[ "${NO_DOC:-}" != 1 ]]; then
   doc="$root/docs/performance.md"
-  python3 - "$doc" "$table" <<'EOF'
-import sys
-doc, table = sys.argv[1], sys.argv[2]
-text = open(doc).read()
-begin, end = "<!-- race:begin (written by bench/race.sh) -->", "<!-- race:end -->"
-block = begin + "\n" + open(table).read().rstrip("\n") + "\n" + end
-if begin in text and end in text:
-    text = text[:text.index(begin)] + block + text[text.index(end) + len(end):]
-else:
-    text = text.rstrip("\n") + "\n\n" + block + "\n"
-open(doc, "w").write(text)
-EOF
+  python3 "$root/bench/write_doc_section.py" "$doc" race bench/race.sh "$table"
   echo "wrote the table into docs/performance.md" >&2
 fi

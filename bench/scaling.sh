@@ -13,6 +13,7 @@ H="${H:-300}"
 RUNS="${RUNS:-3}"
 SCENES="${SCENES:-spheres soft glass terrain}"
 build="$root/${RTS_BUILD_DIR:-build}"
+load_at_start="$(cut -d' ' -f1-3 /proc/loadavg)"
 "$root/scripts/build" --target rts >&2
 rts="$build/cli/rts"
 data="$build/bench-race"   # shared with bench/race.sh (the generated terrain)
@@ -51,7 +52,7 @@ for scene in $SCENES; do
 done
 
 cpu_model="$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)"
-header="Measured $(date -u '+%Y-%m-%d %H:%M') UTC on $cores CPUs ($cpu_model), load average at start $(cut -d' ' -f1-3 /proc/loadavg); ${W}x${H}, render phase only (\`seconds.render\`), medians of $RUNS alternating runs."
+header="Measured $(date -u '+%Y-%m-%d %H:%M') UTC on $cores CPUs ($cpu_model), load average at start $load_at_start; ${W}x${H}, render phase only (\`seconds.render\`), medians of $RUNS alternating runs."
 python3 - "$rows" "$header" "${NO_DOC:-0}" "$root" "$data" <<'PY'
 import json, os, subprocess, sys
 rows_file, header, no_doc, root, data = sys.argv[1:6]
@@ -76,13 +77,9 @@ path = os.path.join(data, "scaling_series.json")
 json.dump(series, open(path, "w"))
 subprocess.run([sys.executable, os.path.join(root, "bench/plot_svg.py"), os.path.join(root, "docs/images/perf_scaling.svg"),
                 "Render-phase speedup over one thread", "threads", "speedup", "linear", "linear", path], check=True)
-doc = os.path.join(root, "docs/performance.md")
-s = open(doc).read()
-begin, end = "<!-- scaling:begin (written by bench/scaling.sh) -->", "<!-- scaling:end -->"
-if begin in s and end in s:
-    s = s[:s.index(begin) + len(begin)] + "\n" + text + "\n" + s[s.index(end):]
-else:
-    s += "\n" + begin + "\n" + text + "\n" + end + "\n"
-open(doc, "w").write(s)
+table_file = os.path.join(data, "scaling_table.md")
+open(table_file, "w").write(text + "\n")
+subprocess.run([sys.executable, os.path.join(root, "bench/write_doc_section.py"), os.path.join(root, "docs/performance.md"),
+                "scaling", "bench/scaling.sh", table_file], check=True)
 print("wrote the table into docs/performance.md and docs/images/perf_scaling.svg", file=sys.stderr)
 PY

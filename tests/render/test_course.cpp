@@ -43,64 +43,56 @@ struct Tracer {
   }
 };
 
-// A floor that shows only its highlight, lit and seen from straight above: R·V = 1, so the
-// pixel is exactly specular * specular_color * light.
-Rgb highlight_seen_from_above(double specular, Color specular_color) {
-  SceneDesc s;
+// A material that shows only its highlight.
+MaterialDesc highlight_only() {
   MaterialDesc m;
   m.ambient = 0;
   m.diffuse = 0;
-  m.specular = specular;
-  m.specular_color = specular_color;
   m.shininess = 7;
-  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, m)));
+  return m;
+}
+
+// `floor` (in the y = 0 plane) with material `m`, lit and seen from straight above (from
+// `eye`): R·V = 1, so the pixel is exactly the highlight, specular * specular_color * light.
+Rgb seen_from_above(SceneDesc s, const MaterialDesc& m, ShapeGeometry floor, Vec3 eye = Vec3(0, 2, 0)) {
+  place(s, add_shape(s, std::move(floor), add_material(s, m)));
   LightDesc l;
   l.position = Vec3(0, 4, 0);
   place(s, add_light(s, l));
   Tracer t(std::move(s));
-  return t.trace(Ray{Vec3(0, 2, 0), Vec3(0, -1, 0)});
+  return t.trace(Ray{eye, Vec3(0, -1, 0)});
+}
+
+Rgb highlight_seen_from_above(double specular, Color specular_color) {
+  MaterialDesc m = highlight_only();
+  m.specular = specular;
+  m.specular_color = specular_color;
+  return seen_from_above(SceneDesc{}, m, Plane{Vec3(0, 1, 0), 0.0});
 }
 
 // The same highlight where it comes from per-vertex values (a two-triangle floor mesh whose
-// four corners all carry `spec`) or from a texture on `specular` (a checker whose two colors
-// are both `tex`).
+// four corners all carry `spec`; seen just off its diagonal edge) ...
 Rgb vertex_highlight(glm::vec3 spec) {
   SceneDesc s;
-  MaterialDesc m;
-  m.ambient = 0;
-  m.diffuse = 0;
-  m.shininess = 7;
   auto mesh = std::make_shared<MeshData>();
   mesh->positions = {{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}};
   mesh->indices = {0, 2, 1, 0, 3, 2};
   mesh->specular.assign(4, spec);
   s.meshes.push_back(mesh);
-  place(s, add_shape(s, MeshRef{0, false}, add_material(s, m)));
-  LightDesc l;
-  l.position = Vec3(0, 4, 0);
-  place(s, add_light(s, l));
-  Tracer t(std::move(s));
-  return t.trace(Ray{Vec3(0.01, 2, 0.02), Vec3(0, -1, 0)});
+  return seen_from_above(std::move(s), highlight_only(), MeshRef{0, false}, Vec3(0.01, 2, 0.02));
 }
 
+// ... or from a texture on `specular` (a checker whose two colors are both `tex`).
 Rgb textured_highlight(Color tex, Color specular_color) {
   SceneDesc s;
   TextureDesc checker;
   checker.color1 = checker.color2 = tex;
   s.textures.push_back(checker);
-  MaterialDesc m;
-  m.ambient = 0;
-  m.diffuse = 0;
+  MaterialDesc m = highlight_only();
   m.specular = 1.0;   // what the builder sets for a texture
   m.specular_color = specular_color;
   m.specular_texture = 0;
-  m.shininess = 7;
-  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, m)));
-  LightDesc l;
-  l.position = Vec3(0, 4, 0);
-  place(s, add_light(s, l));
-  Tracer t(std::move(s));
-  return t.trace(Ray{Vec3(0, 2, 0), Vec3(0, -1, 0)});
+  return seen_from_above(std::move(s), m, Plane{Vec3(0, 1, 0), 0.0});
 }
 
 double angle_between(const Vec3& a, const Vec3& b) {
