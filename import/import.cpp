@@ -45,8 +45,9 @@ Format detect_format(const std::string& text, const std::string& path) {
 ImportResult import_scene(const std::string& text, Format format, const ImportOptions& options) {
   SceneText out;
   out.header.push_back(fmt::format("Imported by `rts import` from {} ({}).", options.source_name, format_name(format)));
-  out.header.push_back("Course conventions kept: right-handed coordinates (mirrored below), the course's shading");
-  out.header.push_back("terms as rts materials. See docs/from-courses.md.");
+  out.header.push_back("Course conventions kept: right-handed coordinates and the vertical field of view (the");
+  out.header.push_back("camera's handedness and fov_axis), the course's shading terms as rts materials. See");
+  out.header.push_back("docs/from-courses.md.");
   ImportResult result;
   result.format = format;
   switch (format) {
