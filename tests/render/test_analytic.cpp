@@ -10,36 +10,10 @@
 #include "render/shade/integrator.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"
+#include "tracer.hpp"
 
 using namespace rts::render;
 using namespace rts::render::test;
-
-namespace {
-
-// Everything the Integrator needs, built from a SceneDesc, kept alive together.
-struct Tracer {
-  SceneDesc scene;
-  FlatScene flat;
-  std::unique_ptr<World> world;
-  std::vector<CompiledLight> lights;
-  std::vector<CompiledTexture> textures;
-  std::unique_ptr<Integrator> integrator;
-
-  explicit Tracer(SceneDesc s, int max_depth = 5) : scene(std::move(s)) {
-    flat = flatten_scene(scene);
-    world = std::make_unique<World>(scene, flat);
-    lights = compile_lights(flat.lights);
-    integrator = std::make_unique<Integrator>(*world, lights, scene.materials, textures,
-                                              scene.settings, max_depth);
-  }
-  Rgb trace(const Ray& r) const {
-    Sampler sampler(0, 0, 0, 0);
-    RayCounters counters;
-    return integrator->trace(r, sampler, counters);
-  }
-};
-
-}  // namespace
 
 TEST_CASE("sphere silhouette covers pi r^2 of an orthographic view", "[analytic]") {
   const double r = 1.3, view = 4.0;

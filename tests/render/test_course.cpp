@@ -14,34 +14,12 @@
 #include "render/shade/texture.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"
+#include "tracer.hpp"
 
 using namespace rts::render;
 using namespace rts::render::test;
 
 namespace {
-
-// Traces single rays through a SceneDesc (kept alive with everything built from it).
-struct Tracer {
-  SceneDesc scene;
-  FlatScene flat;
-  std::unique_ptr<World> world;
-  std::vector<CompiledLight> lights;
-  std::vector<CompiledTexture> textures;
-  std::unique_ptr<Integrator> integrator;
-
-  explicit Tracer(SceneDesc s) : scene(std::move(s)) {
-    flat = flatten_scene(scene);
-    world = std::make_unique<World>(scene, flat);
-    lights = compile_lights(flat.lights);
-    textures = compile_textures(scene);
-    integrator = std::make_unique<Integrator>(*world, lights, scene.materials, textures, scene.settings, 5);
-  }
-  Rgb trace(const Ray& r) const {
-    Sampler sampler(0, 0, 0, 0);
-    RayCounters counters;
-    return integrator->trace(r, sampler, counters);
-  }
-};
 
 // A material that shows only its highlight.
 MaterialDesc highlight_only() {
