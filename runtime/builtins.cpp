@@ -41,7 +41,9 @@ Value finite(const BuiltinCall& c, double r) {
       // An excerpt: the arguments are there to recognise the call, and a list may be huge.
       constexpr std::size_t kShown = 200;
       if (!append_text(args, c.args[i], true, kShown)) {
-        args.resize(kShown);
+        std::size_t cut = kShown;
+        while (cut > 0 && (static_cast<unsigned char>(args[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+        args.resize(cut);
         args += "…";
         break;
       }

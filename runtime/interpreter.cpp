@@ -572,7 +572,7 @@ std::string Interpreter::text_of(const Value& v, SourceLoc loc, bool quote_strin
     if (room < left)
       fail(loc, fmt::format("this text would need more than {} more memory, past the memory limit of {} (raise it "
                             "with --max-memory)",
-                            render::size_in_words(2 * room), render::size_in_words(max)));
+                            render::size_in_words(room), render::size_in_words(max)));
     // Past the step budget: spend it all and one more, which fails with the budget's message.
     spend(left + 1, loc, "string bytes built");
   }
