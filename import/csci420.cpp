@@ -76,11 +76,7 @@ struct Csci {
     out.world.open("triangle");
     out.world.line(geometry);
     out.world.line(fmt::format("vertex_colors = [{}, {}, {}]", rgb(v[0].dif), rgb(v[1].dif), rgb(v[2].dif)));
-    const bool gray_spe = v[0].spe == glm::dvec3(v[0].spe.x) && v[1].spe == glm::dvec3(v[1].spe.x) &&
-                          v[2].spe == glm::dvec3(v[2].spe.x);
-    // All gray: numbers; else every vertex as a color (one list holds one kind).
-    auto spe = [&](const glm::dvec3& s) { return gray_spe ? num(s.x) : fmt::format("rgb({}, {}, {})", num(s.x), num(s.y), num(s.z)); };
-    out.world.line(fmt::format("vertex_specular = [{}, {}, {}]", spe(v[0].spe), spe(v[1].spe), spe(v[2].spe)));
+    out.world.line("vertex_specular = " + specular_list({v[0].spe, v[1].spe, v[2].spe}));
     out.world.line(fmt::format("vertex_shininess = [{}, {}, {}]", num(v[0].shi), num(v[1].shi), num(v[2].shi)));
     out.world.line("material = " + base);
     out.world.close();

@@ -299,22 +299,17 @@ struct Uw {
       // Per-vertex materials: an inline mesh carrying them (an OBJ file cannot).
       if (per_vertex->kind != Value::Tuple || per_vertex->items.size() != p.size())
         fail(*per_vertex, "expected one material per point");
-      std::vector<std::string> colors, spec, shin;
-      std::vector<glm::dvec3> spec_colors;
+      std::vector<std::string> colors, shin;
+      std::vector<glm::dvec3> spec;
       for (const Value& m : per_vertex->items) {
         if (m.kind != Value::Block) fail(m, "expected a material { ... }");
         const Value* d = m.prop("diffuse");
         const Value* s = m.prop("specular");
         const Value* sh = m.prop("shininess");
         colors.push_back(rgb(d ? triple(*d) : glm::dvec3(1)));
-        spec_colors.push_back(s ? triple(*s) : glm::dvec3(0));
+        spec.push_back(s ? triple(*s) : glm::dvec3(0));
         shin.push_back(num(sh ? number(*sh) : 32.0));
       }
-      // Numbers when every vertex's specular is gray, else colors (one list holds one kind).
-      bool gray = true;
-      for (const glm::dvec3& s : spec_colors) gray = gray && s == glm::dvec3(s.x);
-      for (const glm::dvec3& s : spec_colors)
-        spec.push_back(gray ? num(s.x) : fmt::format("rgb({}, {}, {})", num(s.x), num(s.y), num(s.z)));
       auto join = [](const std::vector<std::string>& v) {
         std::string s;
         for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
@@ -330,7 +325,7 @@ struct Uw {
       if (!nv.empty()) w.line("normals = " + join(nv));
       else w.line("smooth = false");
       w.line("vertex_colors = " + join(colors));
-      w.line("vertex_specular = " + join(spec));
+      w.line("vertex_specular = " + specular_list(spec));
       w.line("vertex_shininess = " + join(shin));
       if (!mat.empty()) w.line(mat.substr(2));
       w.close(suffix);

@@ -1,5 +1,6 @@
 #include "import/writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -35,9 +36,17 @@ std::string matrix_list(const double m[4][4]) {
                      num(m[1][3]), num(m[2][3]));
 }
 
-double mean(const glm::dvec3& c) { return (c.x + c.y + c.z) / 3.0; }
-
 std::string specular_value(const glm::dvec3& c) { return c.x == c.y && c.y == c.z ? num(c.x) : rgb(c); }
+
+std::string specular_list(const std::vector<glm::dvec3>& colors) {
+  const bool gray = std::all_of(colors.begin(), colors.end(), [](const glm::dvec3& c) { return c == glm::dvec3(c.x); });
+  std::string out;
+  for (const glm::dvec3& c : colors) {
+    out += out.empty() ? "[" : ", ";
+    out += gray ? num(c.x) : fmt::format("rgb({}, {}, {})", num(c.x), num(c.y), num(c.z));
+  }
+  return out + "]";
+}
 
 void Writer::line(const std::string& text) {
   out_.append(static_cast<std::size_t>(depth_) * 4, ' ');

@@ -16,9 +16,11 @@ std::string rts_string(const std::string& s);  // "s" with \ and " escaped
 // A 4x4 column-vector matrix (m[row][col]) as rts's `matrix [...]` list (the 3x3 part column
 // by column, then the translation: the order POV-Ray and rts use).
 std::string matrix_list(const double m[4][4]);
-double mean(const glm::dvec3& c);
 // A course's specular color as rts's `specular` value: a number when gray, else rgb(r, g, b).
 std::string specular_value(const glm::dvec3& c);
+// Per-vertex specular colors as rts's `vertex_specular` list: numbers when every one is gray,
+// else colors (one list holds one kind).
+std::string specular_list(const std::vector<glm::dvec3>& colors);
 
 class Writer {
  public:
