@@ -474,15 +474,17 @@ bool vertex_material(ParamSet& ps, std::size_t vertex_count, MeshData& mesh) {
                                                      ps.kind(), n, vertex_count));
     any = true;
   };
-  if (ps.has("vertex_colors")) {
-    std::vector<Vec3> colors = vector_list(ps, "vertex_colors");
-    count_check("vertex_colors", colors.size());
+  // A list of colors, one per vertex, none negative.
+  auto colors_into = [&](std::string_view name, std::vector<glm::vec3>& out) {
+    std::vector<Vec3> colors = vector_list(ps, name);
+    count_check(name, colors.size());
     for (const Vec3& c : colors) {
-      if (c.x < 0 || c.y < 0 || c.z < 0)
-        throw SceneError(loc_of(ps, "vertex_colors"), "property 'vertex_colors' must not be negative");
-      mesh.colors.emplace_back(c);
+      if (!(c.x >= 0 && c.y >= 0 && c.z >= 0) || !std::isfinite(c.x + c.y + c.z))
+        throw SceneError(loc_of(ps, name), fmt::format("property '{}' must not be negative", name));
+      out.emplace_back(c);
     }
-  }
+  };
+  if (ps.has("vertex_colors")) colors_into("vertex_colors", mesh.colors);
   // `vertex_specular`: numbers (white highlights of that weight) or colors (tinted ones, as
   // CSCI 420's per-vertex `spe` and UW's per-vertex `specular`).
   if (ps.has("vertex_specular")) {
@@ -494,13 +496,7 @@ bool vertex_material(ParamSet& ps, std::size_t vertex_count, MeshData& mesh) {
         mesh.specular.emplace_back(static_cast<float>(x));
       }
     } else if (std::get_if<std::vector<Vec3>>(v)) {
-      std::vector<Vec3> colors = vector_list(ps, "vertex_specular");
-      count_check("vertex_specular", colors.size());
-      for (const Vec3& c : colors) {
-        if (!(c.x >= 0 && c.y >= 0 && c.z >= 0) || !std::isfinite(c.x + c.y + c.z))
-          throw SceneError(loc_of(ps, "vertex_specular"), "property 'vertex_specular' must not be negative");
-        mesh.specular.emplace_back(c);
-      }
+      colors_into("vertex_specular", mesh.specular);
     } else {
       throw SceneError(loc_of(ps, "vertex_specular"),
                        fmt::format("property 'vertex_specular' of {} expects a list of numbers or colors, got a {}",
