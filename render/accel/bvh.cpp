@@ -205,16 +205,6 @@ struct Builder {
 };
 
 template <class PrimRef>
-BVH build_from(std::vector<PrimRef> refs);
-
-template <class PrimRef, class Box>
-BVH build_with(const std::vector<Box>& primitive_bounds) {
-  std::vector<PrimRef> refs(primitive_bounds.size());
-  for (std::size_t i = 0; i < refs.size(); ++i) refs[i] = PrimRef(primitive_bounds[i], static_cast<uint32_t>(i));
-  return build_from(std::move(refs));
-}
-
-template <class PrimRef>
 BVH build_from(std::vector<PrimRef> refs) {
   BVH bvh;
   // Room for the most nodes a tree can have (2n - 1), and no shrink_to_fit afterwards: capacity
@@ -229,6 +219,13 @@ BVH build_from(std::vector<PrimRef> refs) {
   return bvh;
 }
 
+template <class PrimRef, class Box>
+BVH build_with(const std::vector<Box>& primitive_bounds) {
+  std::vector<PrimRef> refs(primitive_bounds.size());
+  for (std::size_t i = 0; i < refs.size(); ++i) refs[i] = PrimRef(primitive_bounds[i], static_cast<uint32_t>(i));
+  return build_from(std::move(refs));
+}
+
 }  // namespace
 
 BVH build_bvh(const std::vector<AABB>& primitive_bounds) {
@@ -240,10 +237,7 @@ BVH build_bvh(const std::vector<AABB>& primitive_bounds) {
 }
 
 BVH build_bvh(const std::vector<FloatBox>& primitive_bounds) {
-  if (primitive_bounds.empty()) return BVH{};
-  BVH bvh = build_with<CompactRef>(primitive_bounds);
-  release_free_memory(primitive_bounds.size());
-  return bvh;
+  return build_bvh(primitive_bounds.size(), [&](std::size_t i) { return primitive_bounds[i]; });
 }
 
 BVH build_bvh(std::size_t count, const std::function<FloatBox(std::size_t)>& box_of) {
