@@ -6,6 +6,7 @@
 #
 #   bench/scaling.sh                          # 400x300, 3 runs, spheres soft glass terrain
 #   W=800 H=600 RUNS=5 SCENES="soft" bench/scaling.sh
+#   RTS_BIN=/path/to/rts NO_DOC=1 bench/scaling.sh   # a binary built elsewhere (another machine)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 W="${W:-400}"
@@ -14,8 +15,12 @@ RUNS="${RUNS:-3}"
 SCENES="${SCENES:-spheres soft glass terrain}"
 build="$root/${RTS_BUILD_DIR:-build}"
 load_at_start="$(cut -d' ' -f1-3 /proc/loadavg)"
-"$root/scripts/build" --target rts >&2
-rts="$build/cli/rts"
+if [[ -n "${RTS_BIN:-}" ]]; then
+  rts="$RTS_BIN"
+else
+  "$root/scripts/build" --target rts >&2
+  rts="$build/cli/rts"
+fi
 data="$build/bench-race"   # shared with bench/race.sh (the generated terrain)
 mkdir -p "$data"
 cp "$root"/bench/race/*.rts "$data/"
