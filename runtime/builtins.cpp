@@ -248,7 +248,7 @@ Value identity(BuiltinCall&) {
 }  // namespace
 
 const std::vector<Builtin>& builtin_table() {
-  static const std::vector<Builtin> table = {
+  static const std::vector<Builtin> table = with_math_builtins({
       {"sin", 1, 1, math1<sin_>},
       {"cos", 1, 1, math1<cos_>},
       {"tan", 1, 1, math1<tan_>},
@@ -289,7 +289,7 @@ const std::vector<Builtin>& builtin_table() {
       {"random", 1, 1, random},
       {"rand", 1, 3, rand},
       {"identity", 0, 0, identity},
-  };
+  });
   return table;
 }
 

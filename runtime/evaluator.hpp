@@ -44,6 +44,9 @@ struct EvalLimits {
 
 struct EvalOptions {
   std::vector<std::string> include_paths;  // -I, searched after the including file's folder
+  // The standard library's folder, searched after the -I folders; "" finds it
+  // (runtime/stdlib_path.hpp: $RTS_STDLIB, the install, or the source tree when uninstalled).
+  std::string stdlib_dir;
   std::vector<Define> defines;             // -D
   EvalLimits limits;
   bool warn_unused = false;                // `rts check`: warn about unused declarations

@@ -11,6 +11,7 @@
 #include "render/scene/params.hpp"
 #include "runtime/ops.hpp"
 #include "runtime/povray_hints.hpp"
+#include "runtime/stdlib_path.hpp"
 
 namespace rts::runtime {
 
@@ -86,6 +87,7 @@ void Interpreter::run(const SourceFile& main) {
     std::string main_dir = fs::path(main.path()).parent_path().string();
     roots.push_back(main_dir.empty() ? "." : main_dir);
     roots.insert(roots.end(), options_.include_paths.begin(), options_.include_paths.end());
+    if (!stdlib_dir().empty()) roots.push_back(stdlib_dir());
     roots.push_back(".");
     roots.insert(roots.end(), options_.allow_read.begin(), options_.allow_read.end());
     read_policy_ = render::ReadPolicy(roots);
@@ -167,10 +169,12 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
   std::vector<fs::path> candidates;
   if (fs::path(s.path).is_absolute()) {
     candidates.emplace_back(s.path);
-  } else {
+  } else if (!names_standard_library(s.path)) {
     candidates.push_back(including_dir / s.path);
     for (const std::string& dir : options_.include_paths) candidates.push_back(fs::path(dir) / s.path);
   }
+  // Then the standard library (docs/library.md): after the scene's own files, so they win.
+  for (fs::path& c : standard_library_candidates(stdlib_dir(), s.path)) candidates.push_back(std::move(c));
   std::error_code ec;
   const fs::path* found = nullptr;
   for (const fs::path& c : candidates) {
@@ -183,12 +187,21 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
       fail(s.loc, fmt::format("cannot include '{}': '{}' is {}, not a scene file", s.path, c.string(), kind));
   }
   if (!found) {
+    if (names_standard_library(s.path))
+      fail(s.loc, fmt::format("cannot find include file '{}' in the standard library{}", s.path,
+                              stdlib_dir().empty() ? " (no standard library folder was found: set RTS_STDLIB)"
+                                                   : " " + stdlib_dir()));
     std::string where = "next to this file";
     if (!options_.include_paths.empty()) {
       where += " or in the -I folders";
       for (std::size_t i = 0; i < options_.include_paths.size(); ++i)
         where += (i ? ", " : " ") + options_.include_paths[i];
     }
+    if (stdlib_dir().empty())
+      where += " (nor a standard library: none was found; set RTS_STDLIB to its folder)";
+    else if (fs::path(s.path).extension() == ".inc" && !fs::path(s.path).has_parent_path())
+      where += fmt::format(" (rts's standard library has no '{}' either; docs/library.md lists its files)",
+                           fs::path(s.path).stem().string());
     fail(s.loc, fmt::format("cannot find include file '{}' {}", s.path, where));
   }
   std::string canonical = fs::weakly_canonical(*found, ec).string();
@@ -228,6 +241,14 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
   include_chain_.pop_back();
   included_.insert(std::move(canonical));
   contexts_.pop_back();
+}
+
+const std::string& Interpreter::stdlib_dir() {
+  if (!stdlib_found_) {
+    stdlib_dir_ = options_.stdlib_dir.empty() ? find_standard_library() : options_.stdlib_dir;
+    stdlib_found_ = true;
+  }
+  return stdlib_dir_;
 }
 
 // ---------------------------------------------------------------------------------------

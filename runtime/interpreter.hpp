@@ -62,6 +62,8 @@ struct BuiltinCall {
   std::size_t argc;
 };
 const std::vector<Builtin>& builtin_table();
+// `table` with the vector and interpolation builtins of builtins_math.cpp appended.
+std::vector<Builtin> with_math_builtins(std::vector<Builtin> table);
 
 class Interpreter {
  public:
@@ -114,6 +116,8 @@ class Interpreter {
   Flow exec_for(const ast::ForStmt& s);
   Flow exec_while(const ast::WhileStmt& s);
   void exec_include(const ast::IncludeStmt& s);
+  // The standard library's folder (options_.stdlib_dir, else found once); "" if none.
+  const std::string& stdlib_dir();
   void count_iteration(SourceLoc loc);
   // Warns about each material, texture, object and macro declared at the top level of the
   // main file and never named again (options_.warn_unused).
@@ -198,6 +202,8 @@ class Interpreter {
   Value return_value_;
 
   double parse_seconds_ = 0.0;
+  std::string stdlib_dir_;  // see stdlib_dir()
+  bool stdlib_found_ = false;
   uint64_t iterations_ = 0;
   std::size_t placements_ = 0;
   uint64_t steps_ = 0;

@@ -70,6 +70,22 @@ contains "$tmp/err" "unknown_property.rts:5:1: note: in call to macro 'ball' fro
 expect 1 "$rts" eval "$tmp/does_not_exist.rts"
 expect 2 "$rts" check
 
+# The standard library: found by the rts binary of the build tree without a path, under its
+# own and POV-Ray's names, and every library picture renders (tiny, one sample).
+printf 'include "colors.inc"\ninclude "std/shapes.rts"\nprint(Gray50)\n' > "$tmp/lib.rts"
+expect 0 "$rts" check "$tmp/lib.rts"
+contains "$tmp/err" "print: rgb(0.5, 0.5, 0.5)"
+for scene in "$src"/docs/images/library_*.rts; do
+  expect 0 "$rts" render "$scene" -o "$tmp/lib.png" --width 48 --height 24 --samples 1 --no-progress
+done
+# Installed elsewhere, RTS_STDLIB points at it, and it is the library searched.
+mkdir -p "$tmp/elsewhere" && printf 'let Gray50 = rgb(0.25)\n' > "$tmp/elsewhere/colors.rts"
+printf 'include "colors.inc"\nprint(Gray50)\n' > "$tmp/lib2.rts"
+expect 0 env RTS_STDLIB="$tmp/elsewhere" "$rts" check "$tmp/lib2.rts"
+contains "$tmp/err" "print: rgb(0.25, 0.25, 0.25)"
+expect 1 env RTS_STDLIB="$tmp/elsewhere" "$rts" check "$tmp/lib.rts"   # no shapes.rts there
+contains "$tmp/err" "cannot find include file 'std/shapes.rts' in the standard library $tmp/elsewhere"
+
 if [[ $failures -gt 0 ]]; then
   echo "$failures check(s) failed" >&2
   exit 1

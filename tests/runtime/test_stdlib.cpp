@@ -1,0 +1,225 @@
+// The standard library (stdlib/): found without a path, POV-Ray's include names mapped onto
+// it, named colours at their standard values, every file evaluating; and the vector and
+// spline builtins against closed forms.
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <catch2/catch.hpp>
+
+#include "eval_helpers.hpp"
+#include "runtime/stdlib_path.hpp"
+
+using namespace rts;
+using namespace rts::render;
+using rts::test::eval_error;
+using rts::test::eval_text;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kStdlib = RTS_SOURCE_DIR "/stdlib";
+
+EvalOptions with_stdlib() {
+  EvalOptions o;
+  o.stdlib_dir = kStdlib;
+  return o;
+}
+
+// Runs `program`, whose assert()s are the checks; a failed assert fails the test with its message.
+void passes(const std::string& program, const EvalOptions& opts = with_stdlib()) {
+  try {
+    eval_text(program, opts);
+  } catch (const LanguageError& e) {
+    FAIL(e.what() << "\nin:\n" << program);
+  }
+}
+
+// sRGB transfer function: linear → encoded byte (what a PNG of a flat-lit white surface holds).
+int srgb_byte(double linear) {
+  double e = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+  return static_cast<int>(std::lround(e * 255));
+}
+
+}  // namespace
+
+TEST_CASE("the standard library is found without a path, and from the build tree", "[eval][stdlib]") {
+  // The test binary lives in the build tree, so the source tree's stdlib/ is found.
+  std::string found = runtime::find_standard_library();
+  REQUIRE(!found.empty());
+  CHECK(fs::equivalent(found, kStdlib));
+  // Without setting stdlib_dir: found by itself.
+  passes("include \"colors.rts\"\nassert(Red == rgb(1, 0, 0))", EvalOptions{});
+  // With the std/ prefix, and under POV-Ray's include name.
+  passes("include \"std/colors.rts\"\nassert(Green == rgb(0, 1, 0))");
+  passes("include \"colors.inc\"\nassert(Gray50 == rgb(0.5))");
+  // Including it under two names is one file: included once, no "already defined".
+  passes("include \"colors.inc\"\ninclude \"colors.rts\"\ninclude \"std/colors.rts\"\nassert(Blue.b == 1)");
+}
+
+TEST_CASE("a scene's own file wins over the library; std/ always means the library", "[eval][stdlib]") {
+  fs::path dir = fs::temp_directory_path() / ("rts_stdlib_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "colors.rts") << "let Red = rgb(0.25)\n";
+  std::ofstream(dir / "own.rts") << "include \"colors.rts\"\nassert(Red == rgb(0.25))\n";
+  std::ofstream(dir / "lib.rts") << "include \"std/colors.rts\"\nassert(Red == rgb(1, 0, 0))\n";
+  SourceManager sources;
+  DiagnosticSink sink(std::cerr);
+  CHECK_NOTHROW(evaluate_file(sources, (dir / "own.rts").string(), with_stdlib(), sink));
+  CHECK_NOTHROW(evaluate_file(sources, (dir / "lib.rts").string(), with_stdlib(), sink));
+  // Reads stay allowed under --allow-read's default roots: the library folder is one of them.
+  EvalOptions restricted = with_stdlib();
+  restricted.restrict_reads = true;
+  CHECK_NOTHROW(evaluate_file(sources, (dir / "lib.rts").string(), restricted, sink));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a missing library file is a located error naming the library", "[eval][stdlib]") {
+  CHECK_THAT(eval_error("include \"std/nope.rts\"", with_stdlib()),
+             Catch::Contains("cannot find include file 'std/nope.rts' in the standard library"));
+  // A POV-Ray include rts lacks gets the usual message; folders never reach into the library.
+  CHECK_THAT(eval_error("include \"woods.inc\"", with_stdlib()),
+             Catch::Contains("cannot find include file 'woods.inc' next to this file (rts's standard library has no "
+                             "'woods' either"));
+  EvalOptions nowhere;
+  nowhere.stdlib_dir = "/nonexistent-rts-stdlib";
+  CHECK_THAT(eval_error("include \"colors.inc\"", nowhere), Catch::Contains("cannot find include file 'colors.inc'"));
+  CHECK_THAT(eval_error("include \"std/../stdlib/colors.rts\"", with_stdlib()),
+             Catch::Contains("cannot find include file"));
+}
+
+TEST_CASE("POV-Ray's colour names keep POV-Ray's values", "[eval][stdlib]") {
+  // POV-Ray 3.7's colors.inc: Green is full green, Gray is 0.752941 (not CSS's #808080),
+  // the GrayNN series are NN/100, Gold is POV-Ray's (0.8, 0.498039, 0.196078).
+  passes(R"rts(include "colors.rts"
+assert(Green == rgb(0, 1, 0), "Green")
+assert(Yellow == rgb(1, 1, 0), "Yellow")
+assert(Gray == rgb(0.752941), "Gray")
+assert(Gray05 == rgb(0.05) and Gray50 == rgb(0.5) and Gray95 == rgb(0.95), "GrayNN")
+assert(Gold == rgb(0.8, 0.498039, 0.196078), "Gold")
+assert(Maroon == rgb(0.556863, 0.137255, 0.419608), "Maroon")
+assert(White == rgb(1) and Black == rgb(0), "White/Black")
+)rts");
+}
+
+TEST_CASE("CSS colour names hold CSS's colours, decoded to linear RGB", "[eval][stdlib]") {
+  // Each name's value, encoded with the sRGB curve, is the byte CSS Color 4 gives it.
+  struct Css {
+    const char* name;
+    int r, g, b;
+  };
+  const Css checks[] = {{"green", 0, 128, 0},         {"gray", 128, 128, 128},  {"red", 255, 0, 0},
+                        {"rebeccapurple", 102, 51, 153}, {"cornflowerblue", 100, 149, 237},
+                        {"tan_color", 210, 180, 140}, {"maroon", 128, 0, 0},    {"white", 255, 255, 255}};
+  for (const Css& c : checks) {
+    SceneDesc s = eval_text(std::string("include \"css_colors.rts\"\nsphere { radius = 1  material = material { color = ") +
+                                c.name + " } }",
+                            with_stdlib());
+    REQUIRE(!s.materials.empty());
+    const Color col = s.materials.back().color;
+    INFO(c.name);
+    CHECK(srgb_byte(col.r) == c.r);
+    CHECK(srgb_byte(col.g) == c.g);
+    CHECK(srgb_byte(col.b) == c.b);
+  }
+  // 148 CSS names (tan as tan_color), both files together without a clash.
+  std::ifstream in(kStdlib + "/css_colors.rts");
+  int lets = 0;
+  for (std::string line; std::getline(in, line);) lets += line.rfind("let ", 0) == 0;
+  CHECK(lets == 148);
+  passes("include \"colors.rts\"\ninclude \"css_colors.rts\"\nassert(Green != green)");
+}
+
+TEST_CASE("every library file evaluates, and its materials and shapes build", "[eval][stdlib]") {
+  for (const auto& entry : fs::directory_iterator(kStdlib)) {
+    if (entry.path().extension() != ".rts") continue;
+    INFO(entry.path().filename().string());
+    passes("include \"" + entry.path().filename().string() + "\"");
+  }
+  SceneDesc s = eval_text(R"rts(include "textures.rts"
+include "shapes.rts"
+for m in [metal_gold, metal_silver, metal_copper, metal_chrome, metal_gold_brushed, glass_window,
+          glass_crystal, glass_green, diamond, plastic(rgb(1, 0, 0)), matte(rgb(0.5)), mirror] {
+    sphere { radius = 1  material = m }
+}
+rounded_box(<0, 0, 0>, <2, 1, 1>, 0.2)
+wire_box(<0, 0, 0>, <1, 1, 1>, 0.05)
+rounded_cylinder(<0, 0, 0>, <0, 2, 0>, 1, 0.25)
+capsule(<0, 0, 0>, <1, 0, 0>, 0.3)
+axes(2)
+torus(1, 0.25, segments = 8, sides = 4)
+)rts",
+                          with_stdlib());
+  CHECK(s.materials.size() >= 12);
+  // Glass refracts at its index; metal reflects its colour.
+  bool window = false, gold = false;
+  for (const auto& m : s.materials) {
+    window |= std::abs(m.ior - 1.52) < 1e-12 && m.fresnel;
+    gold |= std::abs(m.reflect.r - 1.0) < 1e-12 && std::abs(m.reflect.g - 0.766) < 1e-12 && m.fresnel;
+  }
+  CHECK(window);
+  CHECK(gold);
+}
+
+TEST_CASE("shape macros check their arguments", "[eval][stdlib]") {
+  CHECK_THAT(eval_error("include \"shapes.rts\"\nrounded_box(<0, 0, 0>, <1, 1, 1>, 0.6)", with_stdlib()),
+             Catch::Contains("rounded_box: radius 0.6 must be > 0 and at most half the smallest side"));
+  CHECK_THAT(eval_error("include \"shapes.rts\"\nrounded_cylinder(<0, 0, 0>, <0, 1, 0>, 0.5, 0.6)", with_stdlib()),
+             Catch::Contains("rounded_cylinder: edge 0.6"));
+}
+
+TEST_CASE("vrotate and vaxis_rotate turn vectors as `rotate` turns objects", "[eval][builtins]") {
+  passes(R"rts(
+macro near(a, b) { return length(a - b) < 1e-12 }
+assert(near(vrotate(<1, 0, 0>, <0, 90, 0>), <0, 0, -1>), "x about y by 90 is -z (as POV-Ray)")
+assert(near(vrotate(<1, 0, 0>, <0, 0, 90>), <0, 1, 0>), "x about z by 90 is y")
+assert(near(vrotate(<0, 1, 0>, <90, 0, 0>), <0, 0, 1>), "y about x by 90 is z")
+// x first, then y, then z: <0,0,1> about x by 90 is -y, then about z by 90 is +x.
+assert(near(vrotate(<0, 0, 1>, <90, 0, 90>), <1, 0, 0>), "order x, y, z")
+assert(near(vaxis_rotate(<1, 0, 0>, <0, 1, 0>, 90), vrotate(<1, 0, 0>, <0, 90, 0>)), "axis y = rotate y")
+assert(near(vaxis_rotate(<1, 0, 0>, <0, 5, 0>, 90), <0, 0, -1>), "the axis is normalised")
+// 120 degrees about the diagonal cycles the axes: x -> y -> z.
+assert(near(vaxis_rotate(<1, 0, 0>, <1, 1, 1>, 120), <0, 1, 0>), "diagonal x->y")
+assert(near(vaxis_rotate(<0, 1, 0>, <1, 1, 1>, 120), <0, 0, 1>), "diagonal y->z")
+assert(abs(vlength(<3, 4, 12>) - 13) < 1e-12 and vdot(<1, 2, 3>, <4, 5, 6>) == 32, "vlength, vdot")
+assert(vcross(<1, 0, 0>, <0, 1, 0>) == <0, 0, 1> and near(vnormalize(<0, 3, 4>), <0, 0.6, 0.8>), "vcross, vnormalize")
+assert(lerp(2, 4, 0.25) == 2.5 and lerp(<0, 0, 0>, <2, 4, 8>, 0.5) == <1, 2, 4>, "lerp")
+assert(distance(<1, 2, 3>, <4, 6, 3>) == 5, "distance")
+assert(smoothstep(0, 1, -1) == 0 and smoothstep(0, 1, 2) == 1 and smoothstep(0, 2, 1) == 0.5, "smoothstep ends/middle")
+assert(abs(smoothstep(0, 1, 0.25) - 0.15625) < 1e-15, "smoothstep 3t^2-2t^3")
+assert(abs(degrees(radians(37)) - 37) < 1e-12 and clamp(5, 0, 2) == 2, "degrees/radians, clamp")
+)rts");
+  CHECK_THAT(eval_error("vaxis_rotate(<1, 0, 0>, <0, 0, 0>, 90)"), Catch::Contains("axis must not be the zero vector"));
+  CHECK_THAT(eval_error("vrotate(<1, 0, 0>, 90)"), Catch::Contains("argument 2 of 'vrotate' must be a vector"));
+}
+
+TEST_CASE("spline: linear, cubic and natural against closed forms", "[eval][builtins]") {
+  passes(R"rts(
+macro near(a, b) { return abs(a - b) < 1e-12 }
+let line = [[0, 0], [1, 2], [3, 6]]
+assert(near(spline("linear", line, 0.5), 1) and near(spline("linear", line, 2), 4), "linear")
+assert(spline("linear", line, -1) == 0 and spline("linear", line, 9) == 6, "clamped at the ends")
+assert(spline("linear", [[0, <0, 0, 0>], [2, <2, 4, 6>]], 1) == <1, 2, 3>, "vectors")
+assert(spline("linear", [[0, rgb(0)], [1, rgb(1)]], 0.5) == rgb(0.5), "colors")
+// Catmull-Rom's tangents are exact for a parabola, so the curve is the parabola: y = t^2.
+let para = [[0, 0], [1, 1], [2, 4], [3, 9]]
+assert(near(spline("cubic", para, 1.5), 2.25), "cubic on t^2 at 1.5")
+assert(near(spline("cubic", para, 1), 1) and near(spline("cubic", para, 2), 4), "cubic passes its inner keys")
+assert(near(spline("cubic", para, 0), 1), "cubic: the first key only shapes the tangent")
+// Natural spline through (0,0), (1,1), (2,0): M1 = -3, so S(0.5) = -0.5/8 + 1.5*0.5 = 0.6875.
+assert(near(spline("natural", [[0, 0], [1, 1], [2, 0]], 0.5), 0.6875), "natural, three keys")
+assert(near(spline("natural", [[0, 0], [1, 1], [2, 0]], 1.5), 0.6875), "natural, symmetric")
+// A natural spline through collinear keys is the line, however they are spaced.
+assert(near(spline("natural", [[0, 1], [0.5, 2], [2, 5], [2.25, 5.5]], 1.3), 3.6), "natural reproduces a line")
+)rts");
+  CHECK_THAT(eval_error("spline(\"bezier\", [[0, 0], [1, 1]], 0)"), Catch::Contains("unknown kind 'bezier'"));
+  CHECK_THAT(eval_error("spline(\"cubic\", [[0, 0], [1, 1], [2, 2]], 0)"),
+             Catch::Contains("a cubic spline needs at least 4 keys, got 3"));
+  CHECK_THAT(eval_error("spline(\"linear\", [[0, 0], [0, 1]], 0)"), Catch::Contains("the keys' t must increase"));
+  CHECK_THAT(eval_error("spline(\"linear\", [[0, 0], [1, <1, 1, 1>]], 0)"),
+             Catch::Contains("the values must be all numbers, all vectors or all colors"));
+}
