@@ -37,7 +37,7 @@ Interpreter::Interpreter(SourceManager& sources, const EvalOptions& options, Dia
     : sources_(sources),
       options_(options),
       warnings_(warnings),
-      builder_(render::BuilderLimits{options.limits.max_mesh_triangles}) {
+      builder_(render::BuilderLimits{options.limits.max_mesh_triangles, options.limits.max_memory}) {
   const auto& table = builtin_table();
   for (uint32_t i = 0; i < table.size(); ++i) builtins_[ast::intern(table[i].name)] = i;
 }

@@ -1,9 +1,15 @@
 // Evaluation budgets (issue 7): the step budget counts loop iterations, macro calls and the
 // list elements and string bytes built; groups are counted as they expand; appending to a
 // list held by one variable is amortised O(1) and never changes what other holders see.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 #include <catch2/catch.hpp>
 
 #include "eval_helpers.hpp"
+#include "render/scene/resource_limits.hpp"
 
 using namespace rts;
 using rts::test::dump;
@@ -87,6 +93,37 @@ TEST_CASE("the memory budget stops a list before it is built", "[budgets]") {
   CHECK(d.message.find("memory limit of 256 MiB") != std::string::npos);
   CHECK(d.message.find("--max-memory") != std::string::npos);
   CHECK(d.loc.line == 2);
+}
+
+TEST_CASE("the memory budget reaches OBJ loading: a mesh too big for it is a located error", "[budgets]") {
+  // The evaluator once built the scene builder without --max-memory, so a 2M-triangle mesh
+  // loaded under --max-memory 64M. 300,000 triangles need about 19 MB by the loader's estimate.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rts_budget_obj_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  {
+    std::ofstream obj(dir / "big.obj");
+    obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (int i = 0; i < 300000; ++i) obj << "f 1 2 3\n";
+  }
+  const std::string scene = (dir / "scene.rts").string();
+  const std::string text = "settings { width = 8 height = 8 }\nmesh { file = \"big.obj\" }\n";
+  EvalOptions o;
+  o.limits.max_memory = render::resident_bytes() + (std::size_t(8) << 20);
+  std::string message;
+  SourceLoc loc;
+  try {
+    rts::test::eval_text(text, o, scene);
+  } catch (const LanguageError& e) {
+    message = e.diag.message;
+    loc = e.diag.loc;
+  }
+  // Without the limit the same mesh loads.
+  CHECK(rts::test::eval_text(text, EvalOptions{}, scene).meshes.size() == 1);
+  fs::remove_all(dir);
+  CHECK(message.find("mesh file big.obj") != std::string::npos);
+  CHECK(message.find("--max-memory") != std::string::npos);
+  CHECK(loc.line == 2);
 }
 
 TEST_CASE("area light samples above the cap are clamped with a located warning", "[budgets]") {

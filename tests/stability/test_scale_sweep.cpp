@@ -99,3 +99,35 @@ TEST_CASE("offset sweep: the scene translated by 1e5, 1e7 and 1e9 matches it at 
     for (Mode mode : {Mode::Literal, Mode::Group})
       check_against_unit(unit.color, 1.0, Vec3(d, d, -d), mode, fmt::format("translate {:g}", d));
 }
+
+TEST_CASE("a quad facing its light is lit at every camera distance and scale", "[scale]") {
+  // Issue 16: a quad's hit carried no error bound, so its shadow rays started inside the
+  // rounding of the hit point and a wall facing a point light shadowed itself (ambient only)
+  // with the camera at z = -3.4 and was lit at z = -3.35. The centre pixel must be lit
+  // (diffuse 0.7 * 0.8 plus ambient 0.08, against 0.08 when shadowed) for every distance and
+  // at scales 1e-4 to 1e4, with the scene written in literal coordinates.
+  int shadowed = 0, cases = 0;
+  for (double k : {1e-4, 1e-2, 1.0, 1e2, 1e4}) {
+    for (double z : {-3.5, -3.45, -3.4, -3.35, -3.3, -2.0, -6.0}) {
+      SceneDesc s;
+      s.settings.width = 9;
+      s.settings.height = 9;
+      s.has_camera = true;
+      s.camera.position = k * Vec3(0, 1, z);
+      s.camera.look_at = k * Vec3(0, 1, 0);
+      place(s, add_shape(s, Quad{k * Vec3(-1, 0, 1), k * Vec3(2, 0, 0), k * Vec3(0, 2, 0)},
+                         add_material(s, matte(Color(0.8)))));
+      LightDesc l;
+      l.position = k * Vec3(0, 1, -2);
+      place(s, add_light(s, l));
+      RenderResult r = render_scene(s, 1);
+      const float centre = r.color.at(4, 4)[1];
+      ++cases;
+      if (!(centre > 0.3f)) ++shadowed;
+      CAPTURE(k, z, centre);
+      CHECK(centre > 0.3f);
+    }
+  }
+  record("scale", "quad wall facing its light", "shadowed centre pixels", shadowed, "0");
+  CHECK(cases == 35);
+}

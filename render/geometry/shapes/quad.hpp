@@ -38,6 +38,9 @@ inline bool intersect(const Quad& q, const Ray& ray, Interval ray_t, SurfaceHit&
   if (!(s >= 0.0 && s <= 1.0 && tv >= 0.0 && tv <= 1.0)) return false;
   hit.t = t;
   hit.point = p;
+  // Without it a spawned ray starts at the minimum offset, which at a few units' distance is
+  // inside the rounding of p: the quad shadowed itself (ambient-only walls).
+  hit.error = ray_point_error(ray, t);
   hit.normal = n / std::sqrt(n2);
   hit.shading_normal = hit.normal;
   hit.uv = {s, tv};
