@@ -116,11 +116,10 @@ void describe(const Prepared& prep, const Frame& frame, const RenderResult& resu
   const World& world = *prep.world;
   for (std::string_view f : prep.features.used()) stats.features_used.emplace_back(f);
   for (std::string_view f : prep.features.left_out()) stats.features_left_out.emplace_back(f);
-  static constexpr const char* kKinds[] = {"sphere", "plane", "triangle", "box", "cylinder", "cone", "disc", "mesh", "quad"};
-  uint64_t by_kind[std::size(kKinds)] = {};
-  for (std::size_t i = 0; i < world.instance_count(); ++i) ++by_kind[static_cast<std::size_t>(world.instance(i).kind)];
-  for (std::size_t k = 0; k < std::size(kKinds); ++k)
-    if (by_kind[k] > 0) stats.primitives.emplace_back(kKinds[k], by_kind[k]);
+  uint64_t by_kind[kShapeKindCount] = {};
+  for (std::size_t i = 0; i < world.instance_count(); ++i) ++by_kind[world.instance(i).kind];
+  for (std::size_t k = 0; k < kShapeKindCount; ++k)
+    if (by_kind[k] > 0) stats.primitives.emplace_back(shape_name(k), by_kind[k]);
   stats.triangles = world.triangle_count();
   stats.bvh_nodes = world.bvh_nodes();
   WorldMemory m = world.memory();

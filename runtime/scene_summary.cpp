@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "render/geometry/shapes/shape_kinds.hpp"
+
 namespace rts::runtime {
 
 namespace {
@@ -72,10 +74,6 @@ bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Ve
   return std::visit(V{scene, lo, hi}, s.geometry);
 }
 
-const char* shape_kind(const render::ShapeGeometry& g) {
-  static const char* names[] = {"sphere", "plane", "triangle", "box", "cylinder", "cone", "disc", "mesh", "quad"};
-  return names[g.index()];
-}
 
 const char* light_kind(render::LightKind k) {
   switch (k) {
@@ -112,7 +110,7 @@ struct Walker {
     switch (n.kind) {
       case render::NodeKind::Shape: {
         const render::ShapeDesc& s = scene.shapes[n.index];
-        ++out.shapes[shape_kind(s.geometry)];
+        ++out.shapes[std::string(render::shape_name(s.geometry))];
         if (auto* mesh = std::get_if<render::MeshRef>(&s.geometry))
           out.triangles += scene.meshes[mesh->mesh]->indices.size() / 3;
         auto& [bounded, box] = shape_box[n.index];

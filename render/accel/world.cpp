@@ -4,14 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "render/geometry/shapes/box.hpp"
-#include "render/geometry/shapes/cone.hpp"
-#include "render/geometry/shapes/cylinder.hpp"
-#include "render/geometry/shapes/disc.hpp"
-#include "render/geometry/shapes/plane.hpp"
-#include "render/geometry/shapes/quad.hpp"
-#include "render/geometry/shapes/sphere.hpp"
-#include "render/geometry/shapes/triangle.hpp"
+#include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
@@ -60,37 +53,22 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     std::visit(
         [&](const auto& g) {
           using T = std::decay_t<decltype(g)>;
-          if constexpr (std::is_same_v<T, Sphere>) {
-            inst.kind = PrimKind::Sphere; inst.index = spheres_.size(); spheres_.push_back(g);
-            object_bounds = bounds(g);
-          } else if constexpr (std::is_same_v<T, Plane>) {
-            inst.kind = PrimKind::Plane; inst.index = plane_shapes_.size(); plane_shapes_.push_back(g);
-            unbounded_shape = true;
-          } else if constexpr (std::is_same_v<T, Triangle>) {
-            inst.kind = PrimKind::Triangle; inst.index = triangles_.size(); triangles_.push_back(g);
-            object_bounds = bounds(g);
-          } else if constexpr (std::is_same_v<T, Box>) {
-            inst.kind = PrimKind::Box; inst.index = boxes_.size(); boxes_.push_back(g);
-            object_bounds = bounds(g);
-          } else if constexpr (std::is_same_v<T, Cylinder>) {
-            inst.kind = PrimKind::Cylinder; inst.index = cylinders_.size(); cylinders_.push_back(g);
-            object_bounds = bounds(g);
-          } else if constexpr (std::is_same_v<T, Cone>) {
-            inst.kind = PrimKind::Cone; inst.index = cones_.size(); cones_.push_back(g);
-            object_bounds = bounds(g);
-          } else if constexpr (std::is_same_v<T, Disc>) {
-            inst.kind = PrimKind::Disc; inst.index = discs_.size(); discs_.push_back(g);
-            object_bounds = bounds(g);
-          } else if constexpr (std::is_same_v<T, Quad>) {
-            inst.kind = PrimKind::Quad; inst.index = quads_.size(); quads_.push_back(g);
-            object_bounds = bounds(g);
-          } else if constexpr (std::is_same_v<T, MeshRef>) {
+          inst.kind = kPrimKind<T>;
+          if constexpr (std::is_same_v<T, MeshRef>) {
             if (g.mesh >= scene.meshes.size() || !scene.meshes[g.mesh])
               throw RenderError(shape.loc, "internal: shape refers to unknown mesh " + std::to_string(g.mesh));
             meshes_[g.mesh] = mesh_accel(scene, g.mesh);
-            inst.kind = PrimKind::Mesh; inst.index = g.mesh; inst.smooth = g.smooth;
+            inst.index = g.mesh; inst.smooth = g.smooth;
             inst.vertex_material = scene.meshes[g.mesh]->has_vertex_material();
             object_bounds = meshes_[g.mesh]->bounds();
+          } else {
+            auto& array = std::get<std::vector<T>>(shapes_);
+            inst.index = static_cast<uint32_t>(array.size());
+            array.push_back(g);
+            if constexpr (ShapeTraits<T>::kInfo.bounded)
+              object_bounds = bounds(g);
+            else
+              unbounded_shape = true;
           }
         },
         shape.geometry);
@@ -147,30 +125,34 @@ Ray World::object_ray(const Instance& inst, const Ray& r) const {
   return Ray{Vec3(m * glm::dvec4(r.origin, 1.0)), Vec3(m * glm::dvec4(r.direction, 0.0))};
 }
 
+// One test per kind, chosen by comparing the kind with each index in turn (GCC turns the
+// chain into a jump table, like the switch it replaces).
+template <std::size_t... I>
+bool World::intersect_kind(std::index_sequence<I...>, const Instance& inst, const Ray& ray, const Interval& ray_t,
+                           SurfaceHit& hit) const {
+  bool found = false;
+  (void)((inst.kind == I && (found = [&] {
+            using T = ShapeKind<I>;
+            if constexpr (std::is_same_v<T, MeshRef>)
+              return meshes_[inst.index]->intersect(ray, ray_t, hit, inst.smooth);
+            else
+              return render::intersect(std::get<I>(shapes_)[inst.index], ray, ray_t, hit);
+          }(), true)) || ...);
+  return found;
+}
+
 bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                                SurfaceHit& hit) const {
-  Ray ray = object_ray(inst, world_ray);
-  switch (inst.kind) {
-    case PrimKind::Sphere: return render::intersect(spheres_[inst.index], ray, ray_t, hit);
-    case PrimKind::Plane: return render::intersect(plane_shapes_[inst.index], ray, ray_t, hit);
-    case PrimKind::Triangle: return render::intersect(triangles_[inst.index], ray, ray_t, hit);
-    case PrimKind::Box: return render::intersect(boxes_[inst.index], ray, ray_t, hit);
-    case PrimKind::Cylinder: return render::intersect(cylinders_[inst.index], ray, ray_t, hit);
-    case PrimKind::Cone: return render::intersect(cones_[inst.index], ray, ray_t, hit);
-    case PrimKind::Disc: return render::intersect(discs_[inst.index], ray, ray_t, hit);
-    case PrimKind::Mesh: return meshes_[inst.index]->intersect(ray, ray_t, hit, inst.smooth);
-    case PrimKind::Quad: return render::intersect(quads_[inst.index], ray, ray_t, hit);
-  }
-  return false;
+  return intersect_kind(std::make_index_sequence<kShapeKindCount>(), inst, object_ray(inst, world_ray), ray_t, hit);
 }
 
 bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const {
-  if (inst.kind == PrimKind::Mesh) {
+  if (inst.kind == kPrimKind<MeshRef>) {
     return meshes_[inst.index]->occluded(object_ray(inst, world_ray), ray_t);
   }
-  if (inst.kind == PrimKind::Sphere) {  // the root alone: no hit point, normal or error bound
+  if (inst.kind == kPrimKind<Sphere>) {  // the root alone: no hit point, normal or error bound
     double t;
-    return sphere_root(spheres_[inst.index], object_ray(inst, world_ray), ray_t, t);
+    return sphere_root(std::get<std::vector<Sphere>>(shapes_)[inst.index], object_ray(inst, world_ray), ray_t, t);
   }
   SurfaceHit scratch;
   return intersect_instance(inst, world_ray, ray_t, scratch);
@@ -218,11 +200,11 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   hit.uv = best.uv;
   // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
   // texture asks for them.
-  hit.has_uv = best.has_uv || inst.kind == PrimKind::Sphere;
-  const bool mesh = inst.kind == PrimKind::Mesh;
+  hit.has_uv = best.has_uv || inst.kind == kPrimKind<Sphere>;
+  const bool mesh = inst.kind == kPrimKind<MeshRef>;
   hit.triangle = mesh ? best.triangle : 0;
   hit.bary = mesh ? best.bary : glm::dvec2(0.0);
-  if (!mesh && inst.kind != PrimKind::Quad) best.dpdu = best.dpdv = Vec3(0.0);   // not set by the others
+  if (!kShapeInfos[inst.kind].has_tangents) best.dpdu = best.dpdv = Vec3(0.0);   // not set by the others
   // The world point is the shape's own (refined) object point carried to world space, not
   // ray.at(t): its error bound then stays relative to the shape, whatever the ray travelled.
   if (inst.transform == kNoId) {
@@ -259,8 +241,8 @@ bool World::vertex_material(const WorldHit& hit, VertexMaterial& out) const {
 
 glm::dvec2 World::surface_uv(const WorldHit& hit) const {
   const Instance& inst = instances_[hit.instance];
-  if (inst.kind != PrimKind::Sphere) return hit.uv;
-  const Sphere& sp = spheres_[inst.index];
+  if (inst.kind != kPrimKind<Sphere>) return hit.uv;
+  const Sphere& sp = std::get<std::vector<Sphere>>(shapes_)[inst.index];
   return sphere_uv((hit.object_point - sp.center) / sp.radius);
 }
 
@@ -340,10 +322,7 @@ WorldMemory World::memory() const {
   WorldMemory w;
   w.instances = instances_.capacity() * sizeof(Instance) + planes_.capacity() * sizeof(uint32_t);
   w.transforms = transforms_.capacity() * sizeof(InstanceTransform);
-  w.shapes = spheres_.capacity() * sizeof(Sphere) + plane_shapes_.capacity() * sizeof(Plane) +
-             triangles_.capacity() * sizeof(Triangle) + boxes_.capacity() * sizeof(Box) +
-             cylinders_.capacity() * sizeof(Cylinder) + cones_.capacity() * sizeof(Cone) +
-             discs_.capacity() * sizeof(Disc);
+  std::apply([&](const auto&... array) { ((w.shapes += array.capacity() * sizeof(array[0])), ...); }, shapes_);
   w.bvh = bvh_.nodes.capacity() * sizeof(BVHNode) + bvh_.order.capacity() * sizeof(uint32_t);
   std::vector<const MeshAccel*> distinct;
   for (const auto& m : meshes_)

@@ -1,26 +1,42 @@
 // The traceable world: every shape instance with its world transform, a top-level BVH over
 // the bounded ones, unbounded planes kept aside, and one MeshAccel per referenced mesh.
-// Ray-primitive tests dispatch with a switch on the instance kind into per-kind arrays.
+// Ray-primitive tests dispatch on the instance kind (ShapeGeometry's index) into per-kind
+// arrays, one per alternative of ShapeGeometry (render/geometry/shapes/shape_kinds.hpp).
 #pragma once
 
 #include <memory>
+#include <tuple>
 #include <vector>
 
 #include "render/accel/bvh.hpp"
 #include "render/scene/flatten.hpp"
 #include "render/accel/mesh_accel.hpp"
 #include "render/scene/scene.hpp"
+#include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/geometry/surface_hit.hpp"
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
 
-enum class PrimKind : uint8_t { Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad };
+// A shape kind: the index of its alternative in ShapeGeometry.
+using PrimKind = uint8_t;
+template <class T>
+inline constexpr PrimKind kPrimKind = static_cast<PrimKind>(shape_index<T>());
+static_assert(kShapeKindCount <= 256, "PrimKind is a byte");
+
+// One array per ShapeGeometry alternative (meshes' stays empty: they are kept by MeshId).
+template <class V>
+struct ShapeArraysOf;
+template <class... T>
+struct ShapeArraysOf<std::variant<T...>> {
+  using type = std::tuple<std::vector<T>...>;
+};
+using ShapeArrays = ShapeArraysOf<ShapeGeometry>::type;
 
 // 16 bytes, so the instances a BVH leaf points at share cache lines; transforms live apart
 // (only transformed instances have one).
 struct Instance {
-  PrimKind kind = PrimKind::Sphere;
+  PrimKind kind = 0;
   bool smooth = true;          // meshes: interpolate vertex normals
   bool transmissive = false;   // its material lets light through (shadow rays pass it)
   bool vertex_material = false;  // meshes: its vertices carry material values
@@ -104,16 +120,12 @@ class World {
   bool intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                           SurfaceHit& hit) const;
   bool occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const;
+  template <std::size_t... I>
+  bool intersect_kind(std::index_sequence<I...>, const Instance& inst, const Ray& ray, const Interval& ray_t,
+                      SurfaceHit& hit) const;
   std::shared_ptr<const MeshAccel> mesh_accel(const SceneDesc& scene, MeshId id);
 
-  std::vector<Sphere> spheres_;
-  std::vector<Plane> plane_shapes_;
-  std::vector<Triangle> triangles_;
-  std::vector<Box> boxes_;
-  std::vector<Cylinder> cylinders_;
-  std::vector<Cone> cones_;
-  std::vector<Disc> discs_;
-  std::vector<Quad> quads_;
+  ShapeArrays shapes_;
   // By MeshId; null when unreferenced. MeshIds whose data are identical (the same OBJ file
   // loaded by several statements) share one MeshAccel, so one BVH.
   std::vector<std::shared_ptr<const MeshAccel>> meshes_;

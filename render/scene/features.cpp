@@ -5,13 +5,22 @@
 namespace rts::render {
 namespace {
 
-constexpr std::array<std::string_view, kFeatureCount> kNames = {
-    "sphere",      "plane",         "triangle",          "box",         "cylinder",
-    "cone",        "disc",          "mesh",              "quad",        "reflection",  "transmission",
+// The features after the shapes, in Feature's order.
+constexpr std::string_view kOtherNames[] = {
+    "reflection",  "transmission",
     "glossiness",  "fresnel",       "texture",           "image_texture", "emission",
     "specular",    "ambient",       "point_light",       "spot_light",  "directional_light",
     "area_light",  "shadows",       "transmissive_shadows", "area_sampling", "depth_of_field",
     "antialiasing", "aovs",         "bvh"};
+static_assert(kShapeKindCount + std::size(kOtherNames) == kFeatureCount, "a name for every Feature");
+
+// Shape features are named after their block kinds.
+constexpr std::array<std::string_view, kFeatureCount> kNames = [] {
+  std::array<std::string_view, kFeatureCount> names{};
+  for (std::size_t i = 0; i < kShapeKindCount; ++i) names[i] = kShapeInfos[i].name;
+  for (std::size_t i = 0; i < std::size(kOtherNames); ++i) names[kShapeKindCount + i] = kOtherNames[i];
+  return names;
+}();
 
 bool nonzero(const Color& c) { return c.r != 0.0 || c.g != 0.0 || c.b != 0.0; }
 
@@ -68,7 +77,7 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
   bool secondary_possible = ctx.max_depth > 0;
   for (const FlatShape& fs : flat.shapes) {
     const ShapeDesc& shape = scene.shapes[fs.shape];
-    f.add(static_cast<Feature>(shape.geometry.index()));  // variant order = Feature order
+    f.add(shape_feature(shape.geometry.index()));
     const MaterialDesc* mp = material_of(scene, shape);
     const MaterialDesc& m = mp ? *mp : default_material;
     bool r = reflects(m), t = transmits(m);

@@ -10,13 +10,15 @@
 #include <string_view>
 #include <vector>
 
+#include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/scene/flatten.hpp"
 #include "render/scene/scene.hpp"
 
 namespace rts::render {
 
 enum class Feature : uint8_t {
-  // primitive kinds
+  // primitive kinds, in ShapeGeometry's order (a shape's feature is its variant index; its
+  // name is its block kind's): checked below
   Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad,
   // material channels
   Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Emission, Specular, Ambient,
@@ -30,6 +32,21 @@ enum class Feature : uint8_t {
 };
 
 inline constexpr std::size_t kFeatureCount = static_cast<std::size_t>(Feature::Count);
+
+// The feature of shape kind `kind` (a ShapeGeometry index).
+constexpr Feature shape_feature(std::size_t kind) { return static_cast<Feature>(kind); }
+static_assert(static_cast<std::size_t>(Feature::Reflection) == kShapeKindCount,
+              "one shape Feature per ShapeGeometry alternative");
+static_assert(Feature::Sphere == shape_feature(shape_index<Sphere>()) &&
+                  Feature::Plane == shape_feature(shape_index<Plane>()) &&
+                  Feature::Triangle == shape_feature(shape_index<Triangle>()) &&
+                  Feature::Box == shape_feature(shape_index<Box>()) &&
+                  Feature::Cylinder == shape_feature(shape_index<Cylinder>()) &&
+                  Feature::Cone == shape_feature(shape_index<Cone>()) &&
+                  Feature::Disc == shape_feature(shape_index<Disc>()) &&
+                  Feature::Mesh == shape_feature(shape_index<MeshRef>()) &&
+                  Feature::Quad == shape_feature(shape_index<Quad>()),
+              "the shape Features follow ShapeGeometry's order");
 
 // "sphere", "reflection", "area_light"... (the names --stats and the JSON report use).
 std::string_view feature_name(Feature f);

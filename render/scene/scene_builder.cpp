@@ -1,6 +1,7 @@
 // SceneBuilder: validates block parameters and fills the SceneDesc.
 #include "render/scene/scene_builder.hpp"
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "render/geometry/aabb.hpp"
+#include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/shade/lights.hpp"
 #include "render/scene/obj_loader.hpp"
 #include "render/geometry/tolerances.hpp"
@@ -35,15 +37,7 @@ constexpr KindInfo kKinds[] = {
     {"image_texture", BlockCategory::Texture},
     {"latlong_map", BlockCategory::Texture},
     {"cube_map", BlockCategory::Texture},
-    {"sphere", BlockCategory::Shape},
-    {"plane", BlockCategory::Shape},
-    {"triangle", BlockCategory::Shape},
-    {"box", BlockCategory::Shape},
-    {"cylinder", BlockCategory::Shape},
-    {"cone", BlockCategory::Shape},
-    {"disc", BlockCategory::Shape},
-    {"mesh", BlockCategory::Shape},
-    {"quad", BlockCategory::Shape},
+    {"", BlockCategory::Shape},  // here: every shape kind (kShapeInfos), in ShapeGeometry's order
     {"point_light", BlockCategory::Light},
     {"spot_light", BlockCategory::Light},
     {"directional_light", BlockCategory::Light},
@@ -68,21 +62,22 @@ const std::vector<std::string_view> kMaterialNames = {"color",    "texture",  "e
                                                       "diffuse",  "specular", "shininess", "reflect",
                                                       "transmit", "ior",      "fresnel",   "roughness",
                                                       "ior_relative", "bump", "bump_scale", "normal_map"};
-const std::vector<std::string_view> kSphereNames = {"material", "center", "radius"};
-const std::vector<std::string_view> kPlaneNames = {"material", "normal", "offset"};
-const std::vector<std::string_view> kTriangleNames = {"material",      "v0",           "v1",
-                                                      "v2",            "n0",           "n1",
-                                                      "n2",            "vertex_colors", "vertex_diffuse",
-                                                      "vertex_specular", "vertex_shininess"};
-const std::vector<std::string_view> kBoxNames = {"material", "min", "max"};
-const std::vector<std::string_view> kCylinderNames = {"material", "from", "to", "radius", "capped"};
-const std::vector<std::string_view> kConeNames = {"material", "from", "to", "radius_from", "radius_to", "capped"};
-const std::vector<std::string_view> kDiscNames = {"material", "center", "normal", "radius", "inner_radius"};
-const std::vector<std::string_view> kMeshNames = {"material",       "file",           "smooth",
-                                                  "vertices",       "faces",          "normals",
-                                                  "vertex_colors",  "vertex_diffuse", "vertex_specular",
-                                                  "vertex_shininess"};
-const std::vector<std::string_view> kQuadNames = {"material", "corner", "edge_u", "edge_v"};
+// "material" and each shape kind's own properties, by ShapeGeometry index.
+const std::array<std::vector<std::string_view>, kShapeKindCount>& shape_property_names() {
+  static const auto table = [] {
+    std::array<std::vector<std::string_view>, kShapeKindCount> names;
+    for (std::size_t k = 0; k < kShapeKindCount; ++k) {
+      names[k].push_back("material");
+      for (const PropertyInfo& p : kShapeInfos[k].properties) names[k].push_back(p.name);
+    }
+    return names;
+  }();
+  return table;
+}
+template <class T>
+const std::vector<std::string_view>& names_of() {
+  return shape_property_names()[shape_index<T>()];
+}
 const std::vector<std::string_view> kPointLightNames = {"position",          "color",  "intensity", "attenuation",
                                                         "attenuation_clamp", "shadows"};
 const std::vector<std::string_view> kSpotLightNames = {"position",  "point_at",    "radius",            "falloff", "color",
@@ -93,11 +88,10 @@ const std::vector<std::string_view> kAreaLightNames = {"position", "u",         
 
 // The names a shape or light kind takes, or null for other kinds.
 const std::vector<std::string_view>* names_of(std::string_view kind) {
+  for (std::size_t k = 0; k < kShapeKindCount; ++k)
+    if (kShapeInfos[k].name == kind) return &shape_property_names()[k];
   static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
-      {"sphere", &kSphereNames},           {"plane", &kPlaneNames},          {"triangle", &kTriangleNames},
-      {"box", &kBoxNames},                 {"cylinder", &kCylinderNames},    {"cone", &kConeNames},
-      {"disc", &kDiscNames},               {"mesh", &kMeshNames},            {"point_light", &kPointLightNames},
-      {"spot_light", &kSpotLightNames},    {"area_light", &kAreaLightNames},
+      {"point_light", &kPointLightNames},  {"spot_light", &kSpotLightNames}, {"area_light", &kAreaLightNames},
       {"directional_light", &kDirectionalLightNames}};
   for (const auto& [name, names] : kTable)
     if (name == kind) return names;
@@ -225,14 +219,20 @@ std::vector<std::string> cube_map_faces(const std::string& dir, const std::strin
 }  // namespace
 
 BlockCategory SceneBuilder::category(std::string_view kind) {
+  if (find_shape(kind)) return BlockCategory::Shape;
   for (const KindInfo& k : kKinds)
-    if (k.name == kind) return k.category;
+    if (!k.name.empty() && k.name == kind) return k.category;
   return BlockCategory::Unknown;
 }
 
 std::vector<std::string_view> SceneBuilder::block_kinds() {
   std::vector<std::string_view> out;
-  for (const KindInfo& k : kKinds) out.push_back(k.name);
+  for (const KindInfo& k : kKinds) {
+    if (!k.name.empty())
+      out.push_back(k.name);
+    else
+      for (const ShapeInfo& shape : kShapeInfos) out.push_back(shape.name);
+  }
   return out;
 }
 
@@ -567,13 +567,13 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     g.center = ps.vec3("center", g.center);
     g.radius = positive(ps, "radius", ps.require_number("radius"));
     s.geometry = g;
-    ps.check_unused(kSphereNames);
+    ps.check_unused(names_of<Sphere>());
   } else if (kind == "plane") {
     Plane g;
     g.normal = glm::normalize(direction(ps, "normal", ps.require_vec3("normal")));
     g.offset = ps.number("offset", g.offset);
     s.geometry = g;
-    ps.check_unused(kPlaneNames);
+    ps.check_unused(names_of<Plane>());
   } else if (kind == "triangle") {
     Triangle g;
     g.v0 = ps.require_vec3("v0");
@@ -602,7 +602,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
         scene_.warnings.push_back({ps.loc(), "triangle has zero area (collinear or repeated vertices): it is skipped"});
       s.geometry = g;
     }
-    ps.check_unused(kTriangleNames);
+    ps.check_unused(names_of<Triangle>());
   } else if (kind == "quad") {
     Quad g;
     g.corner = ps.vec3("corner", g.corner);
@@ -611,7 +611,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     if (glm::length(glm::cross(glm::normalize(g.edge_u), glm::normalize(g.edge_v))) < kMinDirectionLength)
       throw SceneError(loc_of(ps, "edge_v"), "quad edge_u and edge_v must not be parallel");
     s.geometry = g;
-    ps.check_unused(kQuadNames);
+    ps.check_unused(names_of<Quad>());
   } else if (kind == "box") {
     Box g;
     g.min = ps.require_vec3("min");
@@ -619,7 +619,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     if (g.min.x > g.max.x || g.min.y > g.max.y || g.min.z > g.max.z)
       throw SceneError(loc_of(ps, "max"), "box max must be >= min in every component");
     s.geometry = g;
-    ps.check_unused(kBoxNames);
+    ps.check_unused(names_of<Box>());
   } else if (kind == "cylinder") {
     Cylinder g;
     g.from = ps.require_vec3("from");
@@ -628,7 +628,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     g.radius = positive(ps, "radius", ps.require_number("radius"));
     g.capped = ps.boolean("capped", g.capped);
     s.geometry = g;
-    ps.check_unused(kCylinderNames);
+    ps.check_unused(names_of<Cylinder>());
   } else if (kind == "cone") {
     Cone g;
     g.from = ps.require_vec3("from");
@@ -639,7 +639,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     if (g.radius_from == 0 && g.radius_to == 0) ps.fail_block("cone needs a non-zero radius_from or radius_to");
     g.capped = ps.boolean("capped", g.capped);
     s.geometry = g;
-    ps.check_unused(kConeNames);
+    ps.check_unused(names_of<Cone>());
   } else if (kind == "disc") {
     Disc g;
     g.center = ps.vec3("center", g.center);
@@ -648,7 +648,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     g.inner_radius = non_negative(ps, "inner_radius", ps.number("inner_radius", g.inner_radius));
     require(ps, "inner_radius", g.inner_radius < g.radius, "< radius", g.inner_radius);
     s.geometry = g;
-    ps.check_unused(kDiscNames);
+    ps.check_unused(names_of<Disc>());
   } else if (kind == "mesh") {
     MeshRef g;
     g.smooth = ps.boolean("smooth", g.smooth);
@@ -713,7 +713,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       if (obj_key) obj_meshes_.emplace(std::move(*obj_key), g.mesh);
     }
     s.geometry = g;
-    ps.check_unused(kMeshNames);
+    ps.check_unused(names_of<MeshRef>());
   } else {
     ps.fail_block(fmt::format("'{}' is not a shape", kind));
   }

@@ -168,7 +168,7 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
   out.hit = true;
   out.normal = hit.shading_normal;
   out.depth = hit.t * glm::length(ray.direction);
-  out.bounded = world_.instance(hit.instance).kind != PrimKind::Plane;
+  out.bounded = world_.instance(hit.instance).kind != kPrimKind<Plane>;
   std::optional<MaterialDesc> scratch;   // vertex colors are the albedo too
   out.albedo = albedo(shading_material(material(hit.instance), world_, hit, textures_, scratch), hit);
   return out;

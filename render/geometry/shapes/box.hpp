@@ -6,9 +6,21 @@
 
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/ray.hpp"
+#include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/surface_hit.hpp"
 
 namespace rts::render {
+
+// The `box` block: see docs/shapes.md#box.
+template <>
+struct ShapeTraits<Box> {
+  static constexpr PropertyInfo kProperties[] = {
+      {"min", "vector", "*required*", "The corner with the smallest coordinates."},
+      {"max", "vector", "*required*", "The opposite corner; `max ≥ min` in every component."},
+  };
+  static constexpr ShapeInfo kInfo{
+      .name = "box", .properties = kProperties, .closure = Closure::Closed, .has_uv = true};
+};
 
 inline AABB bounds(const Box& b) { return AABB{glm::min(b.min, b.max), glm::max(b.min, b.max)}; }
 

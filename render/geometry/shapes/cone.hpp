@@ -3,11 +3,25 @@
 // |perp(p)|^2 = r(s)^2 with r(s) = r0 + k s along the axis, s in [0, L].
 #pragma once
 
+#include "render/geometry/shapes/shape_info.hpp"
 #include <cmath>
 
 #include "render/geometry/shapes/disc.hpp"
 
 namespace rts::render {
+
+// The `cone` block: see docs/shapes.md#cone.
+template <>
+struct ShapeTraits<Cone> {
+  static constexpr PropertyInfo kProperties[] = {
+      {"from", "vector", "*required*", "Centre of the `radius_from` end."},
+      {"to", "vector", "*required*", "Centre of the `radius_to` end; must differ from `from`."},
+      {"radius_from", "number ≥ 0", "*required*", "Radius at `from`."},
+      {"radius_to", "number ≥ 0", "`0`", "Radius at `to` (0: a point). Not both radii 0."},
+      {"capped", "bool", "`true`", "`false` leaves the ends open."},
+  };
+  static constexpr ShapeInfo kInfo{.name = "cone", .properties = kProperties, .closure = Closure::WhenCapped};
+};
 
 inline AABB cone_bounds(const Vec3& from, const Vec3& to, double r0, double r1) {
   Vec3 axis = to - from;

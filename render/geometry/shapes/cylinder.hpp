@@ -1,9 +1,23 @@
 // Cylinder between `from` and `to` with `radius`, optionally capped: the cone with equal radii.
 #pragma once
 
+#include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/shapes/cone.hpp"
 
 namespace rts::render {
+
+// The `cylinder` block: see docs/shapes.md#cylinder.
+template <>
+struct ShapeTraits<Cylinder> {
+  static constexpr PropertyInfo kProperties[] = {
+      {"from", "vector", "*required*", "Centre of one end."},
+      {"to", "vector", "*required*", "Centre of the other end; must differ from `from`."},
+      {"radius", "number > 0", "*required*", "The radius."},
+      {"capped", "bool", "`true`", "`false` leaves the ends open (a tube: you see its inside)."},
+  };
+  static constexpr ShapeInfo kInfo{
+      .name = "cylinder", .properties = kProperties, .closure = Closure::WhenCapped};
+};
 
 inline AABB bounds(const Cylinder& c) { return cone_bounds(c.from, c.to, c.radius, c.radius); }
 

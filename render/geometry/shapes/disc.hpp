@@ -1,6 +1,7 @@
 // Disc (annulus when inner_radius > 0): center, normal, radius. Also used for cylinder caps.
 #pragma once
 
+#include "render/geometry/shapes/shape_info.hpp"
 #include <cmath>
 
 #include "render/geometry/aabb.hpp"
@@ -8,6 +9,18 @@
 #include "render/geometry/surface_hit.hpp"
 
 namespace rts::render {
+
+// The `disc` block: see docs/shapes.md#disc.
+template <>
+struct ShapeTraits<Disc> {
+  static constexpr PropertyInfo kProperties[] = {
+      {"center", "vector", "`<0, 0, 0>`", "The centre."},
+      {"normal", "vector, non-zero", "`<0, 1, 0>`", "The disc's normal."},
+      {"radius", "number > 0", "*required*", "Outer radius."},
+      {"inner_radius", "number ≥ 0", "`0`", "Radius of the hole; less than `radius`."},
+  };
+  static constexpr ShapeInfo kInfo{.name = "disc", .properties = kProperties, .closure = Closure::Open};
+};
 
 // Some unit vector perpendicular to unit `n`.
 inline Vec3 any_perpendicular(const Vec3& n) {

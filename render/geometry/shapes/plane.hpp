@@ -6,9 +6,21 @@
 
 #include "render/geometry/interval.hpp"
 #include "render/geometry/ray.hpp"
+#include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/surface_hit.hpp"
 
 namespace rts::render {
+
+// The `plane` block: see docs/shapes.md#plane.
+template <>
+struct ShapeTraits<Plane> {
+  static constexpr PropertyInfo kProperties[] = {
+      {"normal", "vector, non-zero", "*required*", "The plane's normal (normalised for you)."},
+      {"offset", "number", "`0`", "Distance from the origin along `normal`."},
+  };
+  static constexpr ShapeInfo kInfo{
+      .name = "plane", .properties = kProperties, .closure = Closure::Open, .has_uv = true, .bounded = false};
+};
 
 // Two unit tangents of a unit normal; for n = +y they are +x and +z.
 inline void plane_tangents(const Vec3& n, Vec3& t1, Vec3& t2) {

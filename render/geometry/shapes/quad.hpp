@@ -3,6 +3,7 @@
 // are (s, t), so an image covers it exactly once (UW CSE 457's `square`).
 #pragma once
 
+#include "render/geometry/shapes/shape_info.hpp"
 #include <cmath>
 
 #include "render/geometry/aabb.hpp"
@@ -11,6 +12,20 @@
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
+
+// The `quad` block: see docs/shapes.md#quad.
+template <>
+struct ShapeTraits<Quad> {
+  static constexpr PropertyInfo kProperties[] = {
+      {"corner", "vector", "`<-0.5, -0.5, 0>`",
+       "One corner; the quad is `corner + s edge_u + t edge_v` for s, t in [0, 1]."},
+      {"edge_u", "vector, non-zero", "`<1, 0, 0>`",
+       "The edge along which the texture coordinate u runs from 0 to 1."},
+      {"edge_v", "vector, non-zero", "`<0, 1, 0>`", "The edge along which v runs; not parallel to `edge_u`."},
+  };
+  static constexpr ShapeInfo kInfo{
+      .name = "quad", .properties = kProperties, .closure = Closure::Open, .has_uv = true, .has_tangents = true};
+};
 
 inline AABB bounds(const Quad& q) {
   AABB b;

@@ -7,9 +7,21 @@
 
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/ray.hpp"
+#include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/surface_hit.hpp"
 
 namespace rts::render {
+
+// The `sphere` block: see docs/shapes.md#sphere.
+template <>
+struct ShapeTraits<Sphere> {
+  static constexpr PropertyInfo kProperties[] = {
+      {"center", "vector", "`<0, 0, 0>`", "The centre."},
+      {"radius", "number > 0", "*required*", "The radius."},
+  };
+  static constexpr ShapeInfo kInfo{
+      .name = "sphere", .properties = kProperties, .closure = Closure::Closed, .has_uv = true};
+};
 
 inline AABB bounds(const Sphere& s) {
   double r = std::abs(s.radius);

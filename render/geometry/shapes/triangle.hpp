@@ -6,9 +6,32 @@
 
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/ray.hpp"
+#include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/surface_hit.hpp"
 
 namespace rts::render {
+
+// The `triangle` block: see docs/shapes.md#triangle.
+template <>
+struct ShapeTraits<Triangle> {
+  static constexpr PropertyInfo kProperties[] = {
+      {"v0", "vector", "*required*",
+       "A corner. The order of the corners gives the geometric normal (`(v1 − v0) × (v2 − v0)`)."},
+      {"v1", "vector", "*required*", "The second corner."},
+      {"v2", "vector", "*required*", "The third corner."},
+      {"n0", "vector", "none",
+       "Vertex normal at `v0` for smooth shading, interpolated across the face; all three or none."},
+      {"n1", "vector", "none", "Vertex normal at `v1`."},
+      {"n2", "vector", "none", "Vertex normal at `v2`."},
+      {"vertex_colors", "list of 3 colors", "none",
+       "A color per corner, interpolated; replaces the material's `color`."},
+      {"vertex_diffuse", "list of 3 numbers", "none", "A `diffuse` weight per corner, interpolated."},
+      {"vertex_specular", "list of 3 numbers or colors", "none",
+       "A highlight color per corner (a number x is `rgb(x)`), interpolated."},
+      {"vertex_shininess", "list of 3 numbers", "none", "A `shininess` per corner, interpolated."},
+  };
+  static constexpr ShapeInfo kInfo{.name = "triangle", .properties = kProperties, .closure = Closure::Open};
+};
 
 inline AABB bounds(const Triangle& tri) {
   AABB b;
