@@ -179,6 +179,13 @@ Value spline(BuiltinCall& c) {
   return out;
 }
 
+// trace(object, origin, direction): [point, normal] where the ray first meets the object, or
+// none when it misses.
+Value trace(BuiltinCall& c) {
+  if (c.args[0].type != Type::Object) bad_arg(c, 0, "an object (a shape or a group)");
+  return c.in.trace_object(c.args[0], vec(c, 1), vec(c, 2), c.call.loc);
+}
+
 }  // namespace
 
 std::vector<Builtin> with_math_builtins(std::vector<Builtin> table) {
@@ -193,6 +200,7 @@ std::vector<Builtin> with_math_builtins(std::vector<Builtin> table) {
       {"distance", 2, 2, distance},
       {"smoothstep", 3, 3, smoothstep},
       {"spline", 3, 3, spline},
+      {"trace", 3, 3, trace},
       // POV-Ray's names for builtins rts already has.
       alias("vlength", "length"),
       alias("vnormalize", "normalize"),

@@ -23,6 +23,7 @@
 #include "parser/ast.hpp"
 #include "parser/diagnostics.hpp"
 #include "parser/source.hpp"
+#include "render/scene/probe.hpp"
 #include "render/scene/resource_limits.hpp"
 #include "render/scene/scene_builder.hpp"
 #include "runtime/evaluator.hpp"
@@ -101,6 +102,8 @@ class Interpreter {
     stack_floor_ = floor;
     stack_bytes_ = stack_bytes;
   }
+  // trace(object, origin, direction): [hit point, unit normal], or none on a miss (trace.cpp).
+  Value trace_object(const Value& object, const glm::dvec3& origin, const glm::dvec3& direction, SourceLoc loc);
   uint64_t world_shapes() const { return world_objects_.shapes; }
   uint64_t world_lights() const { return world_objects_.lights; }
 
@@ -203,6 +206,10 @@ class Interpreter {
 
   double parse_seconds_ = 0.0;
   std::string stdlib_dir_;  // see stdlib_dir()
+  // trace(): the World of the object traced last, rebuilt when another object is traced.
+  std::unique_ptr<render::ObjectProbe> probe_;
+  render::Child probe_key_;
+  std::size_t probe_shapes_ = 0;  // shapes defined when it was built (ids stay valid; a guard)
   bool stdlib_found_ = false;
   uint64_t iterations_ = 0;
   std::size_t placements_ = 0;

@@ -64,6 +64,12 @@ LightDesc transform_light(const LightDesc& light, const Mat4& m) {
   return l;
 }
 
+FlatScene flatten_instance(const SceneDesc& scene, const Child& instance) {
+  FlatScene out;
+  flatten_child(scene, instance, Mat4(1.0), 0, out);
+  return out;
+}
+
 FlatScene flatten_scene(const SceneDesc& scene) {
   FlatScene out;
   for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out);

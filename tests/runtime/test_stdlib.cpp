@@ -223,3 +223,33 @@ assert(near(spline("natural", [[0, 1], [0.5, 2], [2, 5], [2.25, 5.5]], 1.3), 3.6
   CHECK_THAT(eval_error("spline(\"linear\", [[0, 0], [1, <1, 1, 1>]], 0)"),
              Catch::Contains("the values must be all numbers, all vectors or all colors"));
 }
+
+TEST_CASE("trace: the first hit on an object and its normal, in world space", "[eval][builtins]") {
+  passes(R"rts(
+macro near(a, b) { return length(a - b) < 1e-9 }
+// A unit sphere moved to <0, 1, 0>: a ray down the y axis meets its top at <0, 2, 0>, normal +y.
+let ball = sphere { radius = 1 } translate <0, 1, 0>
+let h = trace(ball, <0, 5, 0>, <0, -1, 0>)
+assert(near(h[0], <0, 2, 0>) and near(h[1], <0, 1, 0>), "top of the ball")
+// From the side at height 1.5: x = sqrt(1 - 0.25), the normal is the point minus the centre.
+let s = trace(ball, <-5, 1.5, 0>, <1, 0, 0>)
+assert(near(s[0], <-sqrt(0.75), 1.5, 0>) and near(s[1], <-sqrt(0.75), 0.5, 0>), "side of the ball")
+// A miss is none; the direction need not be unit.
+assert(trace(ball, <5, 5, 5>, <0, 1, 0>) == none, "miss")
+assert(near(trace(ball, <0, 5, 0>, <0, -10, 0>)[0], <0, 2, 0>), "unnormalised direction")
+// A rotated, scaled box inside a group: scale 2 makes the top face y = 2.
+let crate = group { box { min = <-1, 0, -1>  max = <1, 1, 1> } } scale 2 rotate <0, 45, 0>
+let c = trace(crate, <0.1, 9, 0.1>, <0, -1, 0>)
+assert(near(c[0], <0.1, 2, 0.1>) and near(c[1], <0, 1, 0>), "top of the crate")
+// Placing on a surface: spheres dropped onto the ball sit on it.
+for i in 0 .. 5 {
+    let p = trace(ball, <i * 0.2, 9, 0>, <0, -1, 0>)
+    assert(abs(length(p[0] - <0, 1, 0>) - 1) < 1e-9, "on the surface")
+    sphere { center = p[0] + p[1] * 0.1  radius = 0.1 }
+}
+)rts");
+  CHECK_THAT(eval_error("trace(sphere { radius = 1 }, <0, 0, 0>, <0, 0, 0>)"),
+             Catch::Contains("trace: the direction must not be the zero vector"));
+  CHECK_THAT(eval_error("trace(3, <0, 0, 0>, <0, 0, 1>)"),
+             Catch::Contains("argument 1 of 'trace' must be an object (a shape or a group), got a number"));
+}
