@@ -15,63 +15,32 @@ namespace {
 using render::Mat4;
 using render::Vec3;
 
-// Object-space bounds of a shape; false for unbounded shapes (planes).
+// Object-space bounds of a shape (its descriptor's bounds()); false for unbounded shapes
+// (planes) and empty meshes.
 bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Vec3& lo, Vec3& hi) {
-  struct V {
-    const render::SceneDesc& scene;
-    Vec3& lo;
-    Vec3& hi;
-    bool operator()(const render::Sphere& g) {
-      lo = g.center - g.radius;
-      hi = g.center + g.radius;
-      return true;
-    }
-    bool operator()(const render::Plane&) { return false; }
-    bool operator()(const render::Triangle& g) {
-      lo = glm::min(g.v0, glm::min(g.v1, g.v2));
-      hi = glm::max(g.v0, glm::max(g.v1, g.v2));
-      return true;
-    }
-    bool operator()(const render::Box& g) {
-      lo = g.min;
-      hi = g.max;
-      return true;
-    }
-    bool operator()(const render::Cylinder& g) {
-      lo = glm::min(g.from, g.to) - g.radius;  // a loose box: the caps' full spheres
-      hi = glm::max(g.from, g.to) + g.radius;
-      return true;
-    }
-    bool operator()(const render::Cone& g) {
-      double r = std::max(g.radius_from, g.radius_to);
-      lo = glm::min(g.from, g.to) - r;
-      hi = glm::max(g.from, g.to) + r;
-      return true;
-    }
-    bool operator()(const render::Disc& g) {
-      lo = g.center - g.radius;
-      hi = g.center + g.radius;
-      return true;
-    }
-    bool operator()(const render::Quad& g) {
-      const Vec3 far = g.corner + g.edge_u + g.edge_v;
-      lo = glm::min(glm::min(g.corner, far), glm::min(g.corner + g.edge_u, g.corner + g.edge_v));
-      hi = glm::max(glm::max(g.corner, far), glm::max(g.corner + g.edge_u, g.corner + g.edge_v));
-      return true;
-    }
-    bool operator()(const render::MeshRef& g) {
-      const render::MeshData& m = *scene.meshes[g.mesh];
-      if (m.positions.empty()) return false;
-      lo = Vec3(std::numeric_limits<double>::max());
-      hi = -lo;
-      for (const glm::vec3& p : m.positions) {
-        lo = glm::min(lo, m.origin + Vec3(p));
-        hi = glm::max(hi, m.origin + Vec3(p));
-      }
-      return true;
-    }
-  };
-  return std::visit(V{scene, lo, hi}, s.geometry);
+  return std::visit(
+      [&](const auto& g) {
+        using T = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<T, render::MeshRef>) {
+          const render::MeshData& m = *scene.meshes[g.mesh];
+          if (m.positions.empty()) return false;
+          lo = Vec3(std::numeric_limits<double>::max());
+          hi = -lo;
+          for (const glm::vec3& p : m.positions) {
+            lo = glm::min(lo, m.origin + Vec3(p));
+            hi = glm::max(hi, m.origin + Vec3(p));
+          }
+          return true;
+        } else if constexpr (render::ShapeTraits<T>::kInfo.bounded) {
+          const render::AABB b = bounds(g);
+          lo = b.lo;
+          hi = b.hi;
+          return true;
+        } else {
+          return false;
+        }
+      },
+      s.geometry);
 }
 
 

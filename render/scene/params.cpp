@@ -208,4 +208,32 @@ void ParamSet::check_unused(const std::vector<std::string_view>& valid) const {
   }
 }
 
+SourceRef loc_of(ParamSet& ps, std::string_view name) {
+  const Param* p = ps.find(name);
+  return p ? p->loc : ps.loc();
+}
+
+// Range checks: "property 'radius' of sphere must be > 0, got -1".
+void require(ParamSet& ps, std::string_view name, bool ok, std::string_view what, double got) {
+  if (ok) return;
+  throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be {}, got {}", name, ps.kind(), what, got));
+}
+double positive(ParamSet& ps, std::string_view name, double v) {
+  require(ps, name, v > 0, "> 0", v);
+  return v;
+}
+double non_negative(ParamSet& ps, std::string_view name, double v) {
+  require(ps, name, v >= 0, ">= 0", v);
+  return v;
+}
+Vec3 direction(ParamSet& ps, std::string_view name, Vec3 v) {
+  if (glm::length(v) < kMinDirectionLength)
+    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be a non-zero vector", name, ps.kind()));
+  return v;
+}
+void non_negative_color(ParamSet& ps, std::string_view name, const Color& c) {
+  if (c.r < 0 || c.g < 0 || c.b < 0)
+    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must not be negative", name, ps.kind()));
+}
+
 }  // namespace rts::render

@@ -81,6 +81,17 @@ class ParamSet {
   const std::vector<std::string_view>* valid_ = nullptr;
 };
 
+// Checks shared by the builder and the shape descriptors (render/geometry/shapes/): each
+// throws SceneError at the property (or the block when it is missing), e.g. "property 'radius'
+// of sphere must be > 0, got -1", and returns the value it checked.
+inline constexpr double kMinDirectionLength = 1e-12;  // shorter vectors give no direction
+SourceRef loc_of(ParamSet& ps, std::string_view name);
+void require(ParamSet& ps, std::string_view name, bool ok, std::string_view what, double got);
+double positive(ParamSet& ps, std::string_view name, double v);
+double non_negative(ParamSet& ps, std::string_view name, double v);
+Vec3 direction(ParamSet& ps, std::string_view name, Vec3 v);
+void non_negative_color(ParamSet& ps, std::string_view name, const Color& c);
+
 // The closest candidate by edit distance, or "" when none is close enough to suggest.
 std::string closest_name(std::string_view word, const std::vector<std::string_view>& candidates);
 

@@ -19,8 +19,6 @@ namespace rts::render {
 
 namespace {
 
-// Vectors shorter than this cannot give a direction (normals, axes, light directions).
-constexpr double kMinDirectionLength = 1e-12;
 constexpr double kMaxFovDegrees = 180.0;
 
 struct KindInfo {
@@ -96,34 +94,6 @@ const std::vector<std::string_view>* names_of(std::string_view kind) {
   for (const auto& [name, names] : kTable)
     if (name == kind) return names;
   return nullptr;
-}
-
-SourceRef loc_of(ParamSet& ps, std::string_view name) {
-  const Param* p = ps.find(name);
-  return p ? p->loc : ps.loc();
-}
-
-// Range checks: "property 'radius' of sphere must be > 0, got -1".
-void require(ParamSet& ps, std::string_view name, bool ok, std::string_view what, double got) {
-  if (ok) return;
-  throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be {}, got {}", name, ps.kind(), what, got));
-}
-double positive(ParamSet& ps, std::string_view name, double v) {
-  require(ps, name, v > 0, "> 0", v);
-  return v;
-}
-double non_negative(ParamSet& ps, std::string_view name, double v) {
-  require(ps, name, v >= 0, ">= 0", v);
-  return v;
-}
-Vec3 direction(ParamSet& ps, std::string_view name, Vec3 v) {
-  if (glm::length(v) < kMinDirectionLength)
-    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be a non-zero vector", name, ps.kind()));
-  return v;
-}
-void non_negative_color(ParamSet& ps, std::string_view name, const Color& c) {
-  if (c.r < 0 || c.g < 0 || c.b < 0)
-    throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must not be negative", name, ps.kind()));
 }
 
 // Texture axis: 0/1/2 or "x"/"y"/"z".
@@ -555,6 +525,24 @@ void warn_degenerate(const MeshData& mesh, SourceRef where, std::vector<Warning>
                                            bad_normals, mesh.normals.size())});
 }
 
+// The kinds whose descriptor builds them from their parameters alone (ShapeTraits<T>::build):
+// true when `kind` is one of them and `out` is built. Triangles and meshes, which may create
+// MeshData, are built by SceneBuilder::shape itself.
+template <std::size_t... I>
+bool build_described(std::index_sequence<I...>, std::string_view kind, ParamSet& ps, ShapeGeometry& out) {
+  return ((kShapeInfos[I].name == kind && [&] {
+            using T = ShapeKind<I>;
+            if constexpr (requires { ShapeTraits<T>::build(ps); }) {
+              out = ShapeTraits<T>::build(ps);
+              ps.check_unused(names_of<T>());
+              return true;
+            } else {
+              return false;
+            }
+          }()) ||
+          ...);
+}
+
 }  // namespace
 
 NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
@@ -562,18 +550,8 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   s.loc = ps.loc();
   ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
   if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) s.material = ref->id;
-  if (kind == "sphere") {
-    Sphere g;
-    g.center = ps.vec3("center", g.center);
-    g.radius = positive(ps, "radius", ps.require_number("radius"));
-    s.geometry = g;
-    ps.check_unused(names_of<Sphere>());
-  } else if (kind == "plane") {
-    Plane g;
-    g.normal = glm::normalize(direction(ps, "normal", ps.require_vec3("normal")));
-    g.offset = ps.number("offset", g.offset);
-    s.geometry = g;
-    ps.check_unused(names_of<Plane>());
+  if (build_described(std::make_index_sequence<kShapeKindCount>(), kind, ps, s.geometry)) {
+    // built by its descriptor
   } else if (kind == "triangle") {
     Triangle g;
     g.v0 = ps.require_vec3("v0");
@@ -603,52 +581,6 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       s.geometry = g;
     }
     ps.check_unused(names_of<Triangle>());
-  } else if (kind == "quad") {
-    Quad g;
-    g.corner = ps.vec3("corner", g.corner);
-    g.edge_u = direction(ps, "edge_u", ps.vec3("edge_u", g.edge_u));
-    g.edge_v = direction(ps, "edge_v", ps.vec3("edge_v", g.edge_v));
-    if (glm::length(glm::cross(glm::normalize(g.edge_u), glm::normalize(g.edge_v))) < kMinDirectionLength)
-      throw SceneError(loc_of(ps, "edge_v"), "quad edge_u and edge_v must not be parallel");
-    s.geometry = g;
-    ps.check_unused(names_of<Quad>());
-  } else if (kind == "box") {
-    Box g;
-    g.min = ps.require_vec3("min");
-    g.max = ps.require_vec3("max");
-    if (g.min.x > g.max.x || g.min.y > g.max.y || g.min.z > g.max.z)
-      throw SceneError(loc_of(ps, "max"), "box max must be >= min in every component");
-    s.geometry = g;
-    ps.check_unused(names_of<Box>());
-  } else if (kind == "cylinder") {
-    Cylinder g;
-    g.from = ps.require_vec3("from");
-    g.to = ps.require_vec3("to");
-    direction(ps, "to", g.to - g.from);
-    g.radius = positive(ps, "radius", ps.require_number("radius"));
-    g.capped = ps.boolean("capped", g.capped);
-    s.geometry = g;
-    ps.check_unused(names_of<Cylinder>());
-  } else if (kind == "cone") {
-    Cone g;
-    g.from = ps.require_vec3("from");
-    g.to = ps.require_vec3("to");
-    direction(ps, "to", g.to - g.from);
-    g.radius_from = non_negative(ps, "radius_from", ps.require_number("radius_from"));
-    g.radius_to = non_negative(ps, "radius_to", ps.number("radius_to", g.radius_to));
-    if (g.radius_from == 0 && g.radius_to == 0) ps.fail_block("cone needs a non-zero radius_from or radius_to");
-    g.capped = ps.boolean("capped", g.capped);
-    s.geometry = g;
-    ps.check_unused(names_of<Cone>());
-  } else if (kind == "disc") {
-    Disc g;
-    g.center = ps.vec3("center", g.center);
-    g.normal = glm::normalize(direction(ps, "normal", ps.vec3("normal", g.normal)));
-    g.radius = positive(ps, "radius", ps.require_number("radius"));
-    g.inner_radius = non_negative(ps, "inner_radius", ps.number("inner_radius", g.inner_radius));
-    require(ps, "inner_radius", g.inner_radius < g.radius, "< radius", g.inner_radius);
-    s.geometry = g;
-    ps.check_unused(names_of<Disc>());
   } else if (kind == "mesh") {
     MeshRef g;
     g.smooth = ps.boolean("smooth", g.smooth);

@@ -7,6 +7,7 @@
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/ray.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/scene/params.hpp"
 #include "render/geometry/surface_hit.hpp"
 
 namespace rts::render {
@@ -20,6 +21,15 @@ struct ShapeTraits<Box> {
   };
   static constexpr ShapeInfo kInfo{
       .name = "box", .properties = kProperties, .closure = Closure::Closed, .has_uv = true};
+  // From the block's parameters (unknown names are checked by the builder afterwards).
+  static Box build(ParamSet& ps) {
+    Box g;
+    g.min = ps.require_vec3("min");
+    g.max = ps.require_vec3("max");
+    if (g.min.x > g.max.x || g.min.y > g.max.y || g.min.z > g.max.z)
+      throw SceneError(loc_of(ps, "max"), "box max must be >= min in every component");
+    return g;
+  }
 };
 
 inline AABB bounds(const Box& b) { return AABB{glm::min(b.min, b.max), glm::max(b.min, b.max)}; }

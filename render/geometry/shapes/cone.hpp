@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/scene/params.hpp"
 #include <cmath>
 
 #include "render/geometry/shapes/disc.hpp"
@@ -21,6 +22,18 @@ struct ShapeTraits<Cone> {
       {"capped", "bool", "`true`", "`false` leaves the ends open."},
   };
   static constexpr ShapeInfo kInfo{.name = "cone", .properties = kProperties, .closure = Closure::WhenCapped};
+  // From the block's parameters (unknown names are checked by the builder afterwards).
+  static Cone build(ParamSet& ps) {
+    Cone g;
+    g.from = ps.require_vec3("from");
+    g.to = ps.require_vec3("to");
+    direction(ps, "to", g.to - g.from);
+    g.radius_from = non_negative(ps, "radius_from", ps.require_number("radius_from"));
+    g.radius_to = non_negative(ps, "radius_to", ps.number("radius_to", g.radius_to));
+    if (g.radius_from == 0 && g.radius_to == 0) ps.fail_block("cone needs a non-zero radius_from or radius_to");
+    g.capped = ps.boolean("capped", g.capped);
+    return g;
+  }
 };
 
 inline AABB cone_bounds(const Vec3& from, const Vec3& to, double r0, double r1) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/scene/params.hpp"
 #include "render/geometry/shapes/cone.hpp"
 
 namespace rts::render {
@@ -17,6 +18,16 @@ struct ShapeTraits<Cylinder> {
   };
   static constexpr ShapeInfo kInfo{
       .name = "cylinder", .properties = kProperties, .closure = Closure::WhenCapped};
+  // From the block's parameters (unknown names are checked by the builder afterwards).
+  static Cylinder build(ParamSet& ps) {
+    Cylinder g;
+    g.from = ps.require_vec3("from");
+    g.to = ps.require_vec3("to");
+    direction(ps, "to", g.to - g.from);
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    g.capped = ps.boolean("capped", g.capped);
+    return g;
+  }
 };
 
 inline AABB bounds(const Cylinder& c) { return cone_bounds(c.from, c.to, c.radius, c.radius); }

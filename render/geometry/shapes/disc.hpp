@@ -2,6 +2,7 @@
 #pragma once
 
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/scene/params.hpp"
 #include <cmath>
 
 #include "render/geometry/aabb.hpp"
@@ -20,6 +21,16 @@ struct ShapeTraits<Disc> {
       {"inner_radius", "number ≥ 0", "`0`", "Radius of the hole; less than `radius`."},
   };
   static constexpr ShapeInfo kInfo{.name = "disc", .properties = kProperties, .closure = Closure::Open};
+  // From the block's parameters (unknown names are checked by the builder afterwards).
+  static Disc build(ParamSet& ps) {
+    Disc g;
+    g.center = ps.vec3("center", g.center);
+    g.normal = glm::normalize(direction(ps, "normal", ps.vec3("normal", g.normal)));
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    g.inner_radius = non_negative(ps, "inner_radius", ps.number("inner_radius", g.inner_radius));
+    require(ps, "inner_radius", g.inner_radius < g.radius, "< radius", g.inner_radius);
+    return g;
+  }
 };
 
 // Some unit vector perpendicular to unit `n`.

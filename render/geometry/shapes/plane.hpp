@@ -7,6 +7,7 @@
 #include "render/geometry/interval.hpp"
 #include "render/geometry/ray.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/scene/params.hpp"
 #include "render/geometry/surface_hit.hpp"
 
 namespace rts::render {
@@ -20,6 +21,13 @@ struct ShapeTraits<Plane> {
   };
   static constexpr ShapeInfo kInfo{
       .name = "plane", .properties = kProperties, .closure = Closure::Open, .has_uv = true, .bounded = false};
+  // From the block's parameters (unknown names are checked by the builder afterwards).
+  static Plane build(ParamSet& ps) {
+    Plane g;
+    g.normal = glm::normalize(direction(ps, "normal", ps.require_vec3("normal")));
+    g.offset = ps.number("offset", g.offset);
+    return g;
+  }
 };
 
 // Two unit tangents of a unit normal; for n = +y they are +x and +z.

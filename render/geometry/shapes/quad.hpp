@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/scene/params.hpp"
 #include <cmath>
 
 #include "render/geometry/aabb.hpp"
@@ -25,6 +26,16 @@ struct ShapeTraits<Quad> {
   };
   static constexpr ShapeInfo kInfo{
       .name = "quad", .properties = kProperties, .closure = Closure::Open, .has_uv = true, .has_tangents = true};
+  // From the block's parameters (unknown names are checked by the builder afterwards).
+  static Quad build(ParamSet& ps) {
+    Quad g;
+    g.corner = ps.vec3("corner", g.corner);
+    g.edge_u = direction(ps, "edge_u", ps.vec3("edge_u", g.edge_u));
+    g.edge_v = direction(ps, "edge_v", ps.vec3("edge_v", g.edge_v));
+    if (glm::length(glm::cross(glm::normalize(g.edge_u), glm::normalize(g.edge_v))) < kMinDirectionLength)
+      throw SceneError(loc_of(ps, "edge_v"), "quad edge_u and edge_v must not be parallel");
+    return g;
+  }
 };
 
 inline AABB bounds(const Quad& q) {

@@ -8,6 +8,7 @@
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/ray.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/scene/params.hpp"
 #include "render/geometry/surface_hit.hpp"
 
 namespace rts::render {
@@ -21,6 +22,13 @@ struct ShapeTraits<Sphere> {
   };
   static constexpr ShapeInfo kInfo{
       .name = "sphere", .properties = kProperties, .closure = Closure::Closed, .has_uv = true};
+  // From the block's parameters (unknown names are checked by the builder afterwards).
+  static Sphere build(ParamSet& ps) {
+    Sphere g;
+    g.center = ps.vec3("center", g.center);
+    g.radius = positive(ps, "radius", ps.require_number("radius"));
+    return g;
+  }
 };
 
 inline AABB bounds(const Sphere& s) {
