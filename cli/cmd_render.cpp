@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@
 
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
+#include "cli/frames.hpp"
+#include "cli/manifest.hpp"
 #include "cli/stats_report.hpp"
 #include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
@@ -50,6 +53,10 @@ struct RenderCommand {
   bool no_specialize = false;
   StatsOptions stats;
   EvalOptions eval;
+  // Animation (cli/frames.hpp).
+  std::string frames, manifest;
+  int64_t task_index = 0, task_count = 1;
+  bool skip_existing = false;
 };
 
 // A render error (exit 3) is shown like a language error: located, with the source line and
@@ -110,29 +117,25 @@ void print_sampling_warnings(const std::string& out, const render::RenderStats& 
                              "{} samples per pixel (raise --samples)\n", out, e.rmse, e.target_error, st.samples);
 }
 
-int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) {
-  std::string out = c.output;
-  if (out.empty()) out = fs::path(c.scene).stem().string() + ".png";
-  // A usage error, before any work: never write one format's bytes under another's name.
-  render::OutputSpecResult spec = render::output_spec(out, c.bits, c.linear, c.aov_files);
-  if (!spec.spec) throw CLI::ValidationError("--output", spec.error);
-  if (!c.depth_range.empty() && !(std::isfinite(c.depth_range[0]) && std::isfinite(c.depth_range[1]) &&
-                                  c.depth_range[0] <= c.depth_range[1]))
-    throw CLI::ValidationError("--depth-range", "expects two finite numbers NEAR,FAR with NEAR <= FAR");
-  if (!std::isfinite(c.depth_miss) || !std::isfinite(c.normal_miss))
-    throw CLI::ValidationError("--depth-miss/--normal-miss", "expects a finite number");
-
-  SourceManager sources;
-  DiagnosticSink sink(std::cerr, ctx.color);
+// The scene evaluated at one point of the animation clock, with the sources its locations
+// point into.
+struct Evaluated {
+  std::unique_ptr<SourceManager> sources = std::make_unique<SourceManager>();
   render::SceneDesc scene;
   double eval_seconds = 0, parse_seconds = 0;
+  bool uses_clock = false;
+};
+
+// Evaluates the scene; on failure reports the located error and returns its exit code.
+int evaluate_scene(const RenderCommand& c, const EvalOptions& eval, DiagnosticSink& sink, Evaluated& out) {
   try {
-    EvalResult evaluated = evaluate_file(sources, c.scene, c.eval, sink);
-    scene = std::move(evaluated.scene);
-    eval_seconds = evaluated.seconds;
-    parse_seconds = evaluated.parse_seconds;
+    EvalResult evaluated = evaluate_file(*out.sources, c.scene, eval, sink);
+    out.scene = std::move(evaluated.scene);
+    out.eval_seconds = evaluated.seconds;
+    out.parse_seconds = evaluated.parse_seconds;
+    out.uses_clock = evaluated.uses_clock;
     // A black image with no word of why is a trap (a library file rendered by mistake).
-    SourceLoc whole_file{sources.find(c.scene), 0, 0};
+    SourceLoc whole_file{out.sources->find(c.scene), 0, 0};
     if (evaluated.world_shapes == 0)
       sink.warning(whole_file, "the scene places no objects: the image shows only the background");
     else if (evaluated.world_lights == 0)
@@ -144,10 +147,15 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     std::cerr << e.message << "\n";  // already "path: error: ..."
     return kExitLanguageError;
   } catch (const render::SceneError& e) {
-    print_error(e.where, e.what(), sources, sink);
+    print_error(e.where, e.what(), *out.sources, sink);
     return kExitLanguageError;
   }
+  return kExitOk;
+}
 
+// Renders an evaluated scene and writes its images to `out`; `stats` receives the figures.
+int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, const std::string& out,
+                 const render::OutputSpec& spec, DiagnosticSink& sink, render::RenderStats* stats_out) {
   render::RenderOptions opts;
   opts.threads = c.threads;
   if (cmd.count("--seed")) opts.seed = c.seed;
@@ -172,26 +180,161 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
 
   try {
     check_output_writable(out);
-    print_warnings(scene.warnings);
-    render::RenderResult result = render::render(scene, opts);
+    print_warnings(ev.scene.warnings);
+    render::RenderResult result = render::render(ev.scene, opts);
     print_warnings(result.warnings);
-    result.stats.eval_seconds = eval_seconds;
-    result.stats.parse_seconds = parse_seconds;
+    result.stats.eval_seconds = ev.eval_seconds;
+    result.stats.parse_seconds = ev.parse_seconds;
     auto write_start = std::chrono::steady_clock::now();
-    render::write_images(out, *spec.spec, result.color, result.aovs);
+    render::write_images(out, spec, result.color, result.aovs);
     result.stats.write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";
     print_sampling_warnings(out, result.stats);
     report_stats(c.stats, result.stats);
+    if (stats_out) *stats_out = result.stats;
   } catch (const render::RenderError& e) {
-    print_error(e.where, e.what(), sources, sink);
+    print_error(e.where, e.what(), *ev.sources, sink);
     return kExitRenderError;
   } catch (const std::bad_alloc&) {
-    print_error({}, "out of memory (lower the image size, samples or scene, or check ulimit -v)", sources, sink);
+    print_error({}, "out of memory (lower the image size, samples or scene, or check ulimit -v)", *ev.sources, sink);
     return kExitRenderError;
   }
   return kExitOk;
+}
+
+bool same_clock(const AnimationClock& a, const AnimationClock& b) {
+  return a.clock == b.clock && a.frame == b.frame && a.frames == b.frames;
+}
+
+// Renders the frames of an animation this process is given (docs/scale-out.md): each frame is
+// evaluated afresh at its clock, so it depends on its number alone, never on which frames
+// this process rendered before it.
+int run_frames(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx, const std::string& pattern,
+               const render::OutputSpec& spec, const FrameRange& animation, const FrameRange& selected,
+               const TaskSlice& task, Evaluated probe, const AnimationClock& probe_clock, DiagnosticSink& sink) {
+  const std::string manifest = c.manifest.empty() ? default_manifest_path(pattern) : c.manifest;
+  const std::vector<int64_t> frames = task_frames(selected, task);
+  if (!probe.uses_clock && animation.count() > 1)
+    std::cerr << fmt::format("rts: warning: {}: the scene never reads clock, frame or frames: every frame "
+                             "is the same image\n", c.scene);
+  std::size_t done = 0, skipped = 0;
+  for (int64_t f : frames) {
+    const std::string out = frame_path(pattern, f);
+    std::error_code ec;
+    if (c.skip_existing && fs::exists(out, ec)) {  // written whole: files are renamed into place
+      ++skipped;
+      continue;
+    }
+    auto start = std::chrono::steady_clock::now();
+    AnimationClock clock{frame_clock(animation, f), f, animation.count()};
+    Evaluated fresh;
+    Evaluated* ev = &fresh;
+    if (probe.sources && same_clock(clock, probe_clock)) {
+      ev = &probe;  // the probe was this very frame: evaluating it again gives the same scene
+    } else {
+      EvalOptions eval = c.eval;
+      eval.animation = clock;
+      DiagnosticSink frame_sink(std::cerr, ctx.color);
+      if (int rc = evaluate_scene(c, eval, frame_sink, fresh); rc != kExitOk) return rc;
+    }
+    render::RenderStats stats;
+    if (int rc = render_scene(c, cmd, *ev, out, spec, sink, &stats); rc != kExitOk) return rc;
+    FrameRecord r;
+    r.frame = f;
+    r.clock = clock.clock;
+    r.file = out;
+    r.checksum = file_checksum(out);
+    r.scene = c.scene;
+    r.scene_hash = scene_hash(*ev->sources);
+    r.args = ctx.args;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (stats.error.known) r.error_rmse = stats.error.rmse;
+    r.samples_per_pixel = stats.error.mean_spp;
+    r.task_index = task.index;
+    r.task_count = task.count;
+    try {
+      append_manifest(manifest, r);
+    } catch (const render::RenderError& e) {
+      std::cerr << "rts: error: " << e.what() << "\n";
+      return kExitRenderError;
+    }
+    if (ev == &probe) probe.sources.reset();  // used once
+    ++done;
+  }
+  std::cerr << fmt::format("rts: frames {}..{}{}: rendered {}, skipped {} already written; manifest {}\n",
+                           selected.first, selected.last,
+                           task.count > 1 ? fmt::format(" (task {} of {})", task.index, task.count) : "", done,
+                           skipped, manifest);
+  return kExitOk;
+}
+
+int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) {
+  const bool frames_flag = cmd.count("--frames") > 0;
+  FrameRange flag_range;
+  if (frames_flag) {
+    if (std::string err = parse_frame_range(c.frames, flag_range); !err.empty())
+      throw CLI::ValidationError("--frames", err);
+  }
+  TaskSlice task;
+  std::optional<int64_t> task_index, task_count;
+  if (cmd.count("--task-index")) task_index = c.task_index;
+  if (cmd.count("--task-count")) task_count = c.task_count;
+  if (std::string err = resolve_task(task_index, task_count, task); !err.empty())
+    throw CLI::ValidationError("--task-index/--task-count", err);
+
+  std::string out = c.output;
+  if (out.empty()) out = frames_flag ? default_frame_pattern(c.scene) : fs::path(c.scene).stem().string() + ".png";
+  // A usage error, before any work: never write one format's bytes under another's name.
+  render::OutputSpecResult spec = render::output_spec(out, c.bits, c.linear, c.aov_files);
+  if (!spec.spec) throw CLI::ValidationError("--output", spec.error);
+  if (!c.depth_range.empty() && !(std::isfinite(c.depth_range[0]) && std::isfinite(c.depth_range[1]) &&
+                                  c.depth_range[0] <= c.depth_range[1]))
+    throw CLI::ValidationError("--depth-range", "expects two finite numbers NEAR,FAR with NEAR <= FAR");
+  if (!std::isfinite(c.depth_miss) || !std::isfinite(c.normal_miss))
+    throw CLI::ValidationError("--depth-miss/--normal-miss", "expects a finite number");
+  if (frames_flag && flag_range.count() > 1 && !has_frame_pattern(out))
+    throw CLI::ValidationError("--output", fmt::format("'{}' has no '#' run for the frame number: with several "
+                                                       "frames, name them like out/ball_####.png", out));
+
+  DiagnosticSink sink(std::cerr, ctx.color);
+  // The first evaluation tells whether the scene is an animation (settings.frames).
+  AnimationClock probe_clock{0.0, frames_flag ? flag_range.first : 0, frames_flag ? flag_range.count() : 1};
+  Evaluated probe;
+  {
+    EvalOptions eval = c.eval;
+    eval.animation = probe_clock;
+    if (int rc = evaluate_scene(c, eval, sink, probe); rc != kExitOk) return rc;
+  }
+  const int64_t scene_frames = probe.scene.settings.frames;
+  if (!frames_flag && scene_frames == 1) {
+    if (task.count > 1)
+      throw CLI::ValidationError("--task-index/--task-count",
+                                 "splits an animation's frames: give --frames or settings { frames = N }");
+    // A still, as rts always rendered it.
+    return render_scene(c, cmd, probe, has_frame_pattern(out) ? frame_path(out, 0) : out, *spec.spec, sink, nullptr);
+  }
+
+  // The animation: the scene's own frames (--frames then picks some of them; the clock still
+  // runs over the whole animation, so a frame looks the same whichever range renders it), or
+  // the --frames range.
+  FrameRange animation = flag_range, selected = flag_range;
+  if (scene_frames > 1) {
+    animation = FrameRange{0, scene_frames - 1};
+    if (!frames_flag) {
+      selected = animation;
+    } else if (flag_range.last > animation.last) {
+      std::cerr << fmt::format("rts: error: --frames {} goes past the scene's last frame {} (settings.frames = {})\n",
+                               c.frames, animation.last, scene_frames);
+      return kExitUsage;
+    }
+  }
+  if (c.output.empty()) out = default_frame_pattern(c.scene);
+  if (selected.count() > 1 && !has_frame_pattern(out))
+    throw CLI::ValidationError("--output", fmt::format("'{}' has no '#' run for the frame number: the scene is an "
+                                                       "animation of {} frames; name them like out/ball_####.png",
+                                                       out, animation.count()));
+  return run_frames(c, cmd, ctx, out, *spec.spec, animation, selected, task, std::move(probe), probe_clock, sink);
 }
 
 }  // namespace
@@ -234,6 +377,16 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   cmd->add_flag("--stats", c->stats.print, "Print features used and left out, rays, memory and time per phase");
   cmd->add_option("--stats-json", c->stats.json_path, "Write the same figures as JSON to FILE ('-': stdout)");
   cmd->add_flag("--no-specialize", c->no_specialize, "Render through the generic path (for benchmarks)");
+  cmd->add_option("--frames", c->frames,
+                  "Animation: render frames A..B (both included; or one frame N) to -o's '#' pattern "
+                  "(default: settings.frames)");
+  add_whole_option(*cmd, "--task-index", c->task_index, 0, render::kMaxFrames,
+                   "Animation: this task's index among --task-count (default: SLURM_ARRAY_TASK_ID)", false);
+  add_whole_option(*cmd, "--task-count", c->task_count, 1, render::kMaxFrames,
+                   "Animation: render every N-th frame of the range, from --task-index", false);
+  cmd->add_flag("--skip-existing", c->skip_existing, "Animation: skip frames whose image is already written");
+  cmd->add_option("--manifest", c->manifest,
+                  "Animation: JSON Lines file of rendered frames (default: OUT-without-####.manifest.jsonl)");
   add_eval_options(*cmd, c->eval);
   cmd->callback([c, cmd, &ctx] { ctx.exit_code = run(*c, *cmd, ctx); });
 }

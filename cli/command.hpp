@@ -2,6 +2,9 @@
 // A command's callback returns the process exit code through `CommandContext::exit_code`.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include <CLI/CLI.hpp>
 
 namespace rts::cli {
@@ -9,6 +12,7 @@ namespace rts::cli {
 struct CommandContext {
   int exit_code = 0;
   bool color = false;  // stderr is a terminal: colored diagnostics
+  std::vector<std::string> args;  // the command line without the program name (frame manifests)
 };
 
 void add_parse_command(CLI::App& app, CommandContext& ctx);   // cli/cmd_parse.cpp

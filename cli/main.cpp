@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
 
   cli::CommandContext ctx;
   ctx.color = isatty(STDERR_FILENO) && getenv("NO_COLOR") == nullptr;
+  ctx.args.assign(argv + 1, argv + argc);
   cli::add_parse_command(app, ctx);
   cli::add_check_command(app, ctx);
   cli::add_eval_command(app, ctx);

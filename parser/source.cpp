@@ -115,4 +115,11 @@ const SourceFile* SourceManager::find(std::string_view path) const {
   return nullptr;
 }
 
+std::vector<const SourceFile*> SourceManager::files() const {
+  std::vector<const SourceFile*> out;
+  out.reserve(files_.size());
+  for (const auto& f : files_) out.push_back(f.get());
+  return out;
+}
+
 }  // namespace rts

@@ -47,6 +47,8 @@ class SourceManager {
   const SourceFile* add(std::string path, std::string text);
   // The file loaded or added under exactly this path, or null.
   const SourceFile* find(std::string_view path) const;
+  // Every file loaded or added, in load order (the main file first when loaded first).
+  std::vector<const SourceFile*> files() const;
 
  private:
   std::deque<std::unique_ptr<SourceFile>> files_;

@@ -110,6 +110,7 @@ EvalResult evaluate_source(SourceManager& sources, const SourceFile& file, const
     interp.run(file);
     result.world_shapes = interp.world_shapes();
     result.world_lights = interp.world_lights();
+    result.uses_clock = interp.uses_clock();
     result.scene = interp.finish();
     result.parse_seconds = interp.parse_seconds();
   });

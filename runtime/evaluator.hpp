@@ -42,6 +42,15 @@ struct EvalLimits {
   std::size_t max_memory = 0;
 };
 
+// The animation clock a frame is evaluated at: the built-in constants `clock` (0 at the first
+// frame, 1 at the last, as in POV-Ray), `frame` (the frame number) and `frames` (their count).
+// A still is frame 0 of 1, clock 0.
+struct AnimationClock {
+  double clock = 0.0;
+  int64_t frame = 0;
+  int64_t frames = 1;
+};
+
 struct EvalOptions {
   std::vector<std::string> include_paths;  // -I, searched after the including file's folder
   // The standard library's folder, searched after the -I folders; "" finds it
@@ -54,6 +63,7 @@ struct EvalOptions {
   // (--allow-read; "/" lifts the restriction). restrict_reads = false: read anything (tests).
   std::vector<std::string> allow_read;
   bool restrict_reads = false;
+  AnimationClock animation;                // `rts render --frames`
 };
 
 struct EvalResult {
@@ -62,6 +72,8 @@ struct EvalResult {
   double parse_seconds = 0.0;  // the parsing part of `seconds` (every file, included ones too)
   // Shapes and lights in the world once groups are expanded (for "renders nothing" warnings).
   uint64_t world_shapes = 0, world_lights = 0;
+  // The program read `clock`, `frame` or `frames` (an animation whose frames differ).
+  bool uses_clock = false;
 };
 
 // Parses and evaluates the scene file at `path` (loaded through `sources`, which must outlive

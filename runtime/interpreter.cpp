@@ -353,6 +353,20 @@ ast::Symbol pi_symbol() {
   static const ast::Symbol pi = ast::intern("pi");
   return pi;
 }
+// The animation constants (EvalOptions::animation), also looked up after the scene's names, so
+// a scene written before they existed (`let frame = ...`) keeps its meaning.
+ast::Symbol clock_symbol() {
+  static const ast::Symbol s = ast::intern("clock");
+  return s;
+}
+ast::Symbol frame_symbol() {
+  static const ast::Symbol s = ast::intern("frame");
+  return s;
+}
+ast::Symbol frames_symbol() {
+  static const ast::Symbol s = ast::intern("frames");
+  return s;
+}
 }  // namespace
 
 void Interpreter::undefined(ast::Symbol name, SourceLoc loc) {
@@ -362,6 +376,7 @@ void Interpreter::undefined(ast::Symbol name, SourceLoc loc) {
     for (std::size_t i = 0; i < globals_end(); ++i) candidates.push_back(*bindings_[i].name);
   for (const Builtin& b : builtin_table()) candidates.push_back(b.name);
   candidates.push_back(*pi_symbol());
+  for (ast::Symbol s : {clock_symbol(), frame_symbol(), frames_symbol()}) candidates.push_back(*s);
   std::string msg = fmt::format("undefined name '{}'", *name);
   std::string hint = render::closest_name(*name, candidates);
   if (std::string pov = povray_hint(*name); !pov.empty())
@@ -733,6 +748,7 @@ Value Interpreter::eval(const ast::Expr& e) {
 Value Interpreter::eval_name(const ast::NameExpr& e) {
   if (Binding* b = lookup(e.name)) return b->value;
   if (e.name == pi_symbol()) return Value::number(std::numbers::pi);  // a constant a `let` may shadow
+  if (Value v; animation_constant(e.name, v)) return v;
   if (uint32_t id = find_builtin(e.name); id != kNotBuiltin) {
     Value v;
     v.type = Type::Builtin;
@@ -740,6 +756,20 @@ Value Interpreter::eval_name(const ast::NameExpr& e) {
     return v;
   }
   undefined(e.name, e.loc);
+}
+
+bool Interpreter::animation_constant(ast::Symbol name, Value& out) {
+  const AnimationClock& a = options_.animation;
+  if (name == clock_symbol())
+    out = Value::number(a.clock);
+  else if (name == frame_symbol())
+    out = Value::number(static_cast<double>(a.frame));
+  else if (name == frames_symbol())
+    out = Value::number(static_cast<double>(a.frames));
+  else
+    return false;
+  uses_clock_ = true;
+  return true;
 }
 
 Value Interpreter::eval_unary(const ast::UnaryExpr& e) { return unary_op(e.op, eval(*e.operand), e.loc); }

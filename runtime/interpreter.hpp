@@ -106,6 +106,7 @@ class Interpreter {
   Value trace_object(const Value& object, const glm::dvec3& origin, const glm::dvec3& direction, SourceLoc loc);
   uint64_t world_shapes() const { return world_objects_.shapes; }
   uint64_t world_lights() const { return world_objects_.lights; }
+  bool uses_clock() const { return uses_clock_; }  // read `clock`, `frame` or `frames`
 
  private:
   // statements (interpreter.cpp)
@@ -153,6 +154,7 @@ class Interpreter {
   // expressions (interpreter.cpp, ops.cpp)
   Value eval(const ast::Expr& e);
   Value eval_name(const ast::NameExpr& e);
+  bool animation_constant(ast::Symbol name, Value& out);
   Value eval_binary(const ast::BinaryExpr& e);
   Value eval_unary(const ast::UnaryExpr& e);
   Value eval_call(const ast::CallExpr& e);
@@ -211,6 +213,7 @@ class Interpreter {
   render::Child probe_key_;
   std::size_t probe_shapes_ = 0;  // shapes defined when it was built (ids stay valid; a guard)
   bool stdlib_found_ = false;
+  bool uses_clock_ = false;
   uint64_t iterations_ = 0;
   std::size_t placements_ = 0;
   uint64_t steps_ = 0;

@@ -181,6 +181,8 @@ struct CameraDesc {
 // Samples per pixel allowed (settings and --samples): 65536 on a 16x16 image is already
 // minutes; beyond it a typo (an extra zero or three) would run for ever.
 inline constexpr int kMaxSamplesPerPixel = 65536;
+// Frames in one animation (settings.frames, --frames): a day of 24 fps video is 2,073,600.
+inline constexpr int64_t kMaxFrames = 10'000'000;
 
 struct Settings {
   int width = 640;
@@ -196,6 +198,9 @@ struct Settings {
   bool environment_ambient = false;
   uint64_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;  // how pixel samples are placed
+  // An animation's frame count: `rts render` without --frames renders frames 0..frames-1
+  // (1: a still). The renderer itself draws one frame at a time.
+  int64_t frames = 1;
   SourceRef loc;
 };
 

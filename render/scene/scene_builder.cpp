@@ -47,7 +47,7 @@ constexpr KindInfo kKinds[] = {
 const std::vector<std::string_view> kSettingsNames = {"width",         "height",      "samples",
                                                       "max_depth",     "background",  "ambient_light",
                                                       "seed",          "sampler",     "environment",
-                                                      "environment_ambient"};
+                                                      "environment_ambient", "frames"};
 const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
                                                     "fov",        "fov_axis",   "handedness", "view_width",
                                                     "aperture",   "focus_distance"};
@@ -236,6 +236,12 @@ void SceneBuilder::settings(ParamSet& ps) {
     if (!parse_sampler(name, s.sampler))
       throw SceneError(loc_of(ps, "sampler"),
                        fmt::format("unknown sampler '{}' (expected random, stratified or sobol)", name));
+  }
+  if (ps.has("frames")) {
+    double frames = ps.number("frames", 1);
+    require(ps, "frames", frames >= 1 && frames <= kMaxFrames && std::floor(frames) == frames,
+            fmt::format("a whole number from 1 to {}", kMaxFrames), frames);
+    s.frames = static_cast<int64_t>(frames);
   }
   s.loc = ps.loc();
   ps.check_unused(kSettingsNames);
