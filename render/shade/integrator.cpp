@@ -7,46 +7,20 @@
 #include <limits>
 #include <numbers>
 
+#include "render/shade/material.hpp"
 #include "render/shade/shading.hpp"
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
 namespace {
 
-Rgb to_rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
-double max_channel(const Rgb& c) { return std::max({c.x, c.y, c.z}); }
-bool is_black(const Rgb& c) { return !(max_channel(c) > 0.0); }
 // Clamps overflowing radiance to a large finite value (NaN passes through, to be counted).
 Rgb saturate(const Rgb& c) {
   auto sat = [](double v) { return v > tol::kMaxRadiance ? tol::kMaxRadiance : v; };
   return Rgb(sat(c.x), sat(c.y), sat(c.z));
 }
 
-// Uniform point in the unit ball from three uniforms (for glossy perturbation).
-Vec3 in_unit_ball(Sampler& s) {
-  double z = 2.0 * s.next() - 1.0;
-  double phi = 2.0 * std::numbers::pi * s.next();
-  double r = std::cbrt(s.next());
-  double xy = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return r * Vec3(xy * std::cos(phi), xy * std::sin(phi), z);
-}
-
 }  // namespace
-
-bool refract(const Vec3& incident, const Vec3& n, double eta, Vec3& refracted) {
-  double cos_i = -glm::dot(incident, n);
-  double sin2_t = eta * eta * std::max(0.0, 1.0 - cos_i * cos_i);
-  if (sin2_t >= 1.0) return false;
-  double cos_t = std::sqrt(1.0 - sin2_t);
-  refracted = glm::normalize(eta * incident + (eta * cos_i - cos_t) * n);
-  return true;
-}
-
-double schlick(double cos_theta, double f0) {
-  double m = std::clamp(1.0 - cos_theta, 0.0, 1.0);
-  double m2 = m * m;
-  return f0 + (1.0 - f0) * m2 * m2 * m;
-}
 
 namespace spec {
 unsigned mask_for(const FeatureSet& f) {
@@ -252,12 +226,7 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
       LightSample ls = sample_light(light, hit.point, on_light);
       double n_dot_l = glm::dot(n, ls.direction);
       if (n_dot_l <= 0.0 || is_black(ls.radiance)) continue;
-      Rgb shade = m.diffuse * n_dot_l * albedo;
-      if ((F & spec::kSpecular) && m.specular > 0.0) {
-        Vec3 r = 2.0 * n_dot_l * n - ls.direction;  // mirror of the light direction
-        double r_dot_v = glm::dot(r, view);
-        if (r_dot_v > 0.0) shade += m.specular * std::pow(r_dot_v, m.shininess) * to_rgb(m.specular_color);
-      }
+      Rgb shade = phong<(F & spec::kSpecular) != 0>(m, albedo, n, ls.direction, n_dot_l, view);
       if (is_black(shade)) continue;
       Rgb transmittance = light.shadows ? shadow_transmittance<F>(shadow_origin, ls, path) : Rgb(1.0);
       sum += shade * ls.radiance * transmittance;
@@ -303,7 +272,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   Vec3 view = -incident;
   Rgb base = albedo<F>(m, hit);
   Rgb ambient = environment_ambient_ ? ambient_light_ * background(n) : ambient_light_;
-  Rgb color = to_rgb(m.emission) + m.ambient * base * ambient;
+  Rgb color = emitted_and_ambient(m, base, ambient);
   Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, hit.error);
   color += direct_light<F>(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, path);
   color = saturate(color);
@@ -311,34 +280,12 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   if constexpr (!(F & spec::kSecondary)) return color;  // nothing reflects or transmits
   if (pr.depth >= max_depth_) return color;
 
-  Rgb kr = to_rgb(m.reflect), kt = to_rgb(m.transmit);
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
-  Vec3 refracted(0.0);
   Interface f;
-  if (!is_black(kt)) {
-    f = interface(pr.media, hit.instance, m, entering);
-    // With fresnel, the interface splits one budget, max(reflect, transmit) per channel,
-    // between the two directions: a fraction F reflects, 1 - F (filtered by `transmit`)
-    // passes, so kr + kt never exceeds the larger weight (1 for clear glass, whatever
-    // `reflect` adds). Without fresnel the two weights simply add, as documented.
-    if (!refract(incident, n, f.n_from / f.n_to, refracted)) {
-      // Total internal reflection: the transmitted energy is reflected (F = 1).
-      kr = m.fresnel ? glm::max(kr, kt) : kr + kt;
-      kt = Rgb(0.0);
-    } else if (m.fresnel) {
-      double f0 = (f.n_from - f.n_to) / (f.n_from + f.n_to);
-      f0 *= f0;
-      // Schlick uses the angle on the less dense side.
-      double cos_thin = f.n_from <= f.n_to ? cos_i : -glm::dot(refracted, n);
-      double fr = schlick(std::abs(cos_thin), f0);
-      kr = glm::max(kr, kt) * fr;
-      kt *= (1.0 - fr);
-    }
-  } else if (m.fresnel && !is_black(kr)) {
-    // Opaque: `reflect` is the reflectance at normal incidence, rising to 1 at grazing angles.
-    double f = schlick(cos_i, 0.0);
-    kr = kr + (Rgb(1.0) - kr) * f;
-  }
+  if (!is_black(to_rgb(m.transmit))) f = interface(pr.media, hit.instance, m, entering);
+  const SpecularWeights w = specular_weights(m, incident, n, cos_i, f.n_from, f.n_to);
+  const Rgb &kr = w.reflect, &kt = w.transmit;
+  const Vec3& refracted = w.refracted;
 
   // Pushed refracted first so the reflected subtree is walked first (see trace()). Weights
   // saturate so colors above 1 reflected thousands of times stay finite.
@@ -353,13 +300,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
       pending.back().media.leave(hit.instance);
   }
   if (max_channel(kr * pr.weight) > tol::kMinPathWeight) {
-    Vec3 mirror = incident + 2.0 * cos_i * n;
-    Vec3 dir = mirror;
-    if (m.roughness > 0.0) {
-      Vec3 glossy = mirror + m.roughness * in_unit_ball(path.sampler);
-      // Perturbed below the surface: fall back to the mirror direction.
-      if (glm::dot(glossy, ng) > 0.0 && glm::length(glossy) > tol::kTinyLength) dir = glm::normalize(glossy);
-    }
+    Vec3 dir = reflected_direction(m, incident + 2.0 * cos_i * n, ng, path.sampler);
     ++path.counters.reflection;
     Ray r{offset_ray_origin(hit.point, ng, dir, hit.error), dir};
     pending.push_back(PendingRay{r, saturate(pr.weight * kr), pr.depth + 1, pr.media});

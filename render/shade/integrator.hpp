@@ -7,6 +7,7 @@
 
 #include "render/scene/features.hpp"
 #include "render/shade/lights.hpp"
+#include "render/shade/material.hpp"
 #include "render/shade/medium_stack.hpp"
 #include "render/sample/sampler.hpp"
 #include "render/stats.hpp"
@@ -105,12 +106,5 @@ class Integrator {
   bool environment_ambient_ = false;
   int max_depth_;
 };
-
-// Snell refraction of unit `incident` through unit normal `n` (facing the incident side) with
-// relative index eta = n_from / n_to. Returns false on total internal reflection.
-bool refract(const Vec3& incident, const Vec3& n, double eta, Vec3& refracted);
-
-// Schlick's approximation of Fresnel reflectance for reflectance at normal incidence f0.
-double schlick(double cos_theta, double f0);
 
 }  // namespace rts::render

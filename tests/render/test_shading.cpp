@@ -1,5 +1,5 @@
-// Shading building blocks: Snell refraction, Schlick, light attenuation and falloff, and the
-// camera's conventions.
+// Shading building blocks: Snell refraction, Schlick, the material unit (Phong, Fresnel weights,
+// the glossy lobe, the BSDF seam), light attenuation and falloff, and the camera's conventions.
 #include <cmath>
 #include <numbers>
 
@@ -8,6 +8,7 @@
 #include "render/sample/camera.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/shade/lights.hpp"
+#include "render/shade/material.hpp"
 
 using namespace rts::render;
 
@@ -157,3 +158,78 @@ TEST_CASE("disc area light samples lie inside the inscribed ellipse", "[shading]
     }
   CHECK(max_r > 0.5);  // the samples spread out, not all at the centre
 }
+
+TEST_CASE("material unit: Fresnel glass splits one budget, TIR reflects it all, opaque Fresnel rises", "[shading]") {
+  MaterialDesc glass;
+  glass.transmit = Color(0.9);
+  glass.reflect = Color(0.1);
+  glass.fresnel = true;
+  const Vec3 n(0, 1, 0);
+  for (double deg : {0.0, 30.0, 60.0, 85.0}) {
+    const double a = deg * 3.141592653589793 / 180.0;
+    const Vec3 incident(std::sin(a), -std::cos(a), 0);
+    const double cos_i = std::cos(a);
+    SpecularWeights w = specular_weights(glass, incident, n, cos_i, 1.0, 1.5);
+    CAPTURE(deg);
+    // reflect + transmit never exceeds max(reflect, transmit) = 0.9.
+    CHECK(w.reflect.x + w.transmit.x <= 0.9 + 1e-12);
+    CHECK(w.transmit.x > 0.0);
+    CHECK(glm::length(w.refracted) == Approx(1.0));
+    // Leaving the glass past the critical angle (41.8 degrees): all of it reflects.
+    SpecularWeights inside = specular_weights(glass, incident, n, cos_i, 1.5, 1.0);
+    if (deg > 42.0) {
+      CHECK(inside.transmit == Rgb(0.0));
+      CHECK(inside.reflect.x == Approx(0.9));
+    }
+  }
+  MaterialDesc metal;
+  metal.reflect = Color(0.5);
+  metal.fresnel = true;
+  SpecularWeights head_on = specular_weights(metal, Vec3(0, -1, 0), n, 1.0, 1.0, 1.0);
+  SpecularWeights grazing = specular_weights(metal, Vec3(0, -1, 0), n, 0.0, 1.0, 1.0);
+  CHECK(head_on.reflect.x == Approx(0.5));
+  CHECK(grazing.reflect.x == Approx(1.0));
+  metal.fresnel = false;
+  CHECK(specular_weights(metal, Vec3(0, -1, 0), n, 0.0, 1.0, 1.0).reflect.x == 0.5);
+}
+
+TEST_CASE("material unit: Phong peaks along the mirror direction; glossy rays stay above the surface", "[shading]") {
+  MaterialDesc m;
+  m.diffuse = 0.5;
+  m.specular = 0.4;
+  m.shininess = 20;
+  const Vec3 n(0, 1, 0), to_light = glm::normalize(Vec3(1, 1, 0));
+  const double n_dot_l = glm::dot(n, to_light);
+  const Rgb peak = phong<true>(m, Rgb(1.0), n, to_light, n_dot_l, glm::normalize(Vec3(-1, 1, 0)));
+  const Rgb off = phong<true>(m, Rgb(1.0), n, to_light, n_dot_l, glm::normalize(Vec3(-0.5, 1, 0)));
+  const Rgb plain = phong<false>(m, Rgb(1.0), n, to_light, n_dot_l, glm::normalize(Vec3(-1, 1, 0)));
+  CHECK(plain.x == Approx(0.5 * n_dot_l));
+  CHECK(peak.x == Approx(0.5 * n_dot_l + 0.4));
+  CHECK(off.x < peak.x);
+  CHECK(off.x > plain.x);
+  // A rough mirror's rays spread, but never below the surface.
+  m.roughness = 0.8;
+  Sampler s(0, 0, 0, 7);
+  const Vec3 mirror = glm::normalize(Vec3(1, 0.05, 0));
+  bool spread = false;
+  for (int i = 0; i < 200; ++i) {
+    Vec3 d = reflected_direction(m, mirror, n, s);
+    CHECK(glm::dot(d, n) > 0.0);
+    spread = spread || glm::dot(d, mirror) < 0.99;
+  }
+  CHECK(spread);
+  m.roughness = 0.0;
+  CHECK(reflected_direction(m, mirror, n, s) == mirror);
+}
+
+namespace {
+// A Lambertian BSDF, to show (and check) the seam's shape.
+struct TestLambert {
+  Rgb albedo{0.5};
+  Rgb f(const ShadingFrame&, const Vec3&) const { return albedo / 3.141592653589793; }
+  double pdf(const ShadingFrame& fr, const Vec3& wi) const { return std::max(0.0, glm::dot(fr.n, wi)) / 3.141592653589793; }
+  bool sample(const ShadingFrame&, const Vec3&, BsdfSample&) const { return false; }
+};
+}  // namespace
+static_assert(Bsdf<TestLambert>, "the BSDF seam's three calls");
+static_assert(!Bsdf<MaterialDesc>, "a material description is not a BSDF");

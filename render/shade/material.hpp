@@ -1,0 +1,161 @@
+// The material model: how a surface point of a MaterialDesc (already resolved for textures and
+// vertex values by shading.hpp) answers light. The Whitted integrator asks it for the
+// emitted + ambient term, the Phong response to one light, the reflect/transmit weights at an
+// interface (Schlick's Fresnel, total internal reflection) and the glossy lobe's direction;
+// the integrator keeps only the recursion, shadow rays and light loops.
+//
+// The `Bsdf` seam at the end is what a physically based integrator (render/shade/path/)
+// implements its scattering functions against; the Whitted functions above it are not BSDFs
+// (Phong is not energy-conserving, and `reflect`/`transmit` are weights, not reflectances).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <numbers>
+
+#include <glm/glm.hpp>
+
+#include "render/geometry/tolerances.hpp"
+#include "render/sample/sampler.hpp"
+#include "render/scene/scene.hpp"
+#include "render/shade/lights.hpp"
+
+namespace rts::render {
+
+inline Rgb to_rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
+inline double max_channel(const Rgb& c) { return std::max({c.x, c.y, c.z}); }
+inline bool is_black(const Rgb& c) { return !(max_channel(c) > 0.0); }
+
+// Snell refraction of unit `incident` through unit normal `n` (facing the incident side) with
+// relative index eta = n_from / n_to. Returns false on total internal reflection.
+inline bool refract(const Vec3& incident, const Vec3& n, double eta, Vec3& refracted) {
+  double cos_i = -glm::dot(incident, n);
+  double sin2_t = eta * eta * std::max(0.0, 1.0 - cos_i * cos_i);
+  if (sin2_t >= 1.0) return false;
+  double cos_t = std::sqrt(1.0 - sin2_t);
+  refracted = glm::normalize(eta * incident + (eta * cos_i - cos_t) * n);
+  return true;
+}
+
+// Schlick's approximation of Fresnel reflectance for reflectance at normal incidence f0.
+inline double schlick(double cos_theta, double f0) {
+  double m = std::clamp(1.0 - cos_theta, 0.0, 1.0);
+  double m2 = m * m;
+  return f0 + (1.0 - f0) * m2 * m2 * m;
+}
+
+// ---- Whitted (Phong) evaluation ------------------------------------------------------------
+
+// What the surface sends back without any light: emission + ambient * base * ambient light.
+inline Rgb emitted_and_ambient(const MaterialDesc& m, const Rgb& base, const Rgb& ambient_light) {
+  return to_rgb(m.emission) + m.ambient * base * ambient_light;
+}
+
+// The Phong response to one light from unit direction `to_light` with n_dot_l = n · to_light
+// > 0: diffuse * n_dot_l * diffuse_color, plus (when kSpecular) the highlight
+// specular * (r · view)^shininess * specular_color, r being to_light mirrored about n. The
+// caller multiplies it by the light's radiance and shadow transmittance.
+template <bool kSpecular>
+inline Rgb phong(const MaterialDesc& m, const Rgb& diffuse_color, const Vec3& n, const Vec3& to_light,
+                 double n_dot_l, const Vec3& view) {
+  Rgb shade = m.diffuse * n_dot_l * diffuse_color;
+  if (kSpecular && m.specular > 0.0) {
+    Vec3 r = 2.0 * n_dot_l * n - to_light;  // mirror of the light direction
+    double r_dot_v = glm::dot(r, view);
+    if (r_dot_v > 0.0) shade += m.specular * std::pow(r_dot_v, m.shininess) * to_rgb(m.specular_color);
+  }
+  return shade;
+}
+
+// The reflect and transmit weights of a hit, and the refracted direction when light passes.
+struct SpecularWeights {
+  Rgb reflect{0.0}, transmit{0.0};
+  Vec3 refracted{0.0};  // valid when `transmit` is not black
+};
+
+// `m`'s reflect and transmit weights at a hit seen along unit `incident`, with unit shading
+// normal `n` facing the incident side and cos_i = clamp(n · -incident, 0, 1); n_from and n_to
+// are the indices on the two sides (used only when m transmits). With fresnel, the interface
+// splits one budget, max(reflect, transmit) per channel, between the two directions: a
+// fraction F reflects, 1 - F (filtered by `transmit`) passes, so reflect + transmit never
+// exceeds the larger weight (1 for clear glass, whatever `reflect` adds). Without fresnel the
+// two weights simply add, as documented. Total internal reflection reflects the transmitted
+// energy (F = 1). An opaque fresnel material's `reflect` is its reflectance at normal
+// incidence, rising to 1 at grazing angles.
+inline SpecularWeights specular_weights(const MaterialDesc& m, const Vec3& incident, const Vec3& n, double cos_i,
+                                        double n_from, double n_to) {
+  SpecularWeights w;
+  w.reflect = to_rgb(m.reflect);
+  w.transmit = to_rgb(m.transmit);
+  if (!is_black(w.transmit)) {
+    if (!refract(incident, n, n_from / n_to, w.refracted)) {
+      w.reflect = m.fresnel ? glm::max(w.reflect, w.transmit) : w.reflect + w.transmit;
+      w.transmit = Rgb(0.0);
+    } else if (m.fresnel) {
+      double f0 = (n_from - n_to) / (n_from + n_to);
+      f0 *= f0;
+      // Schlick uses the angle on the less dense side.
+      double cos_thin = n_from <= n_to ? cos_i : -glm::dot(w.refracted, n);
+      double fr = schlick(std::abs(cos_thin), f0);
+      w.reflect = glm::max(w.reflect, w.transmit) * fr;
+      w.transmit *= (1.0 - fr);
+    }
+  } else if (m.fresnel && !is_black(w.reflect)) {
+    double f = schlick(cos_i, 0.0);
+    w.reflect = w.reflect + (Rgb(1.0) - w.reflect) * f;
+  }
+  return w;
+}
+
+// Uniform point in the unit ball from three uniforms (the glossy lobe's perturbation).
+inline Vec3 in_unit_ball(Sampler& s) {
+  double z = 2.0 * s.next() - 1.0;
+  double phi = 2.0 * std::numbers::pi * s.next();
+  double r = std::cbrt(s.next());
+  double xy = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return r * Vec3(xy * std::cos(phi), xy * std::sin(phi), z);
+}
+
+// The reflected ray's direction: the mirror direction, or with roughness > 0 the mirror
+// perturbed by roughness times a point in the unit ball (one sampler draw of three values),
+// falling back to the mirror when the perturbation goes below the surface (geometric normal
+// `ng`, facing the incident side).
+inline Vec3 reflected_direction(const MaterialDesc& m, const Vec3& mirror, const Vec3& ng, Sampler& sampler) {
+  if (!(m.roughness > 0.0)) return mirror;
+  Vec3 glossy = mirror + m.roughness * in_unit_ball(sampler);
+  if (glm::dot(glossy, ng) > 0.0 && glm::length(glossy) > tol::kTinyLength) return glm::normalize(glossy);
+  return mirror;
+}
+
+// ---- the BSDF seam -------------------------------------------------------------------------
+// A physically based integrator (render/shade/path/) scatters with BSDFs: per hit it builds
+// one from the resolved MaterialDesc (shading_material, diffuse_color and detail_normal in
+// shading.hpp give the same per-point values Whitted uses) and a ShadingFrame, and asks it
+//   f(frame, wi)           the BSDF value for light arriving from unit wi (no cosine),
+//   pdf(frame, wi)         the density sample() draws wi with (solid angle; 0 for deltas),
+//   sample(frame, u, s)    a direction from uniforms u in [0,1)^3 into s, false when none.
+// Directions point away from the surface; frame.wo is towards the viewer. The type is a
+// template parameter or a closed std::variant of BSDF types, never a virtual call per ray;
+// the concept below checks a type has the three calls.
+struct ShadingFrame {
+  Vec3 n{0, 1, 0};    // unit shading normal, on the side of wo
+  Vec3 ng{0, 1, 0};   // unit geometric normal, on the side of wo
+  Vec3 wo{0, 1, 0};   // unit, towards the viewer
+};
+
+struct BsdfSample {
+  Vec3 wi{0.0};       // unit, towards the light
+  Rgb f{0.0};         // BSDF value for (wo, wi)
+  double pdf = 0.0;   // solid-angle density; for a delta lobe the discrete probability
+  bool delta = false; // a mirror or refraction lobe: f and pdf are of the delta's weight
+};
+
+template <class B>
+concept Bsdf = requires(const B& b, const ShadingFrame& frame, const Vec3& wi, const Vec3& u, BsdfSample& s) {
+  { b.f(frame, wi) } -> std::same_as<Rgb>;
+  { b.pdf(frame, wi) } -> std::same_as<double>;
+  { b.sample(frame, u, s) } -> std::same_as<bool>;
+};
+
+}  // namespace rts::render
