@@ -212,7 +212,7 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   const World& world = *prep.world;
   Camera camera(scene.has_camera ? scene.camera : CameraDesc{}, rs.width, rs.height);
   Integrator integrator(world, prep.lights, scene.materials, prep.textures, scene.settings, rs.max_depth,
-                        options.specialize ? spec::mask_for(prep.features) : spec::kGeneric | spec::kAll);
+                        options.specialize ? trace_flags::for_features(prep.features) : trace_flags::kGeneric | trace_flags::kAll);
   const bool adaptive = options.target_error > 0 && rs.samples >= 2;
   const bool progressive = adaptive || (options.time_limit > 0 && rs.samples >= 2);
   const int batches = batch_count(rs.samples, adaptive);

@@ -1,26 +1,10 @@
 #include "render/scene/features.hpp"
 
 #include <array>
+#include <iterator>
 
 namespace rts::render {
 namespace {
-
-// The features after the shapes, in Feature's order.
-constexpr std::string_view kOtherNames[] = {
-    "reflection",  "transmission",
-    "glossiness",  "fresnel",       "texture",           "image_texture", "emission",
-    "specular",    "ambient",       "point_light",       "spot_light",  "directional_light",
-    "area_light",  "shadows",       "transmissive_shadows", "area_sampling", "depth_of_field",
-    "antialiasing", "aovs",         "bvh"};
-static_assert(kShapeKindCount + std::size(kOtherNames) == kFeatureCount, "a name for every Feature");
-
-// Shape features are named after their block kinds.
-constexpr std::array<std::string_view, kFeatureCount> kNames = [] {
-  std::array<std::string_view, kFeatureCount> names{};
-  for (std::size_t i = 0; i < kShapeKindCount; ++i) names[i] = kShapeInfos[i].name;
-  for (std::size_t i = 0; i < std::size(kOtherNames); ++i) names[kShapeKindCount + i] = kOtherNames[i];
-  return names;
-}();
 
 bool nonzero(const Color& c) { return c.r != 0.0 || c.g != 0.0 || c.b != 0.0; }
 
@@ -29,22 +13,6 @@ const MaterialDesc* material_of(const SceneDesc& scene, const ShapeDesc& shape) 
 }
 
 }  // namespace
-
-std::string_view feature_name(Feature f) { return kNames[static_cast<std::size_t>(f)]; }
-
-std::vector<std::string_view> FeatureSet::used() const {
-  std::vector<std::string_view> out;
-  for (std::size_t i = 0; i < kFeatureCount; ++i)
-    if (has(static_cast<Feature>(i))) out.push_back(kNames[i]);
-  return out;
-}
-
-std::vector<std::string_view> FeatureSet::left_out() const {
-  std::vector<std::string_view> out;
-  for (std::size_t i = 0; i < kFeatureCount; ++i)
-    if (!has(static_cast<Feature>(i))) out.push_back(kNames[i]);
-  return out;
-}
 
 bool light_emits(const LightDesc& l) { return l.intensity != 0.0 && nonzero(l.color); }
 bool reflects(const MaterialDesc& m) { return nonzero(m.reflect) || m.reflect_texture != kNoId; }
@@ -68,51 +36,158 @@ const MeshData* vertex_material_mesh(const SceneDesc& scene, const ShapeDesc& sh
   return mesh.has_vertex_material() ? &mesh : nullptr;
 }
 
+namespace {
+
+// What a rule looks at: the placed shape with its material (Shape rules), a placed light that
+// sends light (Light rules), or only the scene and context (Scene rules).
+struct FeatureProbe {
+  const SceneDesc& scene;
+  const FeatureContext& ctx;
+  const ShapeDesc* shape = nullptr;
+  const MaterialDesc* material = nullptr;  // the shape's, or the defaults
+  const LightDesc* light = nullptr;
+  bool secondary_possible() const { return ctx.max_depth > 0; }
+};
+
+enum class Scope : uint8_t { Shape, Light, Scene };
+
+// One row per feature after the shapes (whose rows are derived from the shape kinds): its
+// name, where it is looked for and the rule that finds it, the integrator flags it turns on,
+// and a feature it is void without.
+struct FeatureRule {
+  Feature feature;
+  std::string_view name;
+  Scope scope;
+  bool (*used)(const FeatureProbe&);
+  unsigned trace_flags = 0;
+  Feature only_with = Feature::Count;  // Count: none
+};
+
+bool any_texture(const FeatureProbe& p, bool image_only) {
+  bool found = false;
+  for_each_texture(*p.material, [&](TextureId t) {
+    if (t < p.scene.textures.size() && (!image_only || p.scene.textures[t].kind == TextureKind::Image)) found = true;
+  });
+  return found;
+}
+
+// The leave-out table (docs/leave-out.md describes each row). A channel at zero strength is
+// unused; a light that sends nothing is not looked at.
+constexpr FeatureRule kRules[] = {
+    {Feature::Reflection, "reflection", Scope::Shape,
+     [](const FeatureProbe& p) { return reflects(*p.material) && p.secondary_possible(); }, trace_flags::kSecondary},
+    {Feature::Transmission, "transmission", Scope::Shape,
+     [](const FeatureProbe& p) { return transmits(*p.material) && p.secondary_possible(); }, trace_flags::kSecondary},
+    {Feature::Glossiness, "glossiness", Scope::Shape,
+     [](const FeatureProbe& p) {
+       return reflects(*p.material) && p.material->roughness > 0.0 && p.secondary_possible();
+     },
+     trace_flags::kRandom},
+    {Feature::Fresnel, "fresnel", Scope::Shape,
+     [](const FeatureProbe& p) {
+       return (reflects(*p.material) || transmits(*p.material)) && p.material->fresnel && p.secondary_possible();
+     }},
+    {Feature::Texture, "texture", Scope::Shape, [](const FeatureProbe& p) { return any_texture(p, false); },
+     trace_flags::kTexture},
+    {Feature::ImageTexture, "image_texture", Scope::Shape, [](const FeatureProbe& p) { return any_texture(p, true); }},
+    {Feature::Emission, "emission", Scope::Shape,
+     [](const FeatureProbe& p) { return nonzero(p.material->emission) || p.material->emission_texture != kNoId; }},
+    {Feature::Specular, "specular", Scope::Shape,
+     [](const FeatureProbe& p) {
+       const MeshData* vm = vertex_material_mesh(p.scene, *p.shape);
+       return p.material->specular != 0.0 || p.material->specular_texture != kNoId || (vm && !vm->specular.empty());
+     },
+     trace_flags::kSpecular},
+    {Feature::Ambient, "ambient", Scope::Shape,
+     [](const FeatureProbe& p) { return p.material->ambient != 0.0 && nonzero(p.scene.settings.ambient_light); }},
+    {Feature::PointLight, "point_light", Scope::Light,
+     [](const FeatureProbe& p) { return p.light->kind == LightKind::Point; }},
+    {Feature::SpotLight, "spot_light", Scope::Light, [](const FeatureProbe& p) { return p.light->kind == LightKind::Spot; }},
+    {Feature::DirectionalLight, "directional_light", Scope::Light,
+     [](const FeatureProbe& p) { return p.light->kind == LightKind::Directional; }},
+    {Feature::AreaLight, "area_light", Scope::Light, [](const FeatureProbe& p) { return p.light->kind == LightKind::Area; }},
+    {Feature::Shadows, "shadows", Scope::Light, [](const FeatureProbe& p) { return p.light->shadows; }},
+    {Feature::TransmissiveShadows, "transmissive_shadows", Scope::Shape,
+     [](const FeatureProbe& p) { return transmits(*p.material); }, trace_flags::kTransmissiveShadows, Feature::Shadows},
+    {Feature::AreaSampling, "area_sampling", Scope::Light,
+     [](const FeatureProbe& p) { return p.light->kind == LightKind::Area; }, trace_flags::kRandom},
+    {Feature::DepthOfField, "depth_of_field", Scope::Scene,
+     [](const FeatureProbe& p) { return p.scene.has_camera && p.scene.camera.aperture > 0.0; }},
+    {Feature::Antialiasing, "antialiasing", Scope::Scene, [](const FeatureProbe& p) { return p.ctx.samples > 1; }},
+    {Feature::Aovs, "aovs", Scope::Scene, [](const FeatureProbe& p) { return p.ctx.aovs; }},
+    // Decided by the World (World::uses_bvh) and added by the renderer.
+    {Feature::Bvh, "bvh", Scope::Scene, [](const FeatureProbe&) { return false; }},
+};
+
+constexpr bool rules_in_feature_order() {
+  for (std::size_t i = 0; i < std::size(kRules); ++i)
+    if (static_cast<std::size_t>(kRules[i].feature) != kShapeKindCount + i) return false;
+  return kShapeKindCount + std::size(kRules) == kFeatureCount;
+}
+static_assert(rules_in_feature_order(), "one leave-out rule per Feature after the shapes, in Feature's order");
+
+// Shape features are named after their block kinds.
+constexpr std::array<std::string_view, kFeatureCount> kNames = [] {
+  std::array<std::string_view, kFeatureCount> names{};
+  for (std::size_t i = 0; i < kShapeKindCount; ++i) names[i] = kShapeInfos[i].name;
+  for (std::size_t i = 0; i < std::size(kRules); ++i) names[kShapeKindCount + i] = kRules[i].name;
+  return names;
+}();
+
+void apply_rules(Scope scope, const FeatureProbe& probe, FeatureSet& f) {
+  for (const FeatureRule& r : kRules)
+    if (r.scope == scope && !f.has(r.feature) && r.used(probe)) f.add(r.feature);
+}
+
+}  // namespace
+
+std::string_view feature_name(Feature f) { return kNames[static_cast<std::size_t>(f)]; }
+
+std::vector<std::string_view> FeatureSet::used() const {
+  std::vector<std::string_view> out;
+  for (std::size_t i = 0; i < kFeatureCount; ++i)
+    if (has(static_cast<Feature>(i))) out.push_back(kNames[i]);
+  return out;
+}
+
+std::vector<std::string_view> FeatureSet::left_out() const {
+  std::vector<std::string_view> out;
+  for (std::size_t i = 0; i < kFeatureCount; ++i)
+    if (!has(static_cast<Feature>(i))) out.push_back(kNames[i]);
+  return out;
+}
+
+unsigned trace_flags::for_features(const FeatureSet& f) {
+  unsigned flags = 0;
+  for (const FeatureRule& r : kRules)
+    if (f.has(r.feature)) flags |= r.trace_flags;
+  return flags;
+}
+
 FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const FeatureContext& ctx) {
   FeatureSet f;
-  // Ambient light reaches a surface only when both the material's and the scene's are on; the
-  // default material (no material given) has the MaterialDesc defaults.
+  // The default material (no material given) has the MaterialDesc defaults.
   const MaterialDesc default_material;
-  bool ambient_light = nonzero(scene.settings.ambient_light);
-  bool secondary_possible = ctx.max_depth > 0;
+  FeatureProbe probe{scene, ctx};
   for (const FlatShape& fs : flat.shapes) {
     const ShapeDesc& shape = scene.shapes[fs.shape];
     f.add(shape_feature(shape.geometry.index()));
     const MaterialDesc* mp = material_of(scene, shape);
-    const MaterialDesc& m = mp ? *mp : default_material;
-    bool r = reflects(m), t = transmits(m);
-    if (r && secondary_possible) f.add(Feature::Reflection);
-    if (t) {
-      f.add(Feature::TransmissiveShadows);
-      if (secondary_possible) f.add(Feature::Transmission);
-    }
-    if (r && m.roughness > 0.0 && secondary_possible) f.add(Feature::Glossiness);
-    if ((r || t) && m.fresnel && secondary_possible) f.add(Feature::Fresnel);
-    for_each_texture(m, [&](TextureId t) {
-      if (t >= scene.textures.size()) return;
-      f.add(Feature::Texture);
-      if (scene.textures[t].kind == TextureKind::Image) f.add(Feature::ImageTexture);
-    });
-    if (nonzero(m.emission) || m.emission_texture != kNoId) f.add(Feature::Emission);
-    const MeshData* vm = vertex_material_mesh(scene, shape);
-    if (m.specular != 0.0 || m.specular_texture != kNoId || (vm && !vm->specular.empty())) f.add(Feature::Specular);
-    if (m.ambient != 0.0 && ambient_light) f.add(Feature::Ambient);
+    probe.shape = &shape;
+    probe.material = mp ? mp : &default_material;
+    apply_rules(Scope::Shape, probe, f);
   }
+  probe.shape = nullptr;
+  probe.material = nullptr;
   for (const LightDesc& l : flat.lights) {
     if (!light_emits(l)) continue;  // sends nothing: costs nothing
-    switch (l.kind) {
-      case LightKind::Point: f.add(Feature::PointLight); break;
-      case LightKind::Spot: f.add(Feature::SpotLight); break;
-      case LightKind::Directional: f.add(Feature::DirectionalLight); break;
-      case LightKind::Area: f.add(Feature::AreaLight); f.add(Feature::AreaSampling); break;
-    }
-    if (l.shadows) f.add(Feature::Shadows);
+    probe.light = &l;
+    apply_rules(Scope::Light, probe, f);
   }
-  if (!f.has(Feature::Shadows)) f.bits &= ~(uint64_t{1} << static_cast<unsigned>(Feature::TransmissiveShadows));
-  if (scene.has_camera && scene.camera.aperture > 0.0)
-    f.add(Feature::DepthOfField);
-  if (ctx.samples > 1) f.add(Feature::Antialiasing);
-  if (ctx.aovs) f.add(Feature::Aovs);
+  probe.light = nullptr;
+  apply_rules(Scope::Scene, probe, f);
+  for (const FeatureRule& r : kRules)
+    if (r.only_with != Feature::Count && !f.has(r.only_with)) f.remove(r.feature);
   return f;
 }
 

@@ -55,9 +55,30 @@ struct FeatureSet {
   uint64_t bits = 0;
   bool has(Feature f) const { return bits >> static_cast<unsigned>(f) & 1u; }
   void add(Feature f) { bits |= uint64_t{1} << static_cast<unsigned>(f); }
+  void remove(Feature f) { bits &= ~(uint64_t{1} << static_cast<unsigned>(f)); }
   std::vector<std::string_view> used() const;
   std::vector<std::string_view> left_out() const;
 };
+
+// The Whitted integrator's template flags (render/shade/integrator.*): each compiled path is
+// specialised to one combination, so an unused feature costs neither a branch nor a loop per
+// ray. Features set them through the table in features.cpp (FeatureRule::trace_flags).
+// kGeneric (--no-specialize) is everything on, every light kept, and shadow rays through glass
+// re-walking the scene with closest-hit steps.
+namespace trace_flags {
+inline constexpr unsigned kSecondary = 1;            // reflection or transmission rays
+inline constexpr unsigned kTexture = 2;              // texture lookups (else constant colors)
+inline constexpr unsigned kSpecular = 4;             // Phong highlights
+inline constexpr unsigned kRandom = 8;               // area-light sampling loops, glossy rays
+inline constexpr unsigned kTransmissiveShadows = 16; // shadow rays multiply through glass
+inline constexpr unsigned kAll = 31;
+inline constexpr unsigned kGeneric = 32;             // --no-specialize
+// Every flag doubles the compiled variants (32 now, each a copy of the whole shading path): a
+// new feature sets an existing flag, or none, unless a profile shows its own flag pays.
+static_assert(kAll == 31, "a sixth template flag doubles the integrator's 32 variants: see above");
+// The flags of the features in `features` (the OR of their table rows' flags).
+unsigned for_features(const FeatureSet& features);
+}  // namespace trace_flags
 
 // What the renderer is told beyond the scene.
 struct FeatureContext {

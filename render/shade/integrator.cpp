@@ -22,18 +22,6 @@ Rgb saturate(const Rgb& c) {
 
 }  // namespace
 
-namespace spec {
-unsigned mask_for(const FeatureSet& f) {
-  unsigned mask = 0;
-  if (f.has(Feature::Reflection) || f.has(Feature::Transmission)) mask |= kSecondary;
-  if (f.has(Feature::Texture)) mask |= kTexture;
-  if (f.has(Feature::Specular)) mask |= kSpecular;
-  if (f.has(Feature::AreaSampling) || f.has(Feature::Glossiness)) mask |= kRandom;
-  if (f.has(Feature::TransmissiveShadows)) mask |= kTransmissiveShadows;
-  return mask;
-}
-}  // namespace spec
-
 namespace {
 // The sampler values direct_light draws for one light: a permutation seed, and a 2D jitter
 // per sample of an area light.
@@ -56,7 +44,7 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
     MaterialId id = world.instance(i).material;
     if (id < materials.size() && materials[id].transmit_texture != kNoId) textured_transmit = true;
   }
-  bool generic = (mask & spec::kGeneric) != 0 || textured_transmit;
+  bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit;
   uint32_t skipped = 0;
   for (const CompiledLight& l : lights) {
     // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
@@ -69,7 +57,7 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
     skipped = 0;
   }
   skip_after_ = skipped;
-  trace_ = trace_for(generic ? (spec::kGeneric | spec::kAll) : (mask & spec::kAll));
+  trace_ = trace_for(generic ? (trace_flags::kGeneric | trace_flags::kAll) : (mask & trace_flags::kAll));
   if (settings.environment < textures.size()) {
     environment_ = &textures[settings.environment];
     environment_ambient_ = settings.environment_ambient;
@@ -83,9 +71,9 @@ Rgb Integrator::background(const Vec3& direction) const {
 Integrator::TraceFn Integrator::trace_for(unsigned mask) {
   static constexpr auto table = []<std::size_t... I>(std::index_sequence<I...>) {
     return std::array<TraceFn, sizeof...(I)>{&Integrator::trace_tree<static_cast<unsigned>(I)>...};
-  }(std::make_index_sequence<spec::kAll + 1>{});
-  if (mask & spec::kGeneric) return &Integrator::trace_tree<spec::kGeneric | spec::kAll>;
-  return table[mask & spec::kAll];
+  }(std::make_index_sequence<trace_flags::kAll + 1>{});
+  if (mask & trace_flags::kGeneric) return &Integrator::trace_tree<trace_flags::kGeneric | trace_flags::kAll>;
+  return table[mask & trace_flags::kAll];
 }
 
 const MaterialDesc& Integrator::material(uint32_t instance) const {
@@ -95,7 +83,7 @@ const MaterialDesc& Integrator::material(uint32_t instance) const {
 
 template <unsigned F>
 Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
-  if ((F & spec::kTexture) && m.texture != kNoId && m.texture < textures_.size()) {
+  if ((F & trace_flags::kTexture) && m.texture != kNoId && m.texture < textures_.size()) {
     TexturePoint p;
     p.object_point = hit.object_point;
     p.has_uv = hit.has_uv;
@@ -121,7 +109,7 @@ Rgb Integrator::trace_tree(const Ray& ray, Path& path) const {
   // per thread and reused: no allocation per ray once it has grown.
   thread_local std::vector<PendingRay> pending;
   pending.clear();
-  if constexpr (!(F & spec::kSecondary)) {
+  if constexpr (!(F & trace_flags::kSecondary)) {
     // Nothing reflects or transmits: the tree is the camera ray's hit alone.
     return shade<F>(PendingRay{ray, Rgb(1.0), 0, MediumStack{}}, path, pending);
   }
@@ -154,10 +142,10 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   Ray ray{origin, ls.direction};
   double end = std::isinf(ls.distance) ? Interval::kInfinity
                                         : ls.distance * (1.0 - tol::kShadowEndRelative);
-  if constexpr (!(F & spec::kTransmissiveShadows)) {
+  if constexpr (!(F & trace_flags::kTransmissiveShadows)) {
     // Nothing lets light through.
     return world_.occluded(ray, Interval(0.0, end)) ? Rgb(0.0) : Rgb(1.0);
-  } else if constexpr (!(F & spec::kGeneric)) {
+  } else if constexpr (!(F & trace_flags::kGeneric)) {
     // One traversal: stops at the first opaque hit, else collects the glass crossed, which is
     // multiplied through in order along the ray (the same product as the closest-hit walk).
     ShadowCrossings crossed;
@@ -203,7 +191,7 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
   Rgb sum(0.0);
   // Without kRandom no light is an area light and nothing later draws from the sampler: one
   // sample per light, no permutation seed, no jitter.
-  constexpr bool kRandom = (F & spec::kRandom) != 0;
+  constexpr bool kRandom = (F & trace_flags::kRandom) != 0;
   for (std::size_t k = 0; k < lights_.size(); ++k) {
     const CompiledLight& light = lights_[k];
     if constexpr (kRandom) sampler.skip(skip_before_[k]);
@@ -226,7 +214,7 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
       LightSample ls = sample_light(light, hit.point, on_light);
       double n_dot_l = glm::dot(n, ls.direction);
       if (n_dot_l <= 0.0 || is_black(ls.radiance)) continue;
-      Rgb shade = phong<(F & spec::kSpecular) != 0>(m, albedo, n, ls.direction, n_dot_l, view);
+      Rgb shade = phong<(F & trace_flags::kSpecular) != 0>(m, albedo, n, ls.direction, n_dot_l, view);
       if (is_black(shade)) continue;
       Rgb transmittance = light.shadows ? shadow_transmittance<F>(shadow_origin, ls, path) : Rgb(1.0);
       sum += shade * ls.radiance * transmittance;
@@ -277,7 +265,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   color += direct_light<F>(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, path);
   color = saturate(color);
 
-  if constexpr (!(F & spec::kSecondary)) return color;  // nothing reflects or transmits
+  if constexpr (!(F & trace_flags::kSecondary)) return color;  // nothing reflects or transmits
   if (pr.depth >= max_depth_) return color;
 
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);

@@ -25,27 +25,16 @@ struct FirstHit {
   Rgb albedo{0.0};
 };
 
-// The shading paths compiled for each set of these features (render/scene/features.hpp): a scene
-// runs through the one instantiated for the features it uses, so an unused feature costs
-// neither a branch nor a loop per ray. kGeneric (--no-specialize) is everything on, every light
-// kept, and shadow rays through glass re-walking the scene with closest-hit steps.
-namespace spec {
-inline constexpr unsigned kSecondary = 1;            // reflection or transmission rays
-inline constexpr unsigned kTexture = 2;              // texture lookups (else constant colors)
-inline constexpr unsigned kSpecular = 4;             // Phong highlights
-inline constexpr unsigned kRandom = 8;               // area-light sampling loops, glossy rays
-inline constexpr unsigned kTransmissiveShadows = 16; // shadow rays multiply through glass
-inline constexpr unsigned kGeneric = 32;             // --no-specialize
-inline constexpr unsigned kAll = 31;
-unsigned mask_for(const FeatureSet& features);
-}  // namespace spec
+// The shading paths are compiled for each combination of trace_flags (render/scene/features.hpp,
+// where the leave-out table says which feature sets which flag): a scene runs through the one
+// for the features it uses.
 
 class Integrator {
  public:
-  // `mask`: spec::mask_for(the scene's features), or spec::kGeneric | spec::kAll.
+  // `mask`: trace_flags::for_features(the scene's features), or trace_flags::kGeneric | trace_flags::kAll.
   Integrator(const World& world, const std::vector<CompiledLight>& lights,
              const std::vector<MaterialDesc>& materials, const std::vector<CompiledTexture>& textures,
-             const Settings& settings, int max_depth, unsigned mask = spec::kGeneric | spec::kAll);
+             const Settings& settings, int max_depth, unsigned mask = trace_flags::kGeneric | trace_flags::kAll);
 
   // Radiance arriving along a camera ray.
   Rgb trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const;
@@ -86,7 +75,7 @@ class Integrator {
   template <unsigned F>
   Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const;
   const MaterialDesc& material(uint32_t instance) const;
-  template <unsigned F = spec::kAll>
+  template <unsigned F = trace_flags::kAll>
   Rgb albedo(const MaterialDesc& m, const WorldHit& hit) const;
   // What a ray that leaves the scene sees: the environment map, else the background color.
   Rgb background(const Vec3& direction) const;

@@ -62,7 +62,7 @@ TEST_CASE("analysis: a diffuse scene uses only spheres, a plane, a point light a
                     Feature::Emission, Feature::AreaLight, Feature::AreaSampling, Feature::Antialiasing,
                     Feature::DepthOfField, Feature::Mesh, Feature::TransmissiveShadows})
     CHECK_FALSE(f.has(x));
-  CHECK(spec::mask_for(f) == 0u);
+  CHECK(trace_flags::for_features(f) == 0u);
 }
 
 TEST_CASE("analysis: zero strength counts as unused, declared but unplaced as absent", "[leave_out]") {
@@ -87,7 +87,7 @@ TEST_CASE("analysis: zero strength counts as unused, declared but unplaced as ab
   for (Feature x : {Feature::Reflection, Feature::Transmission, Feature::Glossiness, Feature::Fresnel,
                     Feature::AreaLight, Feature::AreaSampling, Feature::Specular})
     CHECK_FALSE(f.has(x));
-  CHECK(spec::mask_for(f) == 0u);
+  CHECK(trace_flags::for_features(f) == 0u);
 
   // max_depth 0: reflection cannot happen, so it is not used either.
   place(s, add_shape(s, Sphere{Vec3(3, 1, 0), 0.5}, add_material(s, mirror)));
@@ -237,4 +237,44 @@ TEST_CASE("a handful of objects is traced without a BVH, with the same hits", "[
   }
 }
 
+}  // namespace rts::render
+
+namespace rts::render {
+TEST_CASE("the leave-out table: each feature turns on its integrator flags and no other", "[leave_out]") {
+  auto flags_of = [](Feature f) {
+    FeatureSet s;
+    s.add(f);
+    return trace_flags::for_features(s);
+  };
+  CHECK(flags_of(Feature::Reflection) == trace_flags::kSecondary);
+  CHECK(flags_of(Feature::Transmission) == trace_flags::kSecondary);
+  CHECK(flags_of(Feature::Texture) == trace_flags::kTexture);
+  CHECK(flags_of(Feature::Specular) == trace_flags::kSpecular);
+  CHECK(flags_of(Feature::AreaSampling) == trace_flags::kRandom);
+  CHECK(flags_of(Feature::Glossiness) == trace_flags::kRandom);
+  CHECK(flags_of(Feature::TransmissiveShadows) == trace_flags::kTransmissiveShadows);
+  unsigned others = 0;
+  for (std::size_t i = 0; i < kFeatureCount; ++i) {
+    Feature f = static_cast<Feature>(i);
+    CAPTURE(feature_name(f));
+    CHECK((flags_of(f) & ~trace_flags::kAll) == 0u);
+    if (f != Feature::Reflection && f != Feature::Transmission && f != Feature::Texture && f != Feature::Specular &&
+        f != Feature::AreaSampling && f != Feature::Glossiness && f != Feature::TransmissiveShadows)
+      others |= flags_of(f);
+    CHECK(!feature_name(f).empty());
+  }
+  CHECK(others == 0u);
+  // A glass sphere lit by a light without shadows: transmissive_shadows is void without shadows.
+  SceneDesc s = diffuse_scene();
+  MaterialDesc glass;
+  glass.transmit = Color(0.9);
+  place(s, add_shape(s, Sphere{Vec3(0, 1, 0), 0.5}, add_material(s, glass)));
+  FeatureSet with_shadows = analyze_features(s, flatten_scene(s), FeatureContext{1, 5, false});
+  CHECK(with_shadows.has(Feature::TransmissiveShadows));
+  for (LightDesc& l : s.lights) l.shadows = false;
+  FeatureSet without = analyze_features(s, flatten_scene(s), FeatureContext{1, 5, false});
+  CHECK(!without.has(Feature::Shadows));
+  CHECK(!without.has(Feature::TransmissiveShadows));
+  CHECK(without.has(Feature::Transmission));
+}
 }  // namespace rts::render
