@@ -24,6 +24,7 @@
 #include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
 #include "render/image/image_output.hpp"
+#include "render/image/video_writer.hpp"
 #include "render/renderer.hpp"
 #include "runtime/evaluator.hpp"
 
@@ -57,6 +58,7 @@ struct RenderCommand {
   std::string frames, manifest;
   int64_t task_index = 0, task_count = 1;
   bool skip_existing = false;
+  int fps = 24;
 };
 
 // A render error (exit 3) is shown like a language error: located, with the source line and
@@ -154,8 +156,10 @@ int evaluate_scene(const RenderCommand& c, const EvalOptions& eval, DiagnosticSi
 }
 
 // Renders an evaluated scene and writes its images to `out`; `stats` receives the figures.
+// With `video`, the image goes to the video instead of a file (AOVs are refused earlier).
 int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, const std::string& out,
-                 const render::OutputSpec& spec, DiagnosticSink& sink, render::RenderStats* stats_out) {
+                 const render::OutputSpec& spec, DiagnosticSink& sink, render::RenderStats* stats_out,
+                 render::VideoWriter* video = nullptr) {
   render::RenderOptions opts;
   opts.threads = c.threads;
   if (cmd.count("--seed")) opts.seed = c.seed;
@@ -179,14 +183,17 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
   opts.specialize = !c.no_specialize;
 
   try {
-    check_output_writable(out);
+    if (!video) check_output_writable(out);
     print_warnings(ev.scene.warnings);
     render::RenderResult result = render::render(ev.scene, opts);
     print_warnings(result.warnings);
     result.stats.eval_seconds = ev.eval_seconds;
     result.stats.parse_seconds = ev.parse_seconds;
     auto write_start = std::chrono::steady_clock::now();
-    render::write_images(out, spec, result.color, result.aovs);
+    if (video)
+      video->add_frame(result.color);
+    else
+      render::write_images(out, spec, result.color, result.aovs);
     result.stats.write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";
@@ -269,6 +276,62 @@ int run_frames(const RenderCommand& c, const CLI::App& cmd, const CommandContext
   return kExitOk;
 }
 
+// Renders the frames in order into one video file (written whole at the end, or not at all).
+int run_video(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx, const std::string& out,
+              render::VideoFormat format, const FrameRange& animation, const FrameRange& selected, Evaluated probe,
+              const AnimationClock& probe_clock, DiagnosticSink& sink) {
+  auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<render::VideoWriter> video;
+  render::OutputSpec spec;  // unused: frames go to the video
+  if (!probe.uses_clock && animation.count() > 1)
+    std::cerr << fmt::format("rts: warning: {}: the scene never reads clock, frame or frames: every frame "
+                             "is the same image\n", c.scene);
+  try {
+    check_output_writable(out);
+  } catch (const render::RenderError& e) {
+    std::cerr << "rts: error: " << e.what() << "\n";
+    return kExitRenderError;
+  }
+  for (int64_t f = selected.first; f <= selected.last; ++f) {
+    AnimationClock clock{frame_clock(animation, f), f, animation.count()};
+    Evaluated fresh;
+    Evaluated* ev = &fresh;
+    if (probe.sources && same_clock(clock, probe_clock)) {
+      ev = &probe;
+    } else {
+      EvalOptions eval = c.eval;
+      eval.animation = clock;
+      DiagnosticSink frame_sink(std::cerr, ctx.color);
+      if (int rc = evaluate_scene(c, eval, frame_sink, fresh); rc != kExitOk) return rc;
+    }
+    if (!video) {
+      const int w = cmd.count("--width") ? c.width : ev->scene.settings.width;
+      const int h = cmd.count("--height") ? c.height : ev->scene.settings.height;
+      try {
+        render::VideoOptions vo;
+        vo.fps = c.fps;
+        video = std::make_unique<render::VideoWriter>(out, format, w, h, vo);
+      } catch (const render::RenderError& e) {
+        std::cerr << "rts: error: " << e.what() << "\n";
+        return kExitRenderError;
+      }
+    }
+    const std::string label = fmt::format("{} frame {}", out, f);
+    if (int rc = render_scene(c, cmd, *ev, label, spec, sink, nullptr, video.get()); rc != kExitOk) return rc;
+    if (ev == &probe) probe.sources.reset();
+  }
+  try {
+    video->finish();
+  } catch (const render::RenderError& e) {
+    std::cerr << "rts: error: " << e.what() << "\n";
+    return kExitRenderError;
+  }
+  std::cerr << fmt::format("rts: {}: {} frames ({}..{}), {} at {} fps, {:.1f}s\n", out, video->frames(),
+                           selected.first, selected.last, video->codec_name(), c.fps,
+                           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return kExitOk;
+}
+
 int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) {
   const bool frames_flag = cmd.count("--frames") > 0;
   FrameRange flag_range;
@@ -286,14 +349,25 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   std::string out = c.output;
   if (out.empty()) out = frames_flag ? default_frame_pattern(c.scene) : fs::path(c.scene).stem().string() + ".png";
   // A usage error, before any work: never write one format's bytes under another's name.
-  render::OutputSpecResult spec = render::output_spec(out, c.bits, c.linear, c.aov_files);
-  if (!spec.spec) throw CLI::ValidationError("--output", spec.error);
+  const std::optional<render::VideoFormat> video = render::video_format_for_path(out);
+  render::OutputSpecResult spec;
+  if (video) {
+    spec.spec = render::OutputSpec{};
+    if (!c.aovs.empty()) throw CLI::ValidationError("--aov", "AOVs are images: render the frames to a '#' pattern for them");
+    if (task.count > 1 || c.skip_existing)
+      throw CLI::ValidationError("--output", "a video is made by one process in one go: render frames to a '#' "
+                                             "pattern to split or resume them");
+    if (cmd.count("--bits") || c.linear) throw CLI::ValidationError("--bits/--linear", "apply to image files, not video");
+  } else {
+    spec = render::output_spec(out, c.bits, c.linear, c.aov_files);
+    if (!spec.spec) throw CLI::ValidationError("--output", spec.error);
+  }
   if (!c.depth_range.empty() && !(std::isfinite(c.depth_range[0]) && std::isfinite(c.depth_range[1]) &&
                                   c.depth_range[0] <= c.depth_range[1]))
     throw CLI::ValidationError("--depth-range", "expects two finite numbers NEAR,FAR with NEAR <= FAR");
   if (!std::isfinite(c.depth_miss) || !std::isfinite(c.normal_miss))
     throw CLI::ValidationError("--depth-miss/--normal-miss", "expects a finite number");
-  if (frames_flag && flag_range.count() > 1 && !has_frame_pattern(out))
+  if (frames_flag && flag_range.count() > 1 && !video && !has_frame_pattern(out))
     throw CLI::ValidationError("--output", fmt::format("'{}' has no '#' run for the frame number: with several "
                                                        "frames, name them like out/ball_####.png", out));
 
@@ -307,7 +381,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     if (int rc = evaluate_scene(c, eval, sink, probe); rc != kExitOk) return rc;
   }
   const int64_t scene_frames = probe.scene.settings.frames;
-  if (!frames_flag && scene_frames == 1) {
+  if (!frames_flag && scene_frames == 1 && !video) {
     if (task.count > 1)
       throw CLI::ValidationError("--task-index/--task-count",
                                  "splits an animation's frames: give --frames or settings { frames = N }");
@@ -329,6 +403,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
       return kExitUsage;
     }
   }
+  if (video) return run_video(c, cmd, ctx, out, *video, animation, selected, std::move(probe), probe_clock, sink);
   if (c.output.empty()) out = default_frame_pattern(c.scene);
   if (selected.count() > 1 && !has_frame_pattern(out))
     throw CLI::ValidationError("--output", fmt::format("'{}' has no '#' run for the frame number: the scene is an "
@@ -343,7 +418,8 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   auto c = std::make_shared<RenderCommand>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image (PNG, PFM or EXR)");
   cmd->add_option("scene", c->scene, "The scene file (.rts)")->required();
-  cmd->add_option("-o,--output", c->output, "Output image: .png, .pfm or .exr, by extension (default: the scene's name with .png, here)")
+  cmd->add_option("-o,--output", c->output, "Output image: .png, .pfm or .exr, by extension (default: the scene's name with .png, here); "
+                  "an animation's frames: a '#' pattern (out/f_####.png) or a video (.mp4, .webm)")
       ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("the file name is empty") : ""; },
                              ""));
   // Whole numbers in a stated range: "-1" or "99999999999999999999" are usage errors.
@@ -384,6 +460,7 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
                    "Animation: this task's index among --task-count (default: SLURM_ARRAY_TASK_ID)", false);
   add_whole_option(*cmd, "--task-count", c->task_count, 1, render::kMaxFrames,
                    "Animation: render every N-th frame of the range, from --task-index", false);
+  add_whole_option(*cmd, "--fps", c->fps, 1, 1000, "Video (-o .mp4/.webm): frames per second (default 24)", false);
   cmd->add_flag("--skip-existing", c->skip_existing, "Animation: skip frames whose image is already written");
   cmd->add_option("--manifest", c->manifest,
                   "Animation: JSON Lines file of rendered frames (default: OUT-without-####.manifest.jsonl)");

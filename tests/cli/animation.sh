@@ -89,6 +89,16 @@ expect_exit 2 "task index out of range" -- "$RTS" render "$TMP/anim.rts" --frame
 expect_exit 2 "task index alone" -- "$RTS" render "$TMP/anim.rts" --frames 0..3 --task-index 1 -o "$TMP/b_##.png"
 [[ -z "$(ls "$TMP"/b_* 2>/dev/null)" ]] || { echo "FAIL: a usage error wrote frames"; FAILS=$((FAILS + 1)); }
 
+# Video: the frames in one file, written whole; what a video cannot do is a usage error.
+expect_exit 0 "-o .mp4 encodes the frames" -- "$RTS" render "$TMP/anim.rts" --frames 0..5 -o "$TMP/v.mp4" --fps 12 --no-progress
+expect_grep "$TMP/err" "v.mp4: 6 frames \(0\.\.5\), libx264 at 12 fps" "says what it wrote"
+[[ "$(head -c 8 "$TMP/v.mp4" | tail -c 4)" == ftyp ]] || { echo "FAIL: v.mp4 is not an MP4"; FAILS=$((FAILS + 1)); }
+expect_exit 0 "-o .webm encodes the frames" -- "$RTS" render "$TMP/anim.rts" --frames 0..2 -o "$TMP/v.webm" --no-progress
+[[ "$(head -c 4 "$TMP/v.webm" | od -An -tx1 | tr -d ' ')" == 1a45dfa3 ]] || { echo "FAIL: v.webm is not WebM"; FAILS=$((FAILS + 1)); }
+expect_exit 2 "a video has no AOVs" -- "$RTS" render "$TMP/anim.rts" --frames 0..2 -o "$TMP/w.mp4" --aov depth
+expect_exit 2 "a video is not split over tasks" -- "$RTS" render "$TMP/anim.rts" --frames 0..2 -o "$TMP/w.mp4" --task-index 0 --task-count 2
+ls "$TMP"/w.mp4* >/dev/null 2>&1 && { echo "FAIL: a refused video left a file"; FAILS=$((FAILS + 1)); }
+
 # A still is unchanged; a scene that never reads the clock is warned about when animated.
 cat >"$TMP/still.rts" <<'SCENE'
 settings { width = 16  height = 12 }
