@@ -45,6 +45,7 @@ struct RenderCommand {
   int width = 0, height = 0, samples = 0, max_depth = 0;
   std::vector<std::string> aovs;
   std::string sampler;
+  std::string integrator;
   double target_error = 0, time_limit = 0;
   int bits = 0;  // 0: the format's default
   bool linear = false, aov_files = false;
@@ -83,6 +84,21 @@ void print_warnings(const std::vector<render::Warning>& warnings) {
     else
       std::cerr << "rts: warning: " << w.message << "\n";
   }
+}
+
+// In path mode emissive materials and the sky are lights too: a scene lit only by them is
+// not "unlit".
+bool path_lit(const render::SceneDesc& scene, const std::string& integrator_flag) {
+  bool path = integrator_flag.empty() ? scene.settings.integrator == render::IntegratorKind::Path
+                                      : integrator_flag == "path";
+  if (!path) return false;
+  const render::Color& bg = scene.settings.background;
+  if (scene.settings.environment != render::kNoId || bg.r > 0 || bg.g > 0 || bg.b > 0) return true;
+  for (const render::MaterialDesc& m : scene.materials) {
+    const render::Color& e = m.emission;
+    if (m.emission_texture != render::kNoId || e.r > 0 || e.g > 0 || e.b > 0) return true;
+  }
+  return false;
 }
 
 // Fails early (before spending time rendering) when the output folder cannot take the file.
@@ -140,7 +156,7 @@ int evaluate_scene(const RenderCommand& c, const EvalOptions& eval, DiagnosticSi
     SourceLoc whole_file{out.sources->find(c.scene), 0, 0};
     if (evaluated.world_shapes == 0)
       sink.warning(whole_file, "the scene places no objects: the image shows only the background");
-    else if (evaluated.world_lights == 0)
+    else if (evaluated.world_lights == 0 && !path_lit(scene, c.integrator))
       sink.warning(whole_file, "the scene places no lights: objects show only their ambient light and emission");
   } catch (const LanguageError& e) {
     sink.report(e.diag);
@@ -172,6 +188,11 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
     render::SamplerKind kind = render::SamplerKind::Sobol;
     render::parse_sampler(c.sampler, kind);  // CLI11 checked the name
     opts.sampler = kind;
+  }
+  if (!c.integrator.empty()) {
+    render::IntegratorKind kind = render::IntegratorKind::Whitted;
+    render::parse_integrator(c.integrator, kind);  // CLI11 checked the name
+    opts.integrator = kind;
   }
   opts.target_error = c.target_error;
   opts.time_limit = c.time_limit;
@@ -434,6 +455,9 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::IsMember({"normal", "depth", "albedo", "error"}));
   cmd->add_option("--sampler", c->sampler, "Sample placement: random, stratified or sobol")
       ->check(CLI::IsMember({"random", "stratified", "sobol"}));
+  cmd->add_option("--integrator", c->integrator,
+                  "whitted (ray tracing) or path (path tracing, docs/path-tracing.md); overrides settings.integrator")
+      ->check(CLI::IsMember({"whitted", "path"}));
   cmd->add_option("--target-error", c->target_error,
                   "Adaptive: sample until the estimated RMSE is at most this (--samples is the cap)")
       ->check(CLI::PositiveNumber);

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
@@ -21,6 +22,7 @@
 #include "render/image/frame.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/shade/lights.hpp"
+#include "render/shade/path/path_integrator.hpp"
 #include "render/sample/pixel_renderer.hpp"
 #include "render/progress.hpp"
 #include "render/scene/resource_limits.hpp"
@@ -213,6 +215,13 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   Camera camera(scene.has_camera ? scene.camera : CameraDesc{}, rs.width, rs.height);
   Integrator integrator(world, prep.lights, scene.materials, prep.textures, scene.settings, rs.max_depth,
                         options.specialize ? trace_flags::for_features(prep.features) : trace_flags::kGeneric | trace_flags::kAll);
+  // Path mode: the path tracer takes the camera samples (the Whitted integrator keeps the AOVs).
+  const IntegratorKind integrator_kind = options.integrator.value_or(scene.settings.integrator);
+  std::optional<path::PathIntegrator> path_tracer;
+  if (integrator_kind == IntegratorKind::Path) {
+    path_tracer.emplace(world, scene, prep.lights, prep.textures, rs.max_depth, result.warnings);
+    integrator.use_path_tracer(&*path_tracer);
+  }
   const bool adaptive = options.target_error > 0 && rs.samples >= 2;
   const bool progressive = adaptive || (options.time_limit > 0 && rs.samples >= 2);
   const int batches = batch_count(rs.samples, adaptive);
@@ -233,6 +242,8 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   stats.planes = world.plane_count();
   stats.lights = prep.lights.size();
   stats.specialized = options.specialize;
+  stats.integrator = integrator_name(integrator_kind);
+  if (path_tracer) path_tracer->describe(stats.path_used, stats.path_left_out);
   describe(prep, frame, result, stats);
   stats.pixels.width = rs.width;
   stats.pixels.height = rs.height;

@@ -20,6 +20,7 @@ struct RenderOptions {
   std::optional<int> width, height, samples, max_depth;  // override settings
   std::vector<std::string> aovs;          // any of "normal", "depth", "albedo", "error"
   std::optional<SamplerKind> sampler;     // overrides settings.sampler
+  std::optional<IntegratorKind> integrator;  // overrides settings.integrator
   // Adaptive sampling: add samples where the estimated error is highest until the image's
   // estimated RMSE is at most this (0: off); `samples` is then the per-pixel maximum.
   double target_error = 0;

@@ -38,6 +38,7 @@ std::string RenderStats::summary() const {
                      error.batches);
   else
     s += ", est. error n/a (1 sample per pixel)";
+  if (integrator != "whitted") s += fmt::format("; {} integrator", integrator);
   if (rays.nan_samples > 0) s += fmt::format("; {} NaN samples replaced by black", rays.nan_samples);
   return s;
 }

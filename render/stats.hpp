@@ -67,6 +67,8 @@ struct RenderStats {
   RayCounters rays;
   // What the scene uses and what rendering left out (render/scene/features.hpp names).
   bool specialized = true;     // false under --no-specialize
+  std::string integrator = "whitted";  // "whitted" or "path"
+  std::vector<std::string> path_used, path_left_out;  // path mode: its features (PathIntegrator::describe)
   std::vector<std::string> features_used, features_left_out;
   NamedCounts primitives;      // placed primitives by kind (meshes: their triangles counted apart)
   uint64_t triangles = 0;      // in placed meshes, each distinct mesh once
@@ -108,6 +110,9 @@ struct RenderStats {
     f("features.specialized", specialized);
     f("features.used", features_used);
     f("features.left_out", features_left_out);
+    f("integrator.kind", integrator);
+    f("integrator.path_used", path_used);
+    f("integrator.path_left_out", path_left_out);
     f("rays.camera", rays.camera);
     f("rays.shadow", rays.shadow);
     f("rays.reflection", rays.reflection);

@@ -110,6 +110,13 @@ class World {
   bool vertex_material(const WorldHit& hit, VertexMaterial& out) const;
 
   const Instance& instance(uint32_t i) const { return instances_[i]; }
+  // An instance's object -> world transform (null: the identity), and the shapes by their
+  // Instance::index, for samplers of emissive shapes (render/shade/path/light_set.*).
+  const InstanceTransform* transform(uint32_t i) const {
+    return instances_[i].transform == kNoId ? nullptr : &transforms_[instances_[i].transform];
+  }
+  template <class T>
+  const T& shape(uint32_t index) const { return std::get<std::vector<T>>(shapes_)[index]; }
   std::size_t instance_count() const { return instances_.size(); }
   std::size_t plane_count() const { return planes_.size(); }
   std::size_t mesh_bvh_count() const;  // distinct mesh BVHs built

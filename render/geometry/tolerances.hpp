@@ -83,4 +83,23 @@ inline constexpr int kMaxGroupDepth = 1024;
 // beside double rounding. Image textures step one texel instead.
 inline constexpr double kBumpDifference = 1e-4;
 
+// Path tracing: a cosine between a direction and a shading normal below this counts as
+// grazing (the BSDF falls back to the geometric normal, densities stay finite): 1e-7 is a
+// tenth of a micro-radian from the tangent plane, far below what a pixel resolves.
+inline constexpr double kGrazingCosine = 1e-7;
+
+// Path tracing: GGX roughness below this is sampled as this (alpha 1e-4 is a mirror to any
+// image; smaller ones make D overflow at the peak).
+inline constexpr double kMinMicrofacetAlpha = 1e-4;
+
+// Path tracing: an emitter whose area (or solid angle) is below this is not sampled by next-
+// event estimation (its density would overflow); rays that hit it still see its emission.
+inline constexpr double kMinEmitterArea = 1e-200;
+
+// Path tracing: a point closer to an emissive sphere's centre than (1 + this) times its
+// radius samples the sphere by area, not by the cone it subtends: a point on the sphere
+// itself (a shading point of the light, or inside it) sees no cone, and rounding may put it
+// just outside.
+inline constexpr double kSphereConeMargin = 1e-6;
+
 }  // namespace rts::render::tol

@@ -16,6 +16,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -184,6 +185,18 @@ inline constexpr int kMaxSamplesPerPixel = 65536;
 // Frames in one animation (settings.frames, --frames): a day of 24 fps video is 2,073,600.
 inline constexpr int64_t kMaxFrames = 10'000'000;
 
+// Which integrator renders the scene: Whitted ray tracing (the default) or the path tracer
+// (render/shade/path/, docs/path-tracing.md).
+enum class IntegratorKind : uint8_t { Whitted, Path };
+inline const char* integrator_name(IntegratorKind k) { return k == IntegratorKind::Path ? "path" : "whitted"; }
+// "whitted" or "path"; false for anything else.
+inline bool parse_integrator(std::string_view name, IntegratorKind& out) {
+  if (name == "whitted") out = IntegratorKind::Whitted;
+  else if (name == "path") out = IntegratorKind::Path;
+  else return false;
+  return true;
+}
+
 struct Settings {
   int width = 640;
   int height = 480;
@@ -201,6 +214,7 @@ struct Settings {
   // An animation's frame count: `rts render` without --frames renders frames 0..frames-1
   // (1: a still). The renderer itself draws one frame at a time.
   int64_t frames = 1;
+  IntegratorKind integrator = IntegratorKind::Whitted;
   SourceRef loc;
 };
 

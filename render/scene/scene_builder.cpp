@@ -47,7 +47,8 @@ constexpr KindInfo kKinds[] = {
 const std::vector<std::string_view> kSettingsNames = {"width",         "height",      "samples",
                                                       "max_depth",     "background",  "ambient_light",
                                                       "seed",          "sampler",     "environment",
-                                                      "environment_ambient", "frames"};
+                                                      "environment_ambient", "frames",
+                                                      "integrator"};
 const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
                                                     "fov",        "fov_axis",   "handedness", "view_width",
                                                     "aperture",   "focus_distance"};
@@ -242,6 +243,12 @@ void SceneBuilder::settings(ParamSet& ps) {
     require(ps, "frames", frames >= 1 && frames <= kMaxFrames && std::floor(frames) == frames,
             fmt::format("a whole number from 1 to {}", kMaxFrames), frames);
     s.frames = static_cast<int64_t>(frames);
+  }
+  if (ps.has("integrator")) {
+    std::string name = ps.string("integrator", "whitted");
+    if (!parse_integrator(name, s.integrator))
+      throw SceneError(loc_of(ps, "integrator"),
+                       fmt::format("unknown integrator '{}' (expected whitted or path)", name));
   }
   s.loc = ps.loc();
   ps.check_unused(kSettingsNames);

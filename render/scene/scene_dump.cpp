@@ -119,6 +119,7 @@ void SceneDesc::dump(std::ostream& out) const {
                      s.width, s.height, s.samples, s.max_depth, col(s.background), col(s.ambient_light), s.seed);
   if (s.environment != kNoId)
     out << fmt::format(" environment texture {} environment_ambient {}", s.environment, yes(s.environment_ambient));
+  if (s.integrator != IntegratorKind::Whitted) out << " integrator " << integrator_name(s.integrator);
   out << '\n';
   const CameraDesc& c = camera;
   out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}{}{}\n",

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "render/shade/material.hpp"
+#include "render/shade/path/path_integrator.hpp"
 #include "render/shade/shading.hpp"
 #include "render/geometry/tolerances.hpp"
 
@@ -74,6 +75,15 @@ Integrator::TraceFn Integrator::trace_for(unsigned mask) {
   }(std::make_index_sequence<trace_flags::kAll + 1>{});
   if (mask & trace_flags::kGeneric) return &Integrator::trace_tree<trace_flags::kGeneric | trace_flags::kAll>;
   return table[mask & trace_flags::kAll];
+}
+
+void Integrator::use_path_tracer(const path::PathIntegrator* tracer) {
+  path_tracer_ = tracer;
+  if (tracer) trace_ = &Integrator::trace_path;
+}
+
+Rgb Integrator::trace_path(const Ray& ray, Path& path) const {
+  return path_tracer_->trace(ray, path.sampler, path.counters);
 }
 
 const MaterialDesc& Integrator::material(uint32_t instance) const {

@@ -16,6 +16,10 @@
 
 namespace rts::render {
 
+namespace path {
+class PathIntegrator;
+}
+
 // What the first hit of a pixel's centre ray shows, for the AOV images.
 struct FirstHit {
   bool hit = false;
@@ -39,6 +43,10 @@ class Integrator {
   // Radiance arriving along a camera ray.
   Rgb trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const;
   FirstHit first_hit(const Ray& ray) const;
+  // Path mode (settings.integrator = "path"): camera samples go to `tracer` instead of the
+  // Whitted tree, through the same one indirect call, so Whitted scenes pay nothing for it.
+  // The AOVs still come from first_hit.
+  void use_path_tracer(const path::PathIntegrator* tracer);
 
  private:
   // What one camera sample's path carries along.
@@ -60,6 +68,7 @@ class Integrator {
   };
   using TraceFn = Rgb (Integrator::*)(const Ray&, Path&) const;
   static TraceFn trace_for(unsigned mask);
+  Rgb trace_path(const Ray& ray, Path& path) const;
   // The whole Whitted tree of one camera ray, compiled for feature set F.
   template <unsigned F>
   Rgb trace_tree(const Ray& ray, Path& path) const;
@@ -94,6 +103,7 @@ class Integrator {
   const CompiledTexture* environment_ = nullptr;   // settings.environment, if any
   bool environment_ambient_ = false;
   int max_depth_;
+  const path::PathIntegrator* path_tracer_ = nullptr;
 };
 
 }  // namespace rts::render

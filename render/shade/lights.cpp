@@ -53,9 +53,6 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
   return out;
 }
 
-namespace {
-
-// Smooth spot falloff: 1 inside the inner cone, 0 outside the outer one, smoothstep between.
 double spot_factor(const CompiledLight& l, const Vec3& light_to_point) {
   double c = glm::dot(light_to_point, l.spot_axis);
   if (c >= l.cos_inner) return 1.0;
@@ -63,6 +60,8 @@ double spot_factor(const CompiledLight& l, const Vec3& light_to_point) {
   double t = (c - l.cos_outer) / (l.cos_inner - l.cos_outer);
   return t * t * (3.0 - 2.0 * t);
 }
+
+namespace {
 
 // Radiance arriving from one light sample at `distance`.
 // Saturated: a tiny attenuation (1e-10) near the light multiplies the power by up to 1e300.

@@ -53,6 +53,10 @@ LightSample sample_light(const CompiledLight& light, const Vec3& point, glm::dve
 LightSample sample_light(const CompiledLight& light, const Vec3& point, int index,
                          glm::dvec2 jitter, uint32_t perm_seed);
 
+// A spot light's smooth falloff towards the unit `light_to_point`: 1 inside the inner cone, 0
+// outside the outer one, smoothstep between.
+double spot_factor(const CompiledLight& light, const Vec3& light_to_point);
+
 // 1 / (c + l d + q d^2), guarded against non-positive denominators; with `clamp`,
 // min(1, 1 / (c + l d + q d^2)) (UW CSE 457's point lights).
 double attenuation_factor(const Vec3& coefficients, double distance, bool clamp = false);

@@ -1,0 +1,286 @@
+#include "render/shade/path/light_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "render/geometry/tolerances.hpp"
+#include "render/sample/camera.hpp"
+
+namespace rts::render::path {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Rgb to_rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
+bool is_black(const Rgb& c) { return !(std::max({c.x, c.y, c.z}) > 0.0); }
+
+Vec3 point_to_world(const InstanceTransform* xf, const Vec3& p) {
+  return xf ? Vec3(xf->to_world * glm::dvec4(p, 1.0)) : p;
+}
+Vec3 vector_to_world(const InstanceTransform* xf, const Vec3& v) { return xf ? xf->vector_to_world * v : v; }
+
+// A transform that keeps spheres spheres (rotation, mirror, uniform scale, translation):
+// its scale factor, or 0 when it stretches some axis more than another.
+double uniform_scale(const InstanceTransform* xf) {
+  if (!xf) return 1.0;
+  const glm::dmat3& m = xf->vector_to_world;
+  double s0 = glm::length(m[0]), s1 = glm::length(m[1]), s2 = glm::length(m[2]);
+  double tol = 1e-9 * std::max({s0, s1, s2});
+  if (std::abs(s0 - s1) > tol || std::abs(s0 - s2) > tol) return 0.0;
+  if (std::abs(glm::dot(m[0], m[1])) > tol * s0 || std::abs(glm::dot(m[0], m[2])) > tol * s0 ||
+      std::abs(glm::dot(m[1], m[2])) > tol * s0)
+    return 0.0;
+  return s0;
+}
+
+}  // namespace
+
+LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector<CompiledLight>& lights,
+                   const std::vector<CompiledTexture>& textures) {
+  emitter_of_.assign(world.instance_count(), kNoEntry);
+  for (uint32_t i = 0; i < world.instance_count(); ++i) {
+    MaterialId id = world.instance(i).material;
+    if (id >= scene.materials.size()) continue;
+    const MaterialDesc& m = scene.materials[id];
+    if (m.emission_texture != kNoId) {
+      ++unsampled_emitters_;  // varies over the surface: found by BSDF rays only
+      continue;
+    }
+    Rgb le = to_rgb(m.emission);
+    if (!is_black(le)) add_emitter(world, scene, i, le);
+  }
+  for (const CompiledLight& l : lights) {
+    if (is_black(l.power)) continue;
+    Entry e;
+    switch (l.kind) {
+      case LightKind::Point: e.type = Type::Point; break;
+      case LightKind::Spot: e.type = Type::Spot; break;
+      case LightKind::Directional: e.type = Type::Directional; break;
+      case LightKind::Area: e.type = Type::AreaLight; break;
+    }
+    e.light = l;
+    e.radiance = l.power;
+    e.p0 = l.position;
+    if (l.kind == LightKind::Area) {
+      e.e1 = l.u;
+      e.e2 = l.v;
+      e.disc = l.disc;
+      e.area = glm::length(glm::cross(l.u, l.v)) * (l.disc ? kPi / 4.0 : 1.0);
+      if (!(e.area > tol::kMinEmitterArea)) continue;   // a zero-size area light sends nothing
+      e.radiance = glm::min(2.0 * l.power / e.area, Rgb(tol::kMaxRadiance));
+      ++area_lights_;
+    } else {
+      ++delta_lights_;
+    }
+    entries_.push_back(e);
+  }
+  if (scene.settings.environment < textures.size()) environment_ = &textures[scene.settings.environment];
+  background_ = to_rgb(scene.settings.background);
+  if (environment_ || !is_black(background_)) {
+    sky_ = static_cast<uint32_t>(entries_.size());
+    Entry e;
+    e.type = Type::Sky;
+    entries_.push_back(e);
+  }
+  pick_pdf_ = entries_.empty() ? 0.0 : 1.0 / static_cast<double>(entries_.size());
+}
+
+void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le) {
+  const Instance& inst = world.instance(instance);
+  const InstanceTransform* xf = world.transform(instance);
+  Entry e;
+  e.radiance = le;
+  if (inst.kind == kPrimKind<Sphere>) {
+    double s = uniform_scale(xf);
+    const Sphere& sp = world.shape<Sphere>(inst.index);
+    e.type = Type::Sphere;
+    e.p0 = point_to_world(xf, sp.center);
+    e.radius = s * sp.radius;
+    e.area = 4.0 * kPi * e.radius * e.radius;
+    if (s == 0.0) e.area = 0.0;  // an ellipsoid: not sampled
+  } else if (inst.kind == kPrimKind<Quad>) {
+    const Quad& q = world.shape<Quad>(inst.index);
+    e.type = Type::Quad;
+    e.p0 = point_to_world(xf, q.corner);
+    e.e1 = vector_to_world(xf, q.edge_u);
+    e.e2 = vector_to_world(xf, q.edge_v);
+    e.area = glm::length(glm::cross(e.e1, e.e2));
+  } else if (inst.kind == kPrimKind<Triangle>) {
+    const Triangle& t = world.shape<Triangle>(inst.index);
+    e.type = Type::Triangle;
+    e.p0 = point_to_world(xf, t.v0);
+    e.e1 = point_to_world(xf, t.v1) - e.p0;
+    e.e2 = point_to_world(xf, t.v2) - e.p0;
+    e.area = 0.5 * glm::length(glm::cross(e.e1, e.e2));
+  } else if (inst.kind == kPrimKind<MeshRef>) {
+    const MeshData& mesh = *scene.meshes[inst.index];
+    e.type = Type::Mesh;
+    e.first = static_cast<uint32_t>(tris_.size());
+    double total = 0.0;
+    for (std::size_t k = 0; k + 2 < mesh.indices.size(); k += 3) {
+      Vec3 v[3];
+      for (int j = 0; j < 3; ++j) v[j] = point_to_world(xf, mesh.origin + Vec3(mesh.positions[mesh.indices[k + j]]));
+      Tri t{v[0], v[1] - v[0], v[2] - v[0], 0.0};
+      double a = 0.5 * glm::length(glm::cross(t.e1, t.e2));
+      if (std::isfinite(a)) total += a;
+      t.cdf = total;
+      tris_.push_back(t);
+    }
+    e.count = static_cast<uint32_t>(tris_.size()) - e.first;
+    e.area = total;
+  }
+  // Boxes, cylinders, cones, discs, planes...: their emission is found by BSDF rays only.
+  if (!(e.area > tol::kMinEmitterArea) || !std::isfinite(e.area)) {
+    ++unsampled_emitters_;
+    return;
+  }
+  emitter_of_[instance] = static_cast<uint32_t>(entries_.size());
+  entries_.push_back(e);
+  ++shape_emitters_;
+}
+
+bool LightSet::to_solid_angle(const Vec3& point, const Vec3& on_light, const Vec3& normal, double area_pdf,
+                              LightSample& out) const {
+  Vec3 d = on_light - point;
+  double dist2 = glm::dot(d, d);
+  if (!(dist2 > 0.0) || !std::isfinite(dist2)) return false;
+  double dist = std::sqrt(dist2);
+  out.wi = d / dist;
+  double cos_l = std::abs(glm::dot(normal, out.wi));
+  if (cos_l < tol::kGrazingCosine) return false;
+  out.distance = dist;
+  out.pdf = area_pdf * dist2 / cos_l;
+  return std::isfinite(out.pdf) && out.pdf > 0.0;
+}
+
+bool LightSet::sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSample& out) const {
+  if (entries_.empty()) return false;
+  std::size_t k = std::min(entries_.size() - 1, static_cast<std::size_t>(u_pick * static_cast<double>(entries_.size())));
+  const Entry& e = entries_[k];
+  out.delta = false;
+  switch (e.type) {
+    case Type::Point:
+    case Type::Spot: {
+      Vec3 d = e.p0 - point;
+      double dist2 = glm::dot(d, d);
+      if (!(dist2 > 0.0) || !std::isfinite(dist2)) return false;
+      out.distance = std::sqrt(dist2);
+      out.wi = d / out.distance;
+      double spot = e.type == Type::Spot ? spot_factor(e.light, -out.wi) : 1.0;
+      out.radiance = glm::min(e.radiance * (spot / dist2), Rgb(tol::kMaxRadiance));
+      out.pdf = pick_pdf_;
+      out.delta = true;
+      return spot > 0.0;
+    }
+    case Type::Directional:
+      out.wi = -e.light.direction;
+      out.distance = kInf;
+      out.radiance = e.radiance;
+      out.pdf = pick_pdf_;
+      out.delta = true;
+      return true;
+    case Type::AreaLight: {
+      glm::dvec2 p = e.disc ? 0.5 * concentric_disc(u) : u - 0.5;
+      Vec3 on = e.p0 + p.x * e.e1 + p.y * e.e2;
+      if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), pick_pdf_ / e.area, out)) return false;
+      out.radiance = e.radiance;
+      out.delta = true;  // no ray can hit it: sampling is its only strategy
+      return true;
+    }
+    case Type::Quad: {
+      Vec3 on = e.p0 + u.x * e.e1 + u.y * e.e2;
+      if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), pick_pdf_ / e.area, out)) return false;
+      out.radiance = e.radiance;
+      return true;
+    }
+    case Type::Triangle: {
+      glm::dvec2 b = uniform_triangle(u);
+      Vec3 on = e.p0 + b.x * e.e1 + b.y * e.e2;
+      if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), pick_pdf_ / e.area, out)) return false;
+      out.radiance = e.radiance;
+      return true;
+    }
+    case Type::Mesh: {
+      // A triangle by area (binary search of the cumulative areas), then a point on it; u.x
+      // is reused within the chosen triangle's share so the pair stays uniform.
+      double target = u.x * e.area;
+      auto begin = tris_.begin() + e.first, end = begin + e.count;
+      auto it = std::lower_bound(begin, end, target, [](const Tri& t, double v) { return t.cdf < v; });
+      if (it == end) it = end - 1;
+      double lo = it == begin ? 0.0 : (it - 1)->cdf;
+      double share = it->cdf - lo;
+      if (!(share > 0.0)) return false;
+      glm::dvec2 b = uniform_triangle({std::clamp((target - lo) / share, 0.0, 1.0), u.y});
+      Vec3 on = it->p0 + b.x * it->e1 + b.y * it->e2;
+      Vec3 n = glm::cross(it->e1, it->e2);
+      if (!to_solid_angle(point, on, glm::normalize(n), pick_pdf_ / e.area, out)) return false;
+      out.radiance = e.radiance;
+      return true;
+    }
+    case Type::Sphere: {
+      Vec3 d = e.p0 - point;
+      double dist2 = glm::dot(d, d), r2 = e.radius * e.radius;
+      if (dist2 <= r2 * (1.0 + tol::kSphereConeMargin)) {
+        // Inside (or on) the sphere: every direction sees it; sample its area.
+        Vec3 n = uniform_sphere(u);
+        if (!to_solid_angle(point, e.p0 + e.radius * n, n, pick_pdf_ / e.area, out)) return false;
+        out.radiance = e.radiance;
+        return true;
+      }
+      // Outside: uniformly within the cone the sphere subtends.
+      double dist = std::sqrt(dist2);
+      double sin2_max = r2 / dist2;
+      double cos_max = std::sqrt(std::max(0.0, 1.0 - sin2_max));
+      double one_minus = sin2_max / (1.0 + cos_max);   // 1 - cos_max without cancellation
+      if (!(one_minus > 0.0)) return false;
+      double cos_t = 1.0 - u.x * one_minus;
+      double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
+      double phi = 2.0 * kPi * u.y;
+      Frame f(d / dist);
+      out.wi = glm::normalize(f.to_world(Vec3(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t)));
+      double b = glm::dot(d, out.wi);
+      double disc = r2 - (dist2 - b * b);
+      out.distance = b - std::sqrt(std::max(0.0, disc));
+      out.pdf = pick_pdf_ / (2.0 * kPi * one_minus);
+      out.radiance = e.radiance;
+      return std::isfinite(out.pdf) && out.distance > 0.0;
+    }
+    case Type::Sky: {
+      out.wi = uniform_sphere(u);
+      out.distance = kInf;
+      out.radiance = sky(out.wi);
+      out.pdf = pdf_sky();
+      return true;
+    }
+  }
+  return false;
+}
+
+double LightSet::pdf_hit(const Vec3& from, const WorldHit& hit) const {
+  if (!sampled(hit.instance)) return 0.0;
+  const Entry& e = entries_[emitter_of_[hit.instance]];
+  Vec3 d = hit.point - from;
+  double dist2 = glm::dot(d, d);
+  if (!(dist2 > 0.0)) return 0.0;
+  if (e.type == Type::Sphere) {
+    Vec3 c = e.p0 - from;
+    double c2 = glm::dot(c, c), r2 = e.radius * e.radius;
+    if (c2 > r2 * (1.0 + tol::kSphereConeMargin)) {
+      double sin2_max = r2 / c2;
+      double one_minus = sin2_max / (1.0 + std::sqrt(std::max(0.0, 1.0 - sin2_max)));
+      return one_minus > 0.0 ? pick_pdf_ / (2.0 * kPi * one_minus) : 0.0;
+    }
+  }
+  double cos_l = std::abs(glm::dot(hit.normal, d)) / std::sqrt(dist2);
+  if (cos_l < tol::kGrazingCosine) return 0.0;
+  double pdf = pick_pdf_ / e.area * dist2 / cos_l;
+  return std::isfinite(pdf) ? pdf : 0.0;
+}
+
+Rgb LightSet::sky(const Vec3& direction) const {
+  if (environment_) return to_rgb(environment_->eval_direction(direction));
+  return background_;
+}
+
+}  // namespace rts::render::path

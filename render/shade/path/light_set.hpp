@@ -1,0 +1,94 @@
+// Every light the path tracer samples by next-event estimation, in physical units
+// (docs/path-tracing.md):
+//   emissive shapes  emitted radiance (two-sided); quads, triangles and meshes sampled by area,
+//                    spheres by solid angle (by area from inside);
+//   point, spot      radiant intensity (W/sr), inverse-square falloff (spot: its cone factor);
+//   directional      irradiance (W/m^2) on a surface facing it;
+//   area_light       a two-sided emitter of the same total power as a point light of its
+//                    intensity: radiance 2 I / area (no geometry: it is reached by sampling only);
+//   environment      sky radiance: the environment map, else a non-black background colour.
+// One light is picked per shading point, uniformly (a mesh counts as one light; its triangles
+// are picked by area).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/accel/world.hpp"
+#include "render/shade/lights.hpp"
+#include "render/shade/path/warp.hpp"
+#include "render/shade/texture.hpp"
+
+namespace rts::render::path {
+
+using Rgb = glm::dvec3;
+
+struct LightSample {
+  Vec3 wi{0.0};           // unit, from the shading point towards the light
+  double distance = 0.0;  // to the sampled point; infinity for directional and sky light
+  Rgb radiance{0.0};      // arriving radiance (delta lights: irradiance at normal incidence)
+  double pdf = 0.0;       // solid angle density, light choice included (delta: the choice alone)
+  bool delta = false;     // no other strategy can find this light: no MIS weight
+};
+
+class LightSet {
+ public:
+  LightSet(const World& world, const SceneDesc& scene, const std::vector<CompiledLight>& lights,
+           const std::vector<CompiledTexture>& textures);
+
+  bool empty() const { return entries_.empty(); }
+  bool sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSample& out) const;
+
+  // Does NEE sample this instance's emission? (Else a ray that hits it counts all of it.)
+  bool sampled(uint32_t instance) const {
+    return instance < emitter_of_.size() && emitter_of_[instance] != kNoEntry;
+  }
+  // The solid-angle density with which sample() from `from` picks the point `hit` of a
+  // sampled emitter instance (for the MIS weight of a BSDF ray that hit it).
+  double pdf_hit(const Vec3& from, const WorldHit& hit) const;
+
+  // Sky radiance along a direction leaving the scene, and the density NEE gives it.
+  bool has_sky() const { return sky_ != kNoEntry; }
+  Rgb sky(const Vec3& direction) const;
+  double pdf_sky() const { return pick_pdf_ / (4.0 * kPi); }
+
+  // What the set holds, for --stats.
+  bool has_shape_emitters() const { return shape_emitters_ > 0; }
+  bool has_delta_lights() const { return delta_lights_ > 0; }
+  bool has_area_lights() const { return area_lights_ > 0; }
+  std::size_t unsampled_emitters() const { return unsampled_emitters_; }
+
+ private:
+  enum class Type : uint8_t { Sphere, Quad, Triangle, Mesh, Point, Spot, Directional, AreaLight, Sky };
+  struct Entry {
+    Type type = Type::Point;
+    Rgb radiance{0.0};   // emitters: Le; point/spot: intensity; directional: irradiance
+    Vec3 p0{0.0}, e1{0.0}, e2{0.0};  // corner (centre for spheres and area lights) and edges
+    double radius = 0.0;
+    double area = 0.0;
+    bool disc = false;               // area_light: the ellipse inscribed in e1, e2
+    uint32_t first = 0, count = 0;   // meshes: their triangles in tris_
+    CompiledLight light;             // point, spot
+  };
+  struct Tri {
+    Vec3 p0, e1, e2;
+    double cdf;   // cumulative area within its mesh, up to and including this triangle
+  };
+  static constexpr uint32_t kNoEntry = 0xffffffffu;
+
+  void add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le);
+  // Area-sampled point and normal to a solid-angle sample seen from `point`.
+  bool to_solid_angle(const Vec3& point, const Vec3& on_light, const Vec3& normal, double area_pdf,
+                      LightSample& out) const;
+
+  std::vector<Entry> entries_;
+  std::vector<Tri> tris_;
+  std::vector<uint32_t> emitter_of_;   // by instance: its entry, or kNoEntry
+  uint32_t sky_ = kNoEntry;
+  const CompiledTexture* environment_ = nullptr;
+  Rgb background_{0.0};
+  double pick_pdf_ = 0.0;              // 1 / entries
+  std::size_t shape_emitters_ = 0, delta_lights_ = 0, area_lights_ = 0, unsampled_emitters_ = 0;
+};
+
+}  // namespace rts::render::path

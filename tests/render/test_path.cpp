@@ -1,0 +1,320 @@
+// The path tracer (render/shade/path/) against closed-form answers: white furnaces, a closed
+// lossless world under a uniform sky, and each light kind's documented unit; then determinism
+// across thread counts and finite results on degenerate scenes.
+//
+// Statistical checks: every pixel of these images has the same expected value, so the image
+// mean's standard error is the spread of the pixels over sqrt(pixels). A check allows 5
+// standard errors (plus 1e-4 relative, as the plane seen is not quite one point): for a
+// normal mean that fails by chance with probability 5.7e-7 (the
+// renders are seeded, so a given build passes or fails every time).
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "render/renderer.hpp"
+#include "scene_fixture.hpp"
+
+using namespace rts::render;
+using namespace rts::render::test;
+
+namespace {
+
+constexpr double kSigmas = 5.0;
+
+struct Measured {
+  double mean = 0, standard_error = 0;   // channel 0 (the scenes here are grey)
+  RenderResult result;
+};
+
+Measured render_path(SceneDesc s, int size, int spp, int threads = 2) {
+  s.settings.width = s.settings.height = size;
+  s.settings.samples = spp;
+  s.settings.integrator = IntegratorKind::Path;
+  RenderOptions o;
+  o.threads = threads;
+  Measured m;
+  m.result = render(s, o);
+  const std::vector<float>& rgb = m.result.color.rgb;
+  const double n = static_cast<double>(rgb.size() / 3);
+  double sum = 0, sum2 = 0;
+  for (std::size_t i = 0; i < rgb.size(); i += 3) {
+    sum += rgb[i];
+    sum2 += static_cast<double>(rgb[i]) * rgb[i];
+  }
+  m.mean = sum / n;
+  double var = std::max(0.0, (sum2 / n - m.mean * m.mean) * n / (n - 1));
+  m.standard_error = std::sqrt(var / n);
+  return m;
+}
+
+void check_within_noise(const Measured& m, double expected) {
+  INFO("mean " << m.mean << " expected " << expected << " standard error " << m.standard_error);
+  CHECK(m.result.stats.rays.nan_samples == 0);
+  CHECK(std::abs(m.mean - expected) <= kSigmas * m.standard_error + 1e-4 * expected);
+}
+
+MaterialDesc lambert(double albedo) {
+  MaterialDesc m;
+  m.color = Color(albedo);
+  m.diffuse = 1;
+  m.ambient = 0;
+  return m;
+}
+
+// An orthographic camera looking straight down at the origin through a view `width` wide.
+void look_down(SceneDesc& s, double width, double height = 5) {
+  s.has_camera = true;
+  s.camera.projection = Projection::Orthographic;
+  s.camera.view_width = width;
+  s.camera.position = Vec3(0, height, 0);
+  s.camera.look_at = Vec3(0, 0, 0);
+  s.camera.up = Vec3(0, 0, 1);
+}
+
+}  // namespace
+
+TEST_CASE("white furnace: inside a closed sphere of albedo a and emission e, L = e / (1 - a)", "[path]") {
+  const double e = 0.5;
+  for (double a : {0.5, 0.9, 0.99}) {
+    SceneDesc s;
+    s.has_camera = true;
+    s.camera.position = Vec3(0.1, -0.2, 0.05);
+    s.camera.look_at = Vec3(1, 0.3, 0.2);
+    s.settings.max_depth = 10000;   // Russian roulette ends the paths, unbiased
+    MaterialDesc m = lambert(a);
+    m.emission = Color(e);
+    place(s, add_shape(s, Sphere{Vec3(0), 1.0}, add_material(s, m)));
+    Measured got = render_path(s, 16, 32);
+    INFO("albedo " << a);
+    check_within_noise(got, e / (1.0 - a));
+  }
+}
+
+TEST_CASE("lossless surfaces under a uniform sky keep its radiance; lossy ones never add to it", "[path]") {
+  auto sky_scene = [](const MaterialDesc& m) {
+    SceneDesc s;
+    s.settings.background = Color(1.0);
+    s.settings.max_depth = 64;
+    look_down(s, 0.8);
+    place(s, add_shape(s, Sphere{Vec3(0), 1.0}, add_material(s, m)));
+    return s;
+  };
+  SECTION("Lambert: a times the sky") { check_within_noise(render_path(sky_scene(lambert(0.8)), 8, 16), 0.8); }
+  SECTION("a clear dielectric (Fresnel, refraction, total internal reflection) loses nothing") {
+    MaterialDesc glass = lambert(0.0);
+    glass.diffuse = 0;
+    glass.transmit = Color(1.0);
+    glass.ior = 1.5;
+    check_within_noise(render_path(sky_scene(glass), 8, 16), 1.0);
+  }
+  SECTION("a perfect mirror, and a conductor with Fresnel of reflectance 1") {
+    MaterialDesc mirror = lambert(0.0);
+    mirror.diffuse = 0;
+    mirror.reflect = Color(1.0);
+    check_within_noise(render_path(sky_scene(mirror), 4, 4), 1.0);
+    mirror.fresnel = true;
+    check_within_noise(render_path(sky_scene(mirror), 4, 4), 1.0);
+  }
+  SECTION("microfacet lobes lose some light (single scattering: 31% at alpha 0.5), never gain") {
+    MaterialDesc glossy = lambert(0.0);
+    glossy.diffuse = 0;
+    glossy.specular = 1.0;
+    glossy.shininess = 32;
+    Measured g = render_path(sky_scene(glossy), 8, 16);
+    CHECK(g.mean <= 1.0 + kSigmas * g.standard_error);
+    CHECK(g.mean > 0.9);
+    MaterialDesc rough = lambert(0.0);
+    rough.diffuse = 0;
+    rough.reflect = Color(1.0);
+    rough.roughness = 0.5;
+    Measured r = render_path(sky_scene(rough), 8, 16);
+    CHECK(r.mean <= 1.0 + kSigmas * r.standard_error);
+    CHECK(r.mean > 0.6);
+  }
+}
+
+TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters' radiance", "[path]") {
+  const double a = 0.6;
+  auto floor_scene = [&]() {
+    SceneDesc s;
+    s.settings.max_depth = 4;
+    look_down(s, 0.01, 0.5);   // every pixel sees (nearly) the origin, from below the lights
+    place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, lambert(a))));
+    return s;
+  };
+  SECTION("point light: L = a / pi * I / h^2") {
+    SceneDesc s = floor_scene();
+    LightDesc l;
+    l.position = Vec3(0, 2, 0);
+    l.intensity = 8;
+    place(s, add_light(s, l));
+    check_within_noise(render_path(s, 4, 4), a / std::numbers::pi * 8 / 4);
+  }
+  SECTION("directional light: L = a / pi * E cos") {
+    SceneDesc s = floor_scene();
+    LightDesc l;
+    l.kind = LightKind::Directional;
+    l.direction = Vec3(0, -1, -1);
+    l.intensity = 3;
+    place(s, add_light(s, l));
+    check_within_noise(render_path(s, 4, 4), a / std::numbers::pi * 3 * std::sqrt(0.5));
+  }
+  SECTION("area_light: a two-sided emitter of the point light's power, 2 I / h^2 straight below") {
+    SceneDesc s = floor_scene();
+    LightDesc l;
+    l.kind = LightKind::Area;
+    l.position = Vec3(0, 3, 0);
+    l.u = Vec3(0.01, 0, 0);
+    l.v = Vec3(0, 0, 0.01);
+    l.intensity = 9;
+    place(s, add_light(s, l));
+    check_within_noise(render_path(s, 4, 4), a / std::numbers::pi * 2 * 9 / 9);
+  }
+  SECTION("an emissive quad filling the sky: L = a Le (NEE by area, MIS with the BSDF)") {
+    SceneDesc s = floor_scene();
+    MaterialDesc lamp = lambert(0.0);
+    lamp.diffuse = 0;
+    lamp.emission = Color(2.0);
+    place(s, add_shape(s, Quad{Vec3(-1e4, 1, -1e4), Vec3(2e4, 0, 0), Vec3(0, 0, 2e4)}, add_material(s, lamp)));
+    check_within_noise(render_path(s, 8, 16), a * 2.0);
+  }
+  SECTION("an emissive sphere: L = a Le (r / d)^2 (NEE by solid angle)") {
+    SceneDesc s = floor_scene();
+    MaterialDesc lamp = lambert(0.0);
+    lamp.diffuse = 0;
+    lamp.emission = Color(5.0);
+    place(s, add_shape(s, Sphere{Vec3(0, 3, 0), 0.5}, add_material(s, lamp)));
+    check_within_noise(render_path(s, 8, 16), a * 5.0 * (0.5 / 3) * (0.5 / 3));
+  }
+  SECTION("an emissive triangle mesh lights like the quad it tiles") {
+    SceneDesc s = floor_scene();
+    MaterialDesc lamp = lambert(0.0);
+    lamp.diffuse = 0;
+    lamp.emission = Color(2.0);
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = {{-1e4f, 1, -1e4f}, {1e4f, 1, -1e4f}, {1e4f, 1, 1e4f}, {-1e4f, 1, 1e4f}};
+    mesh->indices = {0, 1, 2, 0, 2, 3};
+    s.meshes.push_back(mesh);
+    place(s, add_shape(s, MeshRef{0, false}, add_material(s, lamp)));
+    check_within_noise(render_path(s, 8, 16), a * 2.0);
+  }
+}
+
+namespace {
+// A closed box with a quad lamp, a glass sphere, a glossy sphere and a point light: every
+// path feature at once.
+SceneDesc cornell_like() {
+  SceneDesc s;
+  s.settings.max_depth = 8;
+  s.has_camera = true;
+  s.camera.position = Vec3(0, 1, -2.9);
+  s.camera.look_at = Vec3(0, 1, 0);
+  MaterialId white = add_material(s, lambert(0.7)), red = add_material(s, lambert(0.5));
+  place(s, add_shape(s, Quad{Vec3(-1, 0, -3), Vec3(2, 0, 0), Vec3(0, 0, 4)}, white));
+  place(s, add_shape(s, Quad{Vec3(-1, 2, -3), Vec3(2, 0, 0), Vec3(0, 0, 4)}, white));
+  place(s, add_shape(s, Quad{Vec3(-1, 0, 1), Vec3(2, 0, 0), Vec3(0, 2, 0)}, white));
+  place(s, add_shape(s, Quad{Vec3(-1, 0, -3), Vec3(0, 0, 4), Vec3(0, 2, 0)}, red));
+  place(s, add_shape(s, Quad{Vec3(1, 0, -3), Vec3(0, 0, 4), Vec3(0, 2, 0)}, white));
+  place(s, add_shape(s, Quad{Vec3(-1, 0, -3), Vec3(2, 0, 0), Vec3(0, 2, 0)}, white));
+  MaterialDesc lamp = lambert(0.5);
+  lamp.emission = Color(8.0);
+  place(s, add_shape(s, Quad{Vec3(-0.2, 1.99, -0.2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4)}, add_material(s, lamp)));
+  MaterialDesc glass = lambert(0.0);
+  glass.diffuse = 0;
+  glass.transmit = Color(0.9);
+  glass.ior = 1.5;
+  place(s, add_shape(s, Sphere{Vec3(-0.4, 0.4, 0), 0.4}, add_material(s, glass)));
+  MaterialDesc metal = lambert(0.2);
+  metal.reflect = Color(0.7);
+  metal.roughness = 0.2;
+  metal.specular = 0.1;
+  place(s, add_shape(s, Sphere{Vec3(0.45, 0.35, 0.2), 0.35}, add_material(s, metal)));
+  LightDesc l;
+  l.position = Vec3(0.5, 1.5, -1);
+  l.intensity = 0.5;
+  place(s, add_light(s, l));
+  return s;
+}
+}  // namespace
+
+TEST_CASE("path images are the same whatever the thread count", "[path]") {
+  Measured one = render_path(cornell_like(), 16, 8, 1);
+  Measured two = render_path(cornell_like(), 16, 8, 2);
+  Measured three = render_path(cornell_like(), 16, 8, 3);
+  CHECK(one.result.color.rgb == two.result.color.rgb);
+  CHECK(one.result.color.rgb == three.result.color.rgb);
+  CHECK(one.mean > 0.01);   // the room is lit
+  CHECK(one.result.stats.integrator == "path");
+}
+
+TEST_CASE("path mode stays finite: grazing views, albedo 1, tiny and huge scales, zero-size emitters", "[path]") {
+  auto finite_image = [](const RenderResult& r) {
+    for (float v : r.color.rgb)
+      if (!std::isfinite(v) || v < 0) return false;
+    return r.stats.rays.nan_samples == 0;
+  };
+  SECTION("grazing camera along a lit floor, under a sky") {
+    SceneDesc s;
+    s.settings.background = Color(1.0);
+    s.has_camera = true;
+    s.camera.position = Vec3(0, 1e-9, 0);
+    s.camera.look_at = Vec3(0, 1e-9, 1);
+    place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, lambert(0.9))));
+    CHECK(finite_image(render_path(s, 8, 4).result));
+  }
+  SECTION("albedo 1 inside an emitter (the radiance grows with depth but stays finite)") {
+    SceneDesc s;
+    s.has_camera = true;
+    s.camera.position = Vec3(0);
+    s.camera.look_at = Vec3(0, 0, 1);
+    s.settings.max_depth = 200;
+    MaterialDesc m = lambert(1.0);
+    m.emission = Color(1.0);
+    place(s, add_shape(s, Sphere{Vec3(0), 1.0}, add_material(s, m)));
+    CHECK(finite_image(render_path(s, 4, 4).result));
+  }
+  SECTION("the whole scene scaled by 1e-6 and by 1e6") {
+    for (double k : {1e-6, 1e6}) {
+      SceneDesc s = cornell_like();
+      std::vector<Child> roots = s.roots;
+      NodeId group = add_group(s, roots);
+      s.roots.clear();
+      place(s, group, scale(Vec3(k)));
+      s.camera.position *= k;
+      s.camera.look_at *= k;
+      s.lights[0].intensity *= k * k;   // the same irradiance at the scaled distances
+      Measured m = render_path(s, 8, 4);
+      INFO("scale " << k);
+      CHECK(finite_image(m.result));
+      CHECK(m.mean > 0.01);
+    }
+  }
+  SECTION("zero-size emitters are never sampled and never poison a pixel") {
+    SceneDesc s = cornell_like();
+    MaterialDesc lamp = lambert(0.5);
+    lamp.emission = Color(1e6);
+    MaterialId id = add_material(s, lamp);
+    place(s, add_shape(s, Sphere{Vec3(0, 1, 0), 0.0}, id));
+    place(s, add_shape(s, Quad{Vec3(0, 1, 0), Vec3(0, 0, 0), Vec3(0, 0, 1)}, id));
+    place(s, add_shape(s, Sphere{Vec3(0, 1.5, 0), 1e-200}, id));
+    CHECK(finite_image(render_path(s, 8, 4).result));
+  }
+}
+
+TEST_CASE("a material that reflects more than it receives is scaled down, with a located warning", "[path]") {
+  SceneDesc s;
+  s.settings.background = Color(1.0);
+  look_down(s, 0.8);
+  MaterialDesc m = lambert(0.9);
+  m.reflect = Color(0.5);
+  m.loc = SourceRef{"bright.rts", 3, 7};
+  place(s, add_shape(s, Sphere{Vec3(0), 1.0}, add_material(s, m)));
+  Measured got = render_path(s, 8, 16);
+  REQUIRE(got.result.warnings.size() == 1);
+  CHECK(got.result.warnings[0].where.line == 3);
+  CHECK(got.result.warnings[0].message.find("scaled by") != std::string::npos);
+  // Scaled to reflect at most what arrives: under a sky of 1, at most 1.
+  CHECK(got.mean <= 1.0 + kSigmas * got.standard_error);
+}
