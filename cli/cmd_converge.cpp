@@ -37,6 +37,7 @@ struct ConvergeCommand {
   std::vector<std::string> samplers{"random", "stratified", "sobol"};
   bool adaptive = false;
   std::string clock = "wall";  // or "cpu": what "time" means in plots, slopes and tables
+  std::string integrator;      // "whitted" or "path" overrides settings.integrator
   int threads = 0, width = 0, height = 0;
   uint64_t seed = 0;
   EvalOptions eval;
@@ -152,6 +153,11 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
   if (cmd.count("--seed")) base.seed = c.seed;
   if (cmd.count("--width")) base.width = c.width;
   if (cmd.count("--height")) base.height = c.height;
+  if (!c.integrator.empty()) {
+    render::IntegratorKind kind = render::IntegratorKind::Whitted;
+    render::parse_integrator(c.integrator, kind);  // CLI11 checked the name
+    base.integrator = kind;
+  }
   const uint64_t seed = base.seed.value_or(scene.settings.seed);
   const std::string name = fs::path(c.scene).stem().string();
   fs::path dir = c.out_dir.empty() ? fs::path(name + "-convergence") : fs::path(c.out_dir);
@@ -299,6 +305,8 @@ void add_converge_command(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--seed", c->seed, "Random seed (overrides the scene's settings.seed)");
   cmd->add_option("--width", c->width, "Image width in pixels")->check(CLI::PositiveNumber);
   cmd->add_option("--height", c->height, "Image height in pixels")->check(CLI::PositiveNumber);
+  cmd->add_option("--integrator", c->integrator, "whitted or path; overrides settings.integrator")
+      ->check(CLI::IsMember({"whitted", "path"}));
   add_eval_options(*cmd, c->eval);
   cmd->callback([c, cmd, &ctx] { ctx.exit_code = run_converge(*c, *cmd, ctx); });
 }

@@ -156,7 +156,7 @@ int evaluate_scene(const RenderCommand& c, const EvalOptions& eval, DiagnosticSi
     SourceLoc whole_file{out.sources->find(c.scene), 0, 0};
     if (evaluated.world_shapes == 0)
       sink.warning(whole_file, "the scene places no objects: the image shows only the background");
-    else if (evaluated.world_lights == 0 && !path_lit(scene, c.integrator))
+    else if (evaluated.world_lights == 0 && !path_lit(out.scene, c.integrator))
       sink.warning(whole_file, "the scene places no lights: objects show only their ambient light and emission");
   } catch (const LanguageError& e) {
     sink.report(e.diag);

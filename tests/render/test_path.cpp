@@ -8,11 +8,14 @@
 // normal mean that fails by chance with probability 5.7e-7 (the
 // renders are seeded, so a given build passes or fails every time).
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
+#include "render/image/float_image_io.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"
 
@@ -317,4 +320,44 @@ TEST_CASE("a material that reflects more than it receives is scaled down, with a
   CHECK(got.result.warnings[0].message.find("scaled by") != std::string::npos);
   // Scaled to reflect at most what arrives: under a sky of 1, at most 1.
   CHECK(got.mean <= 1.0 + kSigmas * got.standard_error);
+}
+
+TEST_CASE("the path-traced box agrees with its stored 4096-spp reference, block by block", "[path]") {
+  // tests/golden/path/cornell_like_16.pfm: cornell_like() at 16x16, 4096 spp, seed 1, made by
+  // this test with RTS_UPDATE_PATH_REFERENCE=1 (look at it: a lit box, a glass and a metal
+  // sphere). A 64-spp render of another seed is compared per 4x4 block and channel: the
+  // difference of the block means over its standard error (from the render's own per-pixel
+  // variance estimates; the reference's, 64 times smaller, added) must stay within 5. For
+  // normal errors that fails by chance with probability 48 x 5.7e-7 = 3e-5.
+  const std::string ref_path = std::string(RTS_SOURCE_DIR) + "/tests/golden/path/cornell_like_16.pfm";
+  SceneDesc s = cornell_like();
+  if (std::getenv("RTS_UPDATE_PATH_REFERENCE")) {
+    s.settings.seed = 1;
+    write_pfm(ref_path, render_path(s, 16, 4096).result.color);
+  }
+  Image ref = read_pfm(ref_path);
+  REQUIRE(ref.width == 16);
+  REQUIRE(ref.height == 16);
+  s.settings.seed = 2;
+  Measured got = render_path(s, 16, 64);
+  const std::vector<float>& var = got.result.stats.pixels.variance;
+  REQUIRE(var.size() == 16 * 16 * 3);
+  double total_got = 0, total_ref = 0;
+  for (int by = 0; by < 16; by += 4)
+    for (int bx = 0; bx < 16; bx += 4)
+      for (int c = 0; c < 3; ++c) {
+        double diff = 0, v = 0;
+        for (int y = by; y < by + 4; ++y)
+          for (int x = bx; x < bx + 4; ++x) {
+            std::size_t i = (static_cast<std::size_t>(y) * 16 + x) * 3 + c;
+            diff += got.result.color.rgb[i] - ref.rgb[i];
+            v += var[i] * (1.0 + 64.0 / 4096.0);
+            total_got += got.result.color.rgb[i];
+            total_ref += ref.rgb[i];
+          }
+        double z = (diff / 16) / std::sqrt(std::max(v / 256, 1e-30));
+        INFO("block " << bx << "," << by << " channel " << c << ": z = " << z);
+        CHECK(std::abs(z) < 5.0);
+      }
+  CHECK(total_got == Approx(total_ref).epsilon(0.03));
 }
