@@ -11,6 +11,7 @@
 #include <memory>
 #include <new>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@
 #include "cli/eval_options.hpp"
 #include "cli/frames.hpp"
 #include "cli/manifest.hpp"
+#include "dist/checkpoint.hpp"
+#include "dist/mpi_session.hpp"
+#include "dist/tile_exchange.hpp"
 #include "cli/stats_report.hpp"
 #include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
@@ -60,6 +64,15 @@ struct RenderCommand {
   int64_t task_index = 0, task_count = 1;
   bool skip_existing = false;
   int fps = 24;
+  std::string checkpoint;  // --checkpoint DIR (dist/checkpoint.hpp)
+};
+
+// A still shared by ranks (mpirun) or journaled (--checkpoint): the tile queue, and whether
+// this process writes the image.
+struct Distribution {
+  const dist::MpiSession* mpi = nullptr;
+  dist::TileQueueExchange* exchange = nullptr;
+  bool root() const { return mpi == nullptr || mpi->rank() == 0; }
 };
 
 // A render error (exit 3) is shown like a language error: located, with the source line and
@@ -175,7 +188,7 @@ int evaluate_scene(const RenderCommand& c, const EvalOptions& eval, DiagnosticSi
 // With `video`, the image goes to the video instead of a file (AOVs are refused earlier).
 int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, const std::string& out,
                  const render::OutputSpec& spec, DiagnosticSink& sink, render::RenderStats* stats_out,
-                 render::VideoWriter* video = nullptr) {
+                 render::VideoWriter* video = nullptr, const Distribution* dist = nullptr) {
   render::RenderOptions opts;
   opts.threads = c.threads;
   if (cmd.count("--seed")) opts.seed = c.seed;
@@ -202,11 +215,22 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
   opts.normal_miss = c.normal_miss;
   opts.progress = !c.no_progress && isatty(STDERR_FILENO);
   opts.specialize = !c.no_specialize;
+  if (dist) {
+    opts.exchange = dist->exchange;
+    opts.progress = false;
+  }
+  const bool several = dist && dist->mpi->size() > 1;
+  // A rank that fails while the others wait for it ends the job, naming itself.
+  auto rank_failure = [&](const std::string& message, int code) {
+    std::cerr << fmt::format("rts: rank {}: error: {}\n", dist->mpi->rank(), message);
+    dist->mpi->abort(code);
+  };
 
   try {
-    if (!video) check_output_writable(out);
+    if (!video && !dist) check_output_writable(out);
     print_warnings(ev.scene.warnings);
     render::RenderResult result = render::render(ev.scene, opts);
+    if (dist && !dist->root()) return kExitOk;  // rank 0 writes the image
     print_warnings(result.warnings);
     result.stats.eval_seconds = ev.eval_seconds;
     result.stats.parse_seconds = ev.parse_seconds;
@@ -218,17 +242,72 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
     result.stats.write_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";
+    if (dist) {
+      const dist::ExchangeStats& x = dist->exchange->stats();
+      std::cerr << fmt::format("rts: {}: {} tiles: {} rendered by rank 0, {} by the other {} rank(s), {} from the "
+                               "checkpoint\n", out, x.tiles, x.rendered_here, x.rendered_remote,
+                               dist->mpi->size() - 1, x.from_checkpoint);
+    }
     print_sampling_warnings(out, result.stats);
     report_stats(c.stats, result.stats);
     if (stats_out) *stats_out = result.stats;
   } catch (const render::RenderError& e) {
+    if (several) rank_failure(e.what(), kExitRenderError);
     print_error(e.where, e.what(), *ev.sources, sink);
     return kExitRenderError;
   } catch (const std::bad_alloc&) {
+    if (several) rank_failure("out of memory", kExitRenderError);
     print_error({}, "out of memory (lower the image size, samples or scene, or check ulimit -v)", *ev.sources, sink);
     return kExitRenderError;
   }
   return kExitOk;
+}
+
+// The options that change pixels, for a checkpoint's key: the command line without the ones
+// that do not (threads, output name, progress and statistics flags, the checkpoint itself).
+std::string pixel_options(const std::vector<std::string>& args) {
+  static const std::vector<std::string> kWithValue = {"--threads", "-o", "--output", "--checkpoint", "--stats-json"};
+  static const std::vector<std::string> kFlags = {"--no-progress", "--stats"};
+  std::string out;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto named = [&](const std::string& n) { return a == n || a.rfind(n + "=", 0) == 0; };
+    bool skip = false;
+    for (const std::string& n : kWithValue)
+      if (named(n)) {
+        skip = true;
+        if (a == n) ++i;  // its value is the next word
+      }
+    for (const std::string& n : kFlags) skip = skip || a == n;
+    if (!skip) out += (out.empty() ? "" : " ") + a;
+  }
+  return out;
+}
+
+// A still over mpirun's ranks and/or with a checkpoint journal.
+int run_distributed(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx, const std::string& out,
+                    const render::OutputSpec& spec, Evaluated& ev, DiagnosticSink& sink) {
+  const dist::MpiSession& mpi = *ctx.mpi;
+  int pre = kExitOk;
+  std::unique_ptr<dist::Checkpoint> journal;
+  if (mpi.rank() == 0) {
+    try {
+      check_output_writable(out);
+      if (!c.checkpoint.empty())
+        journal = std::make_unique<dist::Checkpoint>(
+            c.checkpoint, fmt::format("rts 1; scene {}; options {}", scene_hash(*ev.sources), pixel_options(ctx.args)));
+      if (journal && journal->torn_bytes() > 0)
+        std::cerr << fmt::format("rts: {}: resuming; a torn last record ({} bytes) was dropped\n", journal->path(),
+                                 journal->torn_bytes());
+    } catch (const render::RenderError& e) {
+      std::cerr << "rts: error: " << e.what() << "\n";
+      pre = kExitRenderError;
+    }
+  }
+  if (int all = mpi.agree(pre); all != kExitOk) return all;  // every rank stops together
+  dist::TileQueueExchange exchange(mpi, journal.get());
+  Distribution d{&mpi, &exchange};
+  return render_scene(c, cmd, ev, out, spec, sink, nullptr, nullptr, &d);
 }
 
 bool same_clock(const AnimationClock& a, const AnimationClock& b) {
@@ -392,16 +471,42 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
     throw CLI::ValidationError("--output", fmt::format("'{}' has no '#' run for the frame number: with several "
                                                        "frames, name them like out/ball_####.png", out));
 
-  DiagnosticSink sink(std::cerr, ctx.color);
+  const dist::MpiSession& mpi = *ctx.mpi;
+  const bool distributed = mpi.active() || !c.checkpoint.empty();
+  if (distributed && (frames_flag || video || task.count > 1))
+    throw CLI::ValidationError("--checkpoint/mpirun", "distribute one still; for an animation's frames use "
+                                                      "--task-index/--task-count or a Slurm array (docs/scale-out.md)");
+  if (distributed && (c.target_error > 0 || c.time_limit > 0))
+    throw CLI::ValidationError("--target-error/--time-limit", "are not available with mpirun or --checkpoint yet: "
+                                                              "render a fixed number of samples (--samples)");
+  // Under mpirun every rank evaluates the scene; rank 0 alone reports what it finds.
+  std::ostringstream rank_messages;
+  DiagnosticSink sink(mpi.rank() == 0 ? std::cerr : rank_messages, ctx.color && mpi.rank() == 0);
   // The first evaluation tells whether the scene is an animation (settings.frames).
   AnimationClock probe_clock{0.0, frames_flag ? flag_range.first : 0, frames_flag ? flag_range.count() : 1};
   Evaluated probe;
   {
     EvalOptions eval = c.eval;
     eval.animation = probe_clock;
-    if (int rc = evaluate_scene(c, eval, sink, probe); rc != kExitOk) return rc;
+    int rc = evaluate_scene(c, eval, sink, probe);
+    if (mpi.active()) {
+      const int root_rc = mpi.from_root(rc);
+      if (int all = mpi.agree(rc); all != kExitOk) {
+        if (rc != kExitOk && root_rc == kExitOk)  // this rank alone failed: it names itself
+          std::cerr << fmt::format("rts: rank {}: {}", mpi.rank(), rank_messages.str());
+        return rc != kExitOk ? rc : all;
+      }
+    } else if (rc != kExitOk) {
+      return rc;
+    }
   }
   const int64_t scene_frames = probe.scene.settings.frames;
+  if (distributed) {
+    if (scene_frames > 1)
+      throw CLI::ValidationError("--checkpoint/mpirun", "the scene is an animation (settings.frames): distribute its "
+                                                        "frames with --task-index/--task-count or a Slurm array");
+    return run_distributed(c, cmd, ctx, out, *spec.spec, probe, sink);
+  }
   if (!frames_flag && scene_frames == 1 && !video) {
     if (task.count > 1)
       throw CLI::ValidationError("--task-index/--task-count",
@@ -484,6 +589,8 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
                    "Animation: this task's index among --task-count (default: SLURM_ARRAY_TASK_ID)", false);
   add_whole_option(*cmd, "--task-count", c->task_count, 1, render::kMaxFrames,
                    "Animation: render every N-th frame of the range, from --task-index", false);
+  cmd->add_option("--checkpoint", c->checkpoint,
+                  "Journal finished tiles in DIR; the same command resumes there after a crash (stills; mpirun too)");
   add_whole_option(*cmd, "--fps", c->fps, 1, 1000, "Video (-o .mp4/.webm): frames per second (default 24)", false);
   cmd->add_flag("--skip-existing", c->skip_existing, "Animation: skip frames whose image is already written");
   cmd->add_option("--manifest", c->manifest,

@@ -7,12 +7,17 @@
 
 #include <CLI/CLI.hpp>
 
+namespace rts::dist {
+class MpiSession;
+}
+
 namespace rts::cli {
 
 struct CommandContext {
   int exit_code = 0;
   bool color = false;  // stderr is a terminal: colored diagnostics
   std::vector<std::string> args;  // the command line without the program name (frame manifests)
+  const dist::MpiSession* mpi = nullptr;  // this process's MPI rank (inactive without mpirun)
 };
 
 void add_parse_command(CLI::App& app, CommandContext& ctx);   // cli/cmd_parse.cpp

@@ -7,10 +7,13 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command.hpp"
+#include "dist/mpi_session.hpp"
 #include "parser/diagnostics.hpp"
 
 int main(int argc, char** argv) {
   using namespace rts;
+  // Joins MPI only when mpirun/srun started this process (dist/mpi_session.hpp).
+  dist::MpiSession mpi(&argc, &argv);
   CLI::App app{"rts — a scene-description language and ray tracer"};
   app.name("rts");
   app.set_version_flag("--version", std::string("rts ") + RTS_VERSION);
@@ -22,6 +25,7 @@ int main(int argc, char** argv) {
   cli::CommandContext ctx;
   ctx.color = isatty(STDERR_FILENO) && getenv("NO_COLOR") == nullptr;
   ctx.args.assign(argv + 1, argv + argc);
+  ctx.mpi = &mpi;
   cli::add_parse_command(app, ctx);
   cli::add_check_command(app, ctx);
   cli::add_eval_command(app, ctx);

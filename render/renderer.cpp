@@ -20,6 +20,7 @@
 #include "render/scene/features.hpp"
 #include "render/scene/flatten.hpp"
 #include "render/image/frame.hpp"
+#include "render/image/tile_payload.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/shade/lights.hpp"
 #include "render/shade/path/path_integrator.hpp"
@@ -286,7 +287,41 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   };
 
   auto render_start = Clock::now();
-  if (!progressive) {
+  if (options.exchange) {
+    // Shared with other processes: the same per-pixel work as the one-pass branch below,
+    // packed per tile (tile_payload.hpp) and gathered on the root.
+    if (progressive)
+      throw RenderError({}, "--target-error and --time-limit are not available under mpirun yet: render a fixed "
+                            "number of samples (--samples)");
+    auto rect = [&](int tile) {
+      const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+      return TileRect{x0, y0, std::min(x0 + kTileSize, rs.width), std::min(y0 + kTileSize, rs.height)};
+    };
+    auto render_tile = [&](int tile, std::vector<unsigned char>& payload) {
+      const TileRect r = rect(tile);
+      std::vector<RayCounters> row_counters(static_cast<std::size_t>(r.y1 - r.y0));
+      arena.execute([&] {
+        tbb::parallel_for(r.y0, r.y1, [&](int y) {
+          RayCounters& counters = row_counters[static_cast<std::size_t>(y - r.y0)];
+          for (int x = r.x0; x < r.x1; ++x) {
+            PixelAccum acc;
+            pixels.add_samples(x, y, spp, acc, counters);
+            pixels.store(x, y, acc, frame, counters);
+          }
+        });
+      });
+      RayCounters total;
+      for (const RayCounters& c : row_counters) total += c;  // whole numbers: any order
+      pack_tile(frame, r, total, payload);
+    };
+    auto store_tile = [&](int tile, const std::vector<unsigned char>& payload) {
+      RayCounters counters;
+      unpack_tile(frame, rect(tile), payload, counters);
+      stats.rays += counters;
+    };
+    options.exchange->run(tile_count, render_tile, store_tile);
+    err.passes = 1;
+  } else if (!progressive) {
     // One pass: each pixel takes all its samples at once; nothing is kept between pixels.
     Progress progress(static_cast<std::size_t>(tile_count), options.progress);
     for_each_tile(

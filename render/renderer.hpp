@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -13,6 +14,23 @@
 #include "render/stats.hpp"
 
 namespace rts::render {
+
+// Distribution (dist/): which tiles this process renders, and the gathering of the others'.
+// A tile's pixels travel whole (their values, variances, sample counts, AOVs and ray counts),
+// so the image does not depend on which process rendered which tile.
+class TileExchange {
+ public:
+  using RenderTile = std::function<void(int tile, std::vector<unsigned char>& payload)>;
+  using StoreTile = std::function<void(int tile, const std::vector<unsigned char>& payload)>;
+  virtual ~TileExchange() = default;
+  // Renders `tile_count` tiles among the processes: `render_tile` renders a tile here and packs
+  // it; `store_tile` unpacks a tile (from here, another process or a checkpoint) into this
+  // process's image and statistics. Returns when the root has stored every tile, or when a
+  // worker has no more work.
+  virtual void run(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile) = 0;
+  // True on the process that gathers the image (the only one whose result is complete).
+  virtual bool root() const = 0;
+};
 
 struct RenderOptions {
   int threads = 0;                        // 0: all hardware threads
@@ -36,6 +54,8 @@ struct RenderOptions {
   bool specialize = true;                 // false: the generic path (--no-specialize)
   std::size_t max_pixels = 100'000'000;   // larger images are a RenderError
   std::size_t max_memory = 0;             // bytes (--max-memory): the image and AOVs must fit; 0: no limit
+  // Non-null: the tiles are shared with other processes (mpirun); fixed sample counts only.
+  TileExchange* exchange = nullptr;
 };
 
 struct RenderResult {

@@ -1,0 +1,162 @@
+#include "dist/tile_exchange.hpp"
+
+#include <chrono>
+#include <cstring>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#ifdef RTS_HAVE_MPI
+#include <mpi.h>
+#endif
+
+#include "render/scene/source_ref.hpp"
+
+namespace rts::dist {
+namespace {
+
+// Message tags: a worker asks for work, rank 0 assigns a tile (-1: no more), a worker returns
+// a finished tile (its number, then its payload).
+constexpr int kTagRequest = 1, kTagAssign = 2, kTagResult = 3;
+
+}  // namespace
+
+void TileQueueExchange::run(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile) {
+  stats_ = ExchangeStats{};
+  stats_.tiles = tile_count;
+  if (mpi_.rank() == 0)
+    run_root(tile_count, render_tile, store_tile);
+  else
+    run_worker(render_tile);
+}
+
+void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile) {
+  std::vector<char> stored(static_cast<std::size_t>(tile_count), 0);
+  if (checkpoint_) {
+    for (const auto& [tile, payload] : checkpoint_->finished()) {
+      if (tile >= tile_count)
+        throw render::RenderError({}, fmt::format("checkpoint '{}' holds tile {} of an image of {} tiles",
+                                                  checkpoint_->path(), tile, tile_count));
+      store_tile(tile, payload);
+      stored[static_cast<std::size_t>(tile)] = 1;
+      ++stats_.from_checkpoint;
+    }
+  }
+  std::vector<int> todo;
+  for (int t = 0; t < tile_count; ++t)
+    if (!stored[static_cast<std::size_t>(t)]) todo.push_back(t);
+
+  std::mutex mutex;  // guards next, done_here, local_error
+  std::size_t next = 0;
+  auto take = [&] {
+    std::lock_guard lock(mutex);
+    return next < todo.size() ? todo[next++] : -1;
+  };
+  std::deque<std::pair<int, std::vector<unsigned char>>> done_here;
+  std::exception_ptr local_error;
+  // Rank 0 renders as well, on a thread of its own, while this thread serves the other ranks.
+  std::thread local([&] {
+    try {
+      for (int t = take(); t >= 0; t = take()) {
+        std::vector<unsigned char> payload;
+        render_tile(t, payload);
+        std::lock_guard lock(mutex);
+        done_here.emplace_back(t, std::move(payload));
+      }
+    } catch (...) {
+      std::lock_guard lock(mutex);
+      local_error = std::current_exception();
+      next = todo.size();  // no more work for anyone
+    }
+  });
+
+  std::size_t remaining = todo.size();
+  int workers = mpi_.active() ? mpi_.size() - 1 : 0;
+  auto keep = [&](int tile, const std::vector<unsigned char>& payload) {
+    store_tile(tile, payload);
+    if (checkpoint_) checkpoint_->append(tile, payload);
+    --remaining;
+  };
+  try {
+    while (remaining > 0 || workers > 0) {
+      bool busy = false;
+      std::deque<std::pair<int, std::vector<unsigned char>>> mine;
+      {
+        std::lock_guard lock(mutex);
+        mine.swap(done_here);
+        if (local_error) break;
+      }
+      for (auto& [tile, payload] : mine) {
+        keep(tile, payload);
+        ++stats_.rendered_here;
+        busy = true;
+      }
+#ifdef RTS_HAVE_MPI
+      if (workers > 0) {
+        int flag = 0;
+        MPI_Status st;
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
+        if (flag && st.MPI_TAG == kTagRequest) {
+          int unused = 0;
+          MPI_Recv(&unused, 1, MPI_INT, st.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          int tile = take();
+          MPI_Send(&tile, 1, MPI_INT, st.MPI_SOURCE, kTagAssign, MPI_COMM_WORLD);
+          if (tile < 0) --workers;
+          busy = true;
+        } else if (flag && st.MPI_TAG == kTagResult) {
+          int bytes = 0;
+          MPI_Get_count(&st, MPI_BYTE, &bytes);
+          std::vector<unsigned char> msg(static_cast<std::size_t>(bytes));
+          MPI_Recv(msg.data(), bytes, MPI_BYTE, st.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          int tile = -1;
+          if (msg.size() >= sizeof tile) std::memcpy(&tile, msg.data(), sizeof tile);
+          if (tile < 0 || tile >= tile_count)
+            throw render::RenderError({}, fmt::format("rank {} sent a tile that is not in the image", st.MPI_SOURCE));
+          keep(tile, std::vector<unsigned char>(msg.begin() + sizeof tile, msg.end()));
+          ++stats_.rendered_remote;
+          stats_.bytes_received += msg.size();
+          busy = true;
+        }
+      }
+#endif
+      if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+  } catch (...) {
+    {
+      std::lock_guard lock(mutex);
+      next = todo.size();
+    }
+    local.join();
+    throw;
+  }
+  local.join();
+  if (local_error) std::rethrow_exception(local_error);
+  if (checkpoint_) checkpoint_->sync();
+}
+
+void TileQueueExchange::run_worker(const RenderTile& render_tile) {
+#ifdef RTS_HAVE_MPI
+  for (;;) {
+    int ask = 0, tile = -1;
+    MPI_Send(&ask, 1, MPI_INT, 0, kTagRequest, MPI_COMM_WORLD);
+    MPI_Recv(&tile, 1, MPI_INT, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (tile < 0) break;
+    std::vector<unsigned char> payload;
+    render_tile(tile, payload);
+    std::vector<unsigned char> msg(sizeof tile + payload.size());
+    std::memcpy(msg.data(), &tile, sizeof tile);
+    std::memcpy(msg.data() + sizeof tile, payload.data(), payload.size());
+    MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD);
+    ++stats_.rendered_here;
+  }
+#else
+  (void)render_tile;
+#endif
+}
+
+}  // namespace rts::dist

@@ -1,0 +1,42 @@
+// The dynamic work queue of a distributed still: rank 0 hands out tiles one at a time to
+// whichever rank asks (and renders too, on a thread of its own), so fast machines take more
+// tiles and nobody idles while work remains; finished tiles travel back whole and are stored in
+// rank 0's image (and journal, with --checkpoint) as they arrive. A tile's identity and content
+// never depend on the rank count, so the image is the same bytes for any N (docs/scale-out.md).
+// Without MPI (one process with --checkpoint) the same queue runs with rank 0 alone.
+#pragma once
+
+#include <cstdint>
+
+#include "dist/checkpoint.hpp"
+#include "dist/mpi_session.hpp"
+#include "render/renderer.hpp"
+
+namespace rts::dist {
+
+struct ExchangeStats {
+  int tiles = 0;                   // in the image
+  int from_checkpoint = 0;         // read back from the journal instead of rendered
+  int rendered_here = 0;           // by this process
+  int rendered_remote = 0;         // gathered from other ranks (root only)
+  uint64_t bytes_received = 0;     // tile payloads gathered (root only)
+};
+
+class TileQueueExchange final : public render::TileExchange {
+ public:
+  // `checkpoint`: rank 0's journal, or null. Both must outlive run().
+  TileQueueExchange(const MpiSession& mpi, Checkpoint* checkpoint) : mpi_(mpi), checkpoint_(checkpoint) {}
+  void run(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile) override;
+  bool root() const override { return mpi_.rank() == 0; }
+  const ExchangeStats& stats() const { return stats_; }
+
+ private:
+  void run_root(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile);
+  void run_worker(const RenderTile& render_tile);
+
+  const MpiSession& mpi_;
+  Checkpoint* checkpoint_;
+  ExchangeStats stats_;
+};
+
+}  // namespace rts::dist
