@@ -247,6 +247,17 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
       std::cerr << fmt::format("rts: {}: {} tiles: {} rendered by rank 0, {} by the other {} rank(s), {} from the "
                                "checkpoint\n", out, x.tiles, x.rendered_here, x.rendered_remote,
                                dist->mpi->size() - 1, x.from_checkpoint);
+      if (c.stats.print && x.rendered_here > 0) {
+        const double per_tile = x.render_seconds_here / x.rendered_here;
+        const double per_remote =
+            x.rendered_remote ? (x.fold_seconds + x.serve_seconds) / x.rendered_remote : 0.0;
+        std::cerr << fmt::format("  rank 0: {:.3f} ms rendering a tile; {:.1f} us receiving, storing and journaling "
+                                 "one from another rank ({} kB in all){}\n", per_tile * 1e3, per_remote * 1e6,
+                                 x.bytes_received / 1024,
+                                 per_remote > 0 ? fmt::format("; one root feeds about {:.0f} ranks of this speed",
+                                                              per_tile / per_remote)
+                                                : "");
+      }
     }
     print_sampling_warnings(out, result.stats);
     report_stats(c.stats, result.stats);

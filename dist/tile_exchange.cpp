@@ -20,6 +20,10 @@
 namespace rts::dist {
 namespace {
 
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
 // Message tags: a worker asks for work, rank 0 assigns a tile (-1: no more), a worker returns
 // a finished tile (its number, then its payload).
 constexpr int kTagRequest = 1, kTagAssign = 2, kTagResult = 3;
@@ -64,7 +68,9 @@ void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, 
     try {
       for (int t = take(); t >= 0; t = take()) {
         std::vector<unsigned char> payload;
+        const auto start = std::chrono::steady_clock::now();
         render_tile(t, payload);
+        stats_.render_seconds_here += seconds_since(start);
         std::lock_guard lock(mutex);
         done_here.emplace_back(t, std::move(payload));
       }
@@ -101,6 +107,7 @@ void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, 
         int flag = 0;
         MPI_Status st;
         MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
+        const auto start = std::chrono::steady_clock::now();
         if (flag && st.MPI_TAG == kTagRequest) {
           int unused = 0;
           MPI_Recv(&unused, 1, MPI_INT, st.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
@@ -108,6 +115,7 @@ void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, 
           MPI_Send(&tile, 1, MPI_INT, st.MPI_SOURCE, kTagAssign, MPI_COMM_WORLD);
           if (tile < 0) --workers;
           busy = true;
+          stats_.serve_seconds += seconds_since(start);
         } else if (flag && st.MPI_TAG == kTagResult) {
           int bytes = 0;
           MPI_Get_count(&st, MPI_BYTE, &bytes);
@@ -121,6 +129,7 @@ void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, 
           ++stats_.rendered_remote;
           stats_.bytes_received += msg.size();
           busy = true;
+          stats_.fold_seconds += seconds_since(start);
         }
       }
 #endif
@@ -147,7 +156,9 @@ void TileQueueExchange::run_worker(const RenderTile& render_tile) {
     MPI_Recv(&tile, 1, MPI_INT, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (tile < 0) break;
     std::vector<unsigned char> payload;
+    const auto start = std::chrono::steady_clock::now();
     render_tile(tile, payload);
+    stats_.render_seconds_here += seconds_since(start);
     std::vector<unsigned char> msg(sizeof tile + payload.size());
     std::memcpy(msg.data(), &tile, sizeof tile);
     std::memcpy(msg.data() + sizeof tile, payload.data(), payload.size());

@@ -20,6 +20,10 @@ struct ExchangeStats {
   int rendered_here = 0;           // by this process
   int rendered_remote = 0;         // gathered from other ranks (root only)
   uint64_t bytes_received = 0;     // tile payloads gathered (root only)
+  // Rank 0's main thread: time receiving, storing and journaling other ranks' tiles, and
+  // answering requests — the serial part that bounds how many ranks one root can feed.
+  double fold_seconds = 0, serve_seconds = 0;
+  double render_seconds_here = 0;  // rendering tiles on this process (its rendering thread)
 };
 
 class TileQueueExchange final : public render::TileExchange {
