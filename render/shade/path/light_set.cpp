@@ -75,7 +75,13 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
     }
     entries_.push_back(e);
   }
-  if (scene.settings.environment < textures.size()) environment_ = &textures[scene.settings.environment];
+  if (scene.settings.environment < textures.size()) {
+    environment_ = &textures[scene.settings.environment];
+    sky_distribution_.emplace([this](const Vec3& d) {
+      Rgb c = sky(d);
+      return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+    });
+  }
   background_ = to_rgb(scene.settings.background);
   if (environment_ || !is_black(background_)) {
     sky_ = static_cast<uint32_t>(entries_.size());
@@ -247,11 +253,12 @@ bool LightSet::sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSampl
       return std::isfinite(out.pdf) && out.distance > 0.0;
     }
     case Type::Sky: {
-      out.wi = uniform_sphere(u);
+      double pdf = 1.0 / (4.0 * kPi);
+      out.wi = sky_distribution_ ? sky_distribution_->sample(u, pdf) : uniform_sphere(u);
       out.distance = kInf;
       out.radiance = sky(out.wi);
-      out.pdf = pdf_sky();
-      return true;
+      out.pdf = pick_pdf_ * pdf;
+      return out.pdf > 0.0 && std::isfinite(out.pdf);
     }
   }
   return false;

@@ -6,16 +6,19 @@
 //   directional      irradiance (W/m^2) on a surface facing it;
 //   area_light       a two-sided emitter of the same total power as a point light of its
 //                    intensity: radiance 2 I / area (no geometry: it is reached by sampling only);
-//   environment      sky radiance: the environment map, else a non-black background colour.
+//   environment      sky radiance: the environment map (importance-sampled by its luminance,
+//                    SkyDistribution), else a non-black background colour (uniform).
 // One light is picked per shading point, uniformly (a mesh counts as one light; its triangles
 // are picked by area).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "render/accel/world.hpp"
 #include "render/shade/lights.hpp"
+#include "render/shade/path/sky_distribution.hpp"
 #include "render/shade/path/warp.hpp"
 #include "render/shade/texture.hpp"
 
@@ -50,7 +53,9 @@ class LightSet {
   // Sky radiance along a direction leaving the scene, and the density NEE gives it.
   bool has_sky() const { return sky_ != kNoEntry; }
   Rgb sky(const Vec3& direction) const;
-  double pdf_sky() const { return pick_pdf_ / (4.0 * kPi); }
+  double pdf_sky(const Vec3& direction) const {
+    return pick_pdf_ * (sky_distribution_ ? sky_distribution_->pdf(direction) : 1.0 / (4.0 * kPi));
+  }
 
   // What the set holds, for --stats.
   bool has_shape_emitters() const { return shape_emitters_ > 0; }
@@ -86,6 +91,7 @@ class LightSet {
   std::vector<uint32_t> emitter_of_;   // by instance: its entry, or kNoEntry
   uint32_t sky_ = kNoEntry;
   const CompiledTexture* environment_ = nullptr;
+  std::optional<SkyDistribution> sky_distribution_;   // environment maps only
   Rgb background_{0.0};
   double pick_pdf_ = 0.0;              // 1 / entries
   std::size_t shape_emitters_ = 0, delta_lights_ = 0, area_lights_ = 0, unsampled_emitters_ = 0;

@@ -117,7 +117,7 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
     WorldHit hit;
     if (!world_.intersect(ray, Interval::positive(), hit)) {
       if (lights_.has_sky()) {
-        double w = specular ? 1.0 : power_heuristic(prev_pdf, lights_.pdf_sky());
+        double w = specular ? 1.0 : power_heuristic(prev_pdf, lights_.pdf_sky(dir));
         radiance += beta * lights_.sky(dir) * w;
       }
       break;
