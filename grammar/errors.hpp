@@ -71,7 +71,6 @@ template <> inline constexpr auto error_message<body_close> = "expected '}' to c
 template <> inline constexpr auto error_message<no_pov_declare> = "rts has no '#' directives: POV-Ray's '#declare NAME = VALUE;' is 'let NAME = VALUE' (see docs/from-povray.md)";
 template <> inline constexpr auto error_message<no_pov_directive> = "rts has no '#' directives: write 'include', 'if', 'for', 'while', 'macro' without '#' (see docs/from-povray.md)";
 template <> inline constexpr auto error_message<no_pov_block<pov_light_source>> = "POV-Ray's 'light_source' is 'point_light { position = ... }' in rts (or 'spot_light', 'area_light'; see docs/from-povray.md)";
-template <> inline constexpr auto error_message<no_pov_block<pov_union>> = "POV-Ray's 'union' and 'merge' are 'group { ... }' in rts (see docs/from-povray.md)";
 template <> inline constexpr auto error_message<no_pov_block<pov_pigment>> = "POV-Ray's 'texture', 'pigment' and 'finish' are one 'material { color = ... diffuse = ... }' in rts, given as a shape's 'material' (see docs/from-povray.md)";
 template <> inline constexpr auto error_message<no_pov_block<pov_global_settings>> = "POV-Ray's 'global_settings' is 'settings { ... }' in rts (see docs/from-povray.md)";
 template <> inline constexpr auto error_message<no_pov_block<pov_background>> = "POV-Ray's 'background' is 'settings { background = rgb(...) }' in rts (see docs/from-povray.md)";

@@ -24,7 +24,6 @@ struct no_directive : seq<must<no_pov_declare>, must<no_pov_directive>> {};
 // stops at the word with the rts spelling (the body, `<0, 10, -10> color White`, would not
 // parse as rts anyway, and `word {` is never valid rts for these words).
 struct pov_light_source : reserved<'l', 'i', 'g', 'h', 't', '_', 's', 'o', 'u', 'r', 'c', 'e'> {};
-struct pov_union : sor<reserved<'u', 'n', 'i', 'o', 'n'>, reserved<'m', 'e', 'r', 'g', 'e'>> {};
 struct pov_pigment : sor<reserved<'p', 'i', 'g', 'm', 'e', 'n', 't'>, reserved<'f', 'i', 'n', 'i', 's', 'h'>,
                          reserved<'t', 'e', 'x', 't', 'u', 'r', 'e'>> {};
 struct pov_global_settings
@@ -33,7 +32,7 @@ struct pov_background : reserved<'b', 'a', 'c', 'k', 'g', 'r', 'o', 'u', 'n', 'd
 template <typename Word>
 struct no_pov_block : not_at<Word, skip, one<'{'>> {};
 struct no_pov_blocks
-    : seq<must<no_pov_block<pov_light_source>>, must<no_pov_block<pov_union>>, must<no_pov_block<pov_pigment>>,
+    : seq<must<no_pov_block<pov_light_source>>, must<no_pov_block<pov_pigment>>,
           must<no_pov_block<pov_global_settings>>, must<no_pov_block<pov_background>>> {};
 
 // ---------------------------------------------------------------------------------------

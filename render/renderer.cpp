@@ -120,9 +120,14 @@ void describe(const Prepared& prep, const Frame& frame, const RenderResult& resu
   for (std::string_view f : prep.features.used()) stats.features_used.emplace_back(f);
   for (std::string_view f : prep.features.left_out()) stats.features_left_out.emplace_back(f);
   uint64_t by_kind[kShapeKindCount] = {};
-  for (std::size_t i = 0; i < world.instance_count(); ++i) ++by_kind[world.instance(i).kind];
+  uint64_t csg_blocks = 0;
+  for (std::size_t i = 0; i < world.instance_count(); ++i) {
+    PrimKind kind = world.instance(i).kind;
+    if (kind < kShapeKindCount) ++by_kind[kind]; else ++csg_blocks;  // CSG leaves count as their kinds
+  }
   for (std::size_t k = 0; k < kShapeKindCount; ++k)
     if (by_kind[k] > 0) stats.primitives.emplace_back(shape_name(k), by_kind[k]);
+  if (csg_blocks > 0) stats.primitives.emplace_back("csg", csg_blocks);
   stats.triangles = world.triangle_count();
   stats.bvh_nodes = world.bvh_nodes();
   WorldMemory m = world.memory();
@@ -239,7 +244,7 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   stats.samples = rs.samples;
   stats.max_depth = rs.max_depth;
   stats.threads = threads;
-  stats.instances = world.instance_count() - world.plane_count();
+  stats.instances = world.instance_count() - world.plane_count() - world.csg_part_count();
   stats.planes = world.plane_count();
   stats.lights = prep.lights.size();
   stats.specialized = options.specialize;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/geometry/csg/csg_tree.hpp"
 #include "runtime/interpreter.hpp"
 #include "runtime/povray_hints.hpp"
 
@@ -100,6 +101,34 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
       v.type = Type::Object;
       v.id = builder_.group(std::move(children), ref(e.loc));
       record_node(v.id, count);
+      return v;
+    }
+    case render::BlockCategory::Csg: {
+      // Like a group: the shapes placed in the body are its children; its properties are
+      // the children's default material and `inverse`.
+      std::vector<render::Child> children;
+      std::vector<Property> props;
+      {
+        Restore<std::vector<render::Child>*> target(target_);
+        target_ = &children;
+        collect_properties(e.body, props, true);
+      }
+      ObjectCount count;
+      for (const render::Child& c : children) {
+        ObjectCount n = node_count(c.node);
+        count.shapes = std::min(count.shapes + n.shapes, kSaturatedCount);
+        count.lights = std::min(count.lights + n.lights, kSaturatedCount);
+      }
+      if (count.total() > render::kMaxCsgLeaves)
+        fail(e.loc, fmt::format("this {} holds {} shapes, more than the {} one CSG block can combine", kind,
+                                count.total() >= kSaturatedCount ? std::string("billions of")
+                                                                  : std::to_string(count.total()),
+                                render::kMaxCsgLeaves));
+      render::ParamSet ps = to_params(kind, e.loc, props);
+      Value v;
+      v.type = Type::Object;
+      v.id = builder_.csg(kind, std::move(children), ps);
+      record_node(v.id, ObjectCount{1, 0});
       return v;
     }
     case render::BlockCategory::Material:

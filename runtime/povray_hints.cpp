@@ -7,14 +7,13 @@ namespace {
 
 struct Hint {
   std::string_view pov;
-  std::string_view rts;  // completes "POV-Ray's 'X' is ... in rts"
+  std::string_view rts;  // completes "POV-Ray's 'X' is ..."
 };
 
-// docs/from-povray.md lists the same mapping.
+// docs/from-povray.md lists the same mapping. Each text is followed by " in rts": none says
+// it again.
 constexpr Hint kHints[] = {
     {"light_source", "'point_light' (or 'spot_light', 'area_light')"},
-    {"union", "'group'"},
-    {"merge", "'group'"},
     {"object", "a value placed as a statement (write the variable's name alone)"},
     {"pigment", "'material { color = ... }'"},
     {"finish", "'material { diffuse = ... specular = ... reflect = ... }'"},
@@ -26,9 +25,13 @@ constexpr Hint kHints[] = {
     {"local", "'let'"},
     {"smooth_triangle", "'triangle { ... n0 = ... n1 = ... n2 = ... }'"},
     {"mesh2", "'mesh { vertices = [...] faces = [...] }'"},
-    {"difference", "not available: rts has no CSG (see docs/from-povray.md)"},
-    {"intersection", "not available: rts has no CSG (see docs/from-povray.md)"},
-    {"torus", "not available in rts (see docs/shapes.md for the shapes)"},
+    {"superellipsoid", "not yet available"},
+    {"lathe", "not yet available"},
+    {"sor", "not yet available"},
+    {"prism", "not yet available"},
+    {"blob", "not yet available"},
+    {"height_field", "not yet available"},
+    {"isosurface", "not yet available"},
 };
 
 }  // namespace

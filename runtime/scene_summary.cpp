@@ -106,6 +106,11 @@ struct Walker {
       case render::NodeKind::Group:
         for (const render::Child& c : scene.groups[n.index].children) todo.emplace_back(c.node, m * c.transform);
         return;
+      case render::NodeKind::Csg:
+        // Counted by its shapes (a loose bound: a difference's holes and an intersection's
+        // cuts do not shrink it).
+        for (const render::Child& c : scene.csgs[n.index].children) todo.emplace_back(c.node, m * c.transform);
+        return;
     }
   }
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "render/geometry/csg/leaf_crossings.hpp"
 #include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/geometry/tolerances.hpp"
 
@@ -23,9 +24,127 @@ double linear_norm(const Mat4& m) {
 
 }  // namespace
 
+uint32_t World::add_transform(const Mat4& to_world) {
+  InstanceTransform xf;
+  xf.to_world = to_world;
+  xf.to_object = glm::inverse(to_world);
+  xf.normal_to_world = glm::transpose(glm::dmat3(xf.to_object));
+  xf.vector_to_world = glm::dmat3(to_world);
+  transforms_.push_back(xf);
+  return static_cast<uint32_t>(transforms_.size() - 1);
+}
+
+void World::add_geometry(const SceneDesc& scene, const ShapeDesc& shape, Instance& inst, AABB& object_bounds,
+                         bool& unbounded_shape) {
+  std::visit(
+      [&](const auto& g) {
+        using T = std::decay_t<decltype(g)>;
+        inst.kind = kPrimKind<T>;
+        if constexpr (std::is_same_v<T, MeshRef>) {
+          if (g.mesh >= scene.meshes.size() || !scene.meshes[g.mesh])
+            throw RenderError(shape.loc, "internal: shape refers to unknown mesh " + std::to_string(g.mesh));
+          meshes_[g.mesh] = mesh_accel(scene, g.mesh);
+          inst.index = g.mesh; inst.smooth = g.smooth;
+          inst.vertex_material = scene.meshes[g.mesh]->has_vertex_material();
+          object_bounds = meshes_[g.mesh]->bounds();
+        } else {
+          auto& array = std::get<std::vector<T>>(shapes_);
+          inst.index = static_cast<uint32_t>(array.size());
+          array.push_back(g);
+          if constexpr (ShapeTraits<T>::kInfo.bounded)
+            object_bounds = bounds(g);
+          else
+            unbounded_shape = true;
+        }
+      },
+      shape.geometry);
+}
+
+void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
+                    AABB& world_bounds) {
+  Csg csg;
+  auto transmits = [&](MaterialId m) {
+    if (m >= scene.materials.size()) return false;
+    const Color& t = scene.materials[m].transmit;
+    return t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
+  };
+  const double inf = Interval::kInfinity;
+  // Appends the nodes for `node_id` placed by `m`, children before parents; a group is a union.
+  auto add_node = [&](auto& self, NodeId node_id, const Mat4& m, MaterialId inherited, int depth) -> void {
+    if (node_id >= scene.nodes.size() || depth > tol::kMaxGroupDepth)
+      throw RenderError(block.loc, "internal: a CSG block refers to an unknown node");
+    const Node& node = scene.nodes[node_id];
+    auto add_op = [&](CsgOp op, const std::vector<Child>& kids, MaterialId mat, bool inverse) {
+      std::vector<uint32_t> ids;
+      for (const Child& c : kids) {
+        self(self, c.node, m * c.transform, mat, depth + 1);
+        ids.push_back(static_cast<uint32_t>(csg.tree.nodes.size() - 1));
+      }
+      CsgNode n;
+      n.op = op;
+      n.inverse = inverse;
+      n.first = static_cast<uint32_t>(csg.tree.children.size());
+      n.count = static_cast<uint32_t>(ids.size());
+      csg.tree.children.insert(csg.tree.children.end(), ids.begin(), ids.end());
+      csg.tree.nodes.push_back(n);
+    };
+    if (node.kind == NodeKind::Group) {
+      add_op(CsgOp::Union, scene.groups[node.index].children, inherited, false);
+      return;
+    }
+    if (node.kind == NodeKind::Csg) {
+      const CsgDesc& d = scene.csgs[node.index];
+      add_op(d.op, d.children, d.material != kNoId ? d.material : inherited, d.inverse);
+      return;
+    }
+    if (node.kind != NodeKind::Shape) throw RenderError(node.loc, "a CSG block holds only shapes");
+    const ShapeDesc& shape = scene.shapes[node.index];
+    Instance part;
+    part.material = shape.material != kNoId ? shape.material : inherited;
+    part.transmissive = transmits(part.material);
+    AABB object_bounds;
+    bool unbounded = false;
+    add_geometry(scene, shape, part, object_bounds, unbounded);
+    if (m != Mat4(1.0)) part.transform = add_transform(m);
+    AABB box = unbounded ? AABB{Vec3(-inf), Vec3(inf)}
+                         : (m == Mat4(1.0) ? object_bounds : transform_bounds(m, object_bounds));
+    CsgNode n;
+    n.leaf = true;
+    n.inverse = shape.inverse;
+    n.first = static_cast<uint32_t>(csg.leaf_instance.size());
+    csg.leaf_instance.push_back(static_cast<uint32_t>(parts.size()));  // made absolute at the end
+    csg.leaf_bounds.push_back(box);
+    csg.tree.nodes.push_back(n);
+    parts.push_back(part);
+    inst.transmissive = inst.transmissive || part.transmissive;
+  };
+  const CsgDesc& d = scene.csgs[block.csg];
+  {
+    std::vector<uint32_t> top;
+    for (const Child& c : d.children) {
+      add_node(add_node, c.node, block.to_world * c.transform, d.material, 0);
+      top.push_back(static_cast<uint32_t>(csg.tree.nodes.size() - 1));
+    }
+    CsgNode n;
+    n.op = d.op;
+    n.inverse = d.inverse;
+    n.first = static_cast<uint32_t>(csg.tree.children.size());
+    n.count = static_cast<uint32_t>(top.size());
+    csg.tree.children.insert(csg.tree.children.end(), top.begin(), top.end());
+    csg.tree.nodes.push_back(n);
+  }
+  csg.tree.leaf_count = static_cast<uint32_t>(csg.leaf_instance.size());
+  if (csg.tree.leaf_count > kMaxCsgLeaves || csg.tree.nodes.size() > kMaxCsgNodes)
+    throw RenderError(block.loc, "a CSG block holds more than " + std::to_string(kMaxCsgLeaves) + " shapes");
+  world_bounds = csg.tree.bounds(csg.leaf_bounds);
+  inst.kind = kCsgKind;
+  inst.index = static_cast<uint32_t>(csgs_.size());
+  csgs_.push_back(std::move(csg));
+}
+
 World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   meshes_.resize(scene.meshes.size());
-  std::vector<Instance> bounded, unbounded;
+  std::vector<Instance> bounded, unbounded, parts;
   std::vector<AABB> boxes;
   for (const FlatShape& fs : flat.shapes) {
     const ShapeDesc& shape = scene.shapes[fs.shape];
@@ -40,38 +159,11 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     if (!identity) {
       double det = glm::determinant(glm::dmat3(fs.to_world));
       if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) continue;
-      InstanceTransform xf;
-      xf.to_world = fs.to_world;
-      xf.to_object = glm::inverse(fs.to_world);
-      xf.normal_to_world = glm::transpose(glm::dmat3(xf.to_object));
-      xf.vector_to_world = glm::dmat3(fs.to_world);
-      inst.transform = static_cast<uint32_t>(transforms_.size());
-      transforms_.push_back(xf);
+      inst.transform = add_transform(fs.to_world);
     }
     AABB object_bounds;
     bool unbounded_shape = false;
-    std::visit(
-        [&](const auto& g) {
-          using T = std::decay_t<decltype(g)>;
-          inst.kind = kPrimKind<T>;
-          if constexpr (std::is_same_v<T, MeshRef>) {
-            if (g.mesh >= scene.meshes.size() || !scene.meshes[g.mesh])
-              throw RenderError(shape.loc, "internal: shape refers to unknown mesh " + std::to_string(g.mesh));
-            meshes_[g.mesh] = mesh_accel(scene, g.mesh);
-            inst.index = g.mesh; inst.smooth = g.smooth;
-            inst.vertex_material = scene.meshes[g.mesh]->has_vertex_material();
-            object_bounds = meshes_[g.mesh]->bounds();
-          } else {
-            auto& array = std::get<std::vector<T>>(shapes_);
-            inst.index = static_cast<uint32_t>(array.size());
-            array.push_back(g);
-            if constexpr (ShapeTraits<T>::kInfo.bounded)
-              object_bounds = bounds(g);
-            else
-              unbounded_shape = true;
-          }
-        },
-        shape.geometry);
+    add_geometry(scene, shape, inst, object_bounds, unbounded_shape);
     if (unbounded_shape) {
       unbounded.push_back(inst);
       continue;
@@ -82,6 +174,21 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     bounded.push_back(inst);
     boxes.push_back(world_bounds);
   }
+  // CSG blocks: traced in world space through their leaves' own transforms (the block has
+  // none); transmissive when any leaf is, so shadow rays look at each of its surfaces.
+  for (const FlatCsg& fc : flat.csgs) {
+    Instance inst;
+    AABB world_bounds;
+    add_csg(scene, fc, parts, inst, world_bounds);
+    has_transmissive_ = has_transmissive_ || inst.transmissive;
+    if (!world_bounds.valid()) continue;  // an empty intersection: nothing to hit
+    if (!world_bounds.finite()) {
+      unbounded.push_back(inst);
+    } else {
+      bounded.push_back(inst);
+      boxes.push_back(world_bounds);
+    }
+  }
   bounded_count_ = bounded.size();
   use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
   if (use_bvh_) bvh_ = build_bvh(boxes);
@@ -90,6 +197,12 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     planes_.push_back(static_cast<uint32_t>(instances_.size()));
     instances_.push_back(p);
   }
+  // CSG leaves last: they are reached through their block only.
+  const uint32_t base = static_cast<uint32_t>(instances_.size());
+  for (Csg& c : csgs_)
+    for (uint32_t& i : c.leaf_instance) i += base;
+  instances_.insert(instances_.end(), parts.begin(), parts.end());
+  csg_parts_ = parts.size();
 }
 
 namespace {
@@ -143,7 +256,64 @@ bool World::intersect_kind(std::index_sequence<I...>, const Instance& inst, cons
 
 bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                                SurfaceHit& hit) const {
+  if (inst.kind == kCsgKind) return intersect_csg(inst, world_ray, ray_t, hit);
   return intersect_kind(std::make_index_sequence<kShapeKindCount>(), inst, object_ray(inst, world_ray), ray_t, hit);
+}
+
+bool World::intersect_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit& hit) const {
+  const Csg& csg = csgs_[inst.index];
+  const uint32_t n = csg.tree.leaf_count;
+  CsgLeafCrossings crossings[kMaxCsgLeaves];
+  const RayInverse inv(world_ray.origin, world_ray.direction);
+  // Each leaf in its own object space (t is the same in every space).
+  auto with_leaf = [&](uint32_t l, auto&& f) -> bool {
+    const Instance& part = instances_[csg.leaf_instance[l]];
+    const Ray ray = object_ray(part, world_ray);
+    // The part's kind, among those with leaf_crossings() (render/geometry/csg/leaf_crossings.hpp);
+    // other kinds are refused when the scene is built.
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+      bool result = false;
+      (void)((part.kind == I && [&] {
+                using T = ShapeKind<I>;
+                if constexpr (requires(const T& g, CsgLeafCrossings& c) { leaf_crossings(g, ray, c); })
+                  result = f(std::get<I>(shapes_)[part.index], ray);
+                return true;
+              }()) || ...);
+      return result;
+    }(std::make_index_sequence<kShapeKindCount>());
+  };
+  for (uint32_t l = 0; l < n; ++l) {
+    CsgLeafCrossings& c = crossings[l];
+    c.count = 0;
+    c.inside_at_start = false;
+    // A bounded leaf the whole line misses stays outside along it.
+    if (csg.leaf_bounds[l].finite() && !slab_hit(csg.leaf_bounds[l], inv, Interval::universe())) continue;
+    with_leaf(l, [&](const auto& shape, const Ray& ray) {
+      leaf_crossings(shape, ray, c);
+      return true;
+    });
+  }
+  // The same tie as World::intersect's between instances.
+  const double tie_abs =
+      tol::kCoincidentRelative * max_abs_component(world_ray.origin) / max_abs_component(world_ray.direction);
+  CsgSurface surface;
+  if (!csg_first_surface(csg.tree, crossings, ray_t, tie_abs, tol::kCoincidentRelative, surface)) return false;
+  const CsgLeafCrossings& c = crossings[surface.leaf];
+  int k = 0;
+  while (k + 1 < c.count && c.t[k] != surface.t) ++k;
+  bool ok = with_leaf(surface.leaf, [&](const auto& shape, const Ray& ray) {
+    if (!leaf_hit(shape, ray, c, k, hit)) return false;
+    // Out of the result: towards the ray where it enters, along it where it leaves.
+    if ((glm::dot(hit.normal, ray.direction) < 0.0) != surface.entering) {
+      hit.normal = -hit.normal;
+      hit.shading_normal = -hit.shading_normal;
+    }
+    return true;
+  });
+  if (!ok) return false;
+  hit.t = surface.t;
+  hit.csg_part = csg.leaf_instance[surface.leaf];
+  return true;
 }
 
 bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const {
@@ -193,9 +363,13 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   }
   for (uint32_t i : planes_) found = closer(i, ray_t) || found;
   if (!found) return false;
-  const Instance& inst = instances_[best_instance];
+  // A CSG block's hit shows one of its leaves: that leaf's instance has the material, uv and
+  // transform of the surface; the block stays the medium.
+  const uint32_t shown = instances_[best_instance].kind == kCsgKind ? best.csg_part : best_instance;
+  const Instance& inst = instances_[shown];
   hit.t = best.t;
-  hit.instance = best_instance;
+  hit.instance = shown;
+  hit.medium = best_instance;
   hit.object_point = best.point;
   hit.uv = best.uv;
   // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
@@ -272,16 +446,23 @@ bool World::shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& ou
     SurfaceHit h;
     const Vec3 object_dir = object_ray(inst, ray).direction;
     while (intersect_instance(inst, ray, range, h)) {
+      // A CSG hit is in its leaf's object space.
+      const Vec3 dir = inst.kind == kCsgKind ? object_ray(instances_[h.csg_part], ray).direction : object_dir;
       if (out.count == tol::kMaxShadowSurfaces) return true;  // too many: treated as blocked
+      uint32_t shown = i;
+      if (inst.kind == kCsgKind) {
+        shown = h.csg_part;  // an opaque part of a partly transmissive block blocks
+        if (!instances_[shown].transmissive) return true;
+      }
       out.t[out.count] = h.t;
-      out.instance[out.count] = i;
+      out.instance[out.count] = shown;
       ++out.count;
       // Step past the surface by the hit's own error bound, as offset_ray_origin moves a
       // spawned ray's origin: that distance along the normal, converted to ray parameter.
       Vec3 n = glm::normalize(h.normal);
       double n1 = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
       double offset = std::max(tol::kOffsetErrorScale * h.error * n1, tol::kMinRayOffset);
-      double cos_dn = std::max(std::abs(glm::dot(n, object_dir)), tol::kParallelCosine);
+      double cos_dn = std::max(std::abs(glm::dot(n, dir)), tol::kParallelCosine);
       range.min = h.t + offset / cos_dn;
     }
     return false;
@@ -323,6 +504,9 @@ WorldMemory World::memory() const {
   w.instances = instances_.capacity() * sizeof(Instance) + planes_.capacity() * sizeof(uint32_t);
   w.transforms = transforms_.capacity() * sizeof(InstanceTransform);
   std::apply([&](const auto&... array) { ((w.shapes += array.capacity() * sizeof(array[0])), ...); }, shapes_);
+  for (const Csg& c : csgs_)
+    w.shapes += c.tree.nodes.capacity() * sizeof(CsgNode) + c.tree.children.capacity() * sizeof(uint32_t) +
+                c.leaf_instance.capacity() * sizeof(uint32_t) + c.leaf_bounds.capacity() * sizeof(AABB);
   w.bvh = bvh_.nodes.capacity() * sizeof(BVHNode) + bvh_.order.capacity() * sizeof(uint32_t);
   std::vector<const MeshAccel*> distinct;
   for (const auto& m : meshes_)

@@ -11,6 +11,7 @@
 #include "render/accel/bvh.hpp"
 #include "render/scene/flatten.hpp"
 #include "render/accel/mesh_accel.hpp"
+#include "render/geometry/csg/csg_tree.hpp"
 #include "render/scene/scene.hpp"
 #include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/geometry/surface_hit.hpp"
@@ -22,7 +23,10 @@ namespace rts::render {
 using PrimKind = uint8_t;
 template <class T>
 inline constexpr PrimKind kPrimKind = static_cast<PrimKind>(shape_index<T>());
-static_assert(kShapeKindCount <= 256, "PrimKind is a byte");
+static_assert(kShapeKindCount < 255, "PrimKind is a byte, and 255 is a CSG block");
+// A CSG block, traced as one instance (World::csgs_); the leaf whose surface a hit shows is
+// an instance of its own kind after every other (World::csg_part_count), never in the BVH.
+inline constexpr PrimKind kCsgKind = 255;
 
 // One array per ShapeGeometry alternative (meshes' stays empty: they are kept by MeshId).
 template <class V>
@@ -55,7 +59,8 @@ struct InstanceTransform {
 // A hit in world space, plus what shading needs from object space.
 struct WorldHit {
   double t = 0.0;
-  uint32_t instance = 0;
+  uint32_t instance = 0;       // whose surface (material, uv): a CSG block's leaf part
+  uint32_t medium = 0;         // whose inside the ray enters or leaves: a CSG block as a whole
   Vec3 point{0.0};             // world
   double error = 0.0;          // bound on the rounding error of `point`, per component
   Vec3 normal{0, 1, 0};        // world geometric normal, unit, outward
@@ -119,6 +124,7 @@ class World {
   const T& shape(uint32_t index) const { return std::get<std::vector<T>>(shapes_)[index]; }
   std::size_t instance_count() const { return instances_.size(); }
   std::size_t plane_count() const { return planes_.size(); }
+  std::size_t csg_part_count() const { return csg_parts_; }  // the last instances
   std::size_t mesh_bvh_count() const;  // distinct mesh BVHs built
   const BVH& top_level() const { return bvh_; }
 
@@ -131,8 +137,24 @@ class World {
   bool intersect_kind(std::index_sequence<I...>, const Instance& inst, const Ray& ray, const Interval& ray_t,
                       SurfaceHit& hit) const;
   std::shared_ptr<const MeshAccel> mesh_accel(const SceneDesc& scene, MeshId id);
+  // Puts a shape's geometry in its kind's array; `unbounded` for planes.
+  void add_geometry(const SceneDesc& scene, const ShapeDesc& shape, Instance& inst, AABB& object_bounds,
+                    bool& unbounded);
+  uint32_t add_transform(const Mat4& to_world);
+  // Flattens a CSG block into a tree whose leaves are instances in `parts`.
+  void add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
+               AABB& world_bounds);
+  bool intersect_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit& hit) const;
+
+  // A CSG block: its tree and the instance of each leaf (parts after every other instance).
+  struct Csg {
+    CsgTree tree;
+    std::vector<uint32_t> leaf_instance;
+    std::vector<AABB> leaf_bounds;   // world space, to skip the leaves a ray misses
+  };
 
   ShapeArrays shapes_;
+  std::vector<Csg> csgs_;
   // By MeshId; null when unreferenced. MeshIds whose data are identical (the same OBJ file
   // loaded by several statements) share one MeshAccel, so one BVH.
   std::vector<std::shared_ptr<const MeshAccel>> meshes_;
@@ -144,6 +166,7 @@ class World {
   std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded
   bool use_bvh_ = true;
   bool has_transmissive_ = false;
+  std::size_t csg_parts_ = 0;
 };
 
 }  // namespace rts::render

@@ -23,6 +23,8 @@ struct SurfaceHit {
   // per-vertex materials (set by meshes only, read for meshes only).
   uint32_t triangle;
   glm::dvec2 bary;
+  // CSG blocks: the instance of the leaf whose surface this is (set and read for CSG only).
+  uint32_t csg_part;
 };
 
 // Per-vertex material values interpolated at a hit (each only when the mesh has it).

@@ -3,14 +3,13 @@
 #include <array>
 #include <iterator>
 
+#include "render/scene/csg_leaves.hpp"
+
 namespace rts::render {
 namespace {
 
 bool nonzero(const Color& c) { return c.r != 0.0 || c.g != 0.0 || c.b != 0.0; }
 
-const MaterialDesc* material_of(const SceneDesc& scene, const ShapeDesc& shape) {
-  return shape.material < scene.materials.size() ? &scene.materials[shape.material] : nullptr;
-}
 
 }  // namespace
 
@@ -115,6 +114,8 @@ constexpr FeatureRule kRules[] = {
      [](const FeatureProbe& p) { return p.scene.has_camera && p.scene.camera.aperture > 0.0; }},
     {Feature::Antialiasing, "antialiasing", Scope::Scene, [](const FeatureProbe& p) { return p.ctx.samples > 1; }},
     {Feature::Aovs, "aovs", Scope::Scene, [](const FeatureProbe& p) { return p.ctx.aovs; }},
+    // Any CSG block placed (analyze_features adds it; its leaves count as shapes).
+    {Feature::Csg, "csg", Scope::Scene, [](const FeatureProbe&) { return false; }},
     // Decided by the World (World::uses_bvh) and added by the renderer.
     {Feature::Bvh, "bvh", Scope::Scene, [](const FeatureProbe&) { return false; }},
 };
@@ -169,13 +170,17 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
   // The default material (no material given) has the MaterialDesc defaults.
   const MaterialDesc default_material;
   FeatureProbe probe{scene, ctx};
-  for (const FlatShape& fs : flat.shapes) {
-    const ShapeDesc& shape = scene.shapes[fs.shape];
+  auto add_shape = [&](const ShapeDesc& shape, MaterialId material) {
     f.add(shape_feature(shape.geometry.index()));
-    const MaterialDesc* mp = material_of(scene, shape);
     probe.shape = &shape;
-    probe.material = mp ? mp : &default_material;
+    probe.material = material < scene.materials.size() ? &scene.materials[material] : &default_material;
     apply_rules(Scope::Shape, probe, f);
+  };
+  for (const FlatShape& fs : flat.shapes) add_shape(scene.shapes[fs.shape], scene.shapes[fs.shape].material);
+  // What a CSG block shows is its leaves, each with its own material or the block's.
+  for (const FlatCsg& fc : flat.csgs) {
+    f.add(Feature::Csg);
+    for_each_csg_leaf(scene, fc.csg, add_shape);
   }
   probe.shape = nullptr;
   probe.material = nullptr;
@@ -193,10 +198,12 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
 
 std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
   std::vector<bool> used(scene.textures.size(), false);
-  for (const FlatShape& fs : flat.shapes) {
-    const MaterialDesc* m = material_of(scene, scene.shapes[fs.shape]);
-    if (m) for_each_texture(*m, [&](TextureId t) { if (t < used.size()) used[t] = true; });
-  }
+  auto use = [&](const ShapeDesc&, MaterialId id) {
+    if (id < scene.materials.size())
+      for_each_texture(scene.materials[id], [&](TextureId t) { if (t < used.size()) used[t] = true; });
+  };
+  for (const FlatShape& fs : flat.shapes) use(scene.shapes[fs.shape], scene.shapes[fs.shape].material);
+  for (const FlatCsg& fc : flat.csgs) for_each_csg_leaf(scene, fc.csg, use);
   if (scene.settings.environment < used.size()) used[scene.settings.environment] = true;
   return used;
 }

@@ -19,13 +19,15 @@ namespace rts::render {
 enum class Feature : uint8_t {
   // primitive kinds, in ShapeGeometry's order (a shape's feature is its variant index; its
   // name is its block kind's): checked below
-  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad,
+  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad, Torus,
   // material channels
   Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Emission, Specular, Ambient,
   // lights
   PointLight, SpotLight, DirectionalLight, AreaLight, Shadows, TransmissiveShadows, AreaSampling,
   // camera and image
   DepthOfField, Antialiasing, Aovs,
+  // constructive solid geometry (any union, intersection, difference or merge block)
+  Csg,
   // acceleration
   Bvh,
   Count
@@ -45,7 +47,8 @@ static_assert(Feature::Sphere == shape_feature(shape_index<Sphere>()) &&
                   Feature::Cone == shape_feature(shape_index<Cone>()) &&
                   Feature::Disc == shape_feature(shape_index<Disc>()) &&
                   Feature::Mesh == shape_feature(shape_index<MeshRef>()) &&
-                  Feature::Quad == shape_feature(shape_index<Quad>()),
+                  Feature::Quad == shape_feature(shape_index<Quad>()) &&
+                  Feature::Torus == shape_feature(shape_index<Torus>()),
               "the shape Features follow ShapeGeometry's order");
 
 // "sphere", "reflection", "area_light"... (the names --stats and the JSON report use).

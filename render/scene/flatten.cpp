@@ -45,6 +45,11 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
       check_transform(m, child.loc);
       out.lights.push_back(transform_light(scene.lights[node.index], m));
       break;
+    case NodeKind::Csg:
+      if (node.index >= scene.csgs.size()) throw RenderError(node.loc, "internal: unknown CSG block");
+      check_transform(m, child.loc);
+      out.csgs.push_back(FlatCsg{node.index, m, node.loc});
+      break;
     case NodeKind::Group:
       if (node.index >= scene.groups.size()) throw RenderError(node.loc, "internal: unknown group");
       for (const Child& c : scene.groups[node.index].children) flatten_child(scene, c, m, depth + 1, out);

@@ -14,8 +14,16 @@ struct FlatShape {
   SourceRef loc;               // where the instance was placed
 };
 
+// A CSG block placed in the world: traced as one object (its children are not flattened).
+struct FlatCsg {
+  uint32_t csg = 0;            // index into SceneDesc::csgs
+  Mat4 to_world{1.0};
+  SourceRef loc;               // the block
+};
+
 struct FlatScene {
   std::vector<FlatShape> shapes;
+  std::vector<FlatCsg> csgs;
   std::vector<LightDesc> lights;  // already in world space
 };
 

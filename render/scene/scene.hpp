@@ -134,14 +134,23 @@ struct MeshRef  { MeshId mesh = kNoId; bool smooth = true; };
 // A parallelogram corner + s*edge_u + t*edge_v, s,t in [0,1], with uv = (s, t): UW's `square`
 // is the quad corner <-0.5,-0.5,0>, edges <1,0,0> and <0,1,0>.
 struct Quad     { Vec3 corner{-0.5, -0.5, 0}, edge_u{1, 0, 0}, edge_v{0, 1, 0}; };
+// In the x-z plane around y, centred at the origin (POV-Ray's torus): ring radius `major`,
+// tube radius `minor`.
+struct Torus    { double major = 1.0, minor = 0.25; };
 
-using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad>;
+using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;
-  MaterialId material = kNoId;   // kNoId: the default material
+  MaterialId material = kNoId;   // kNoId: the default material (inside CSG: the block's)
   SourceRef loc;
+  bool inverse = false;          // closed shapes in CSG: the solid is everything outside the surface
 };
+
+// ---- constructive solid geometry (POV-Ray's semantics) ------------------------------------
+// union: every child's surface (inner ones too); merge: the union's outer surface only;
+// intersection: where every child is; difference: the first child minus all the others.
+enum class CsgOp : uint8_t { Union, Intersection, Difference, Merge };
 
 // ---- lights (in their own space; placement transforms them) --------------------------------
 enum class LightKind : uint8_t { Point, Spot, Directional, Area };
@@ -219,7 +228,7 @@ struct Settings {
 };
 
 // ---- the graph ----------------------------------------------------------------------------
-enum class NodeKind : uint8_t { Shape, Light, Group };
+enum class NodeKind : uint8_t { Shape, Light, Group, Csg };  // Csg: SceneDesc::csgs
 struct Node {
   NodeKind kind = NodeKind::Shape;
   uint32_t index = 0;              // into shapes, lights or groups
@@ -236,6 +245,13 @@ struct GroupDesc {
   std::vector<Child> children;
 };
 
+struct CsgDesc {
+  CsgOp op = CsgOp::Union;
+  std::vector<Child> children;     // shape, CSG or group nodes (a group is a union)
+  MaterialId material = kNoId;     // the children's default
+  bool inverse = false;            // the solid is everything outside the result
+};
+
 struct SceneDesc {
   Settings settings;
   CameraDesc camera;
@@ -247,6 +263,7 @@ struct SceneDesc {
   std::vector<ShapeDesc> shapes;
   std::vector<LightDesc> lights;
   std::vector<GroupDesc> groups;
+  std::vector<CsgDesc> csgs;
   std::vector<Node> nodes;
   std::vector<Child> roots;        // instances placed in the world
   std::vector<Warning> warnings;   // from building: what is skipped (not part of dump())

@@ -41,6 +41,10 @@ constexpr KindInfo kKinds[] = {
     {"directional_light", BlockCategory::Light},
     {"area_light", BlockCategory::Light},
     {"group", BlockCategory::Group},
+    {"union", BlockCategory::Csg},
+    {"intersection", BlockCategory::Csg},
+    {"difference", BlockCategory::Csg},
+    {"merge", BlockCategory::Csg},
 };
 
 // The property names each block kind accepts (for unknown-name checks and suggestions).
@@ -85,13 +89,16 @@ const std::vector<std::string_view> kDirectionalLightNames = {"direction", "colo
 const std::vector<std::string_view> kAreaLightNames = {"position", "u",         "v",           "samples", "disc",
                                                        "color",    "intensity", "attenuation", "shadows"};
 
-// The names a shape or light kind takes, or null for other kinds.
+const std::vector<std::string_view> kCsgNames = {"material", "inverse"};
+
+// The names a shape, light or CSG kind takes, or null for other kinds.
 const std::vector<std::string_view>* names_of(std::string_view kind) {
   for (std::size_t k = 0; k < kShapeKindCount; ++k)
     if (kShapeInfos[k].name == kind) return &shape_property_names()[k];
   static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
       {"point_light", &kPointLightNames},  {"spot_light", &kSpotLightNames}, {"area_light", &kAreaLightNames},
-      {"directional_light", &kDirectionalLightNames}};
+      {"directional_light", &kDirectionalLightNames}, {"union", &kCsgNames}, {"intersection", &kCsgNames},
+      {"difference", &kCsgNames},          {"merge", &kCsgNames}};
   for (const auto& [name, names] : kTable)
     if (name == kind) return names;
   return nullptr;
@@ -563,6 +570,10 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   s.loc = ps.loc();
   ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
   if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) s.material = ref->id;
+  // `inverse` (for CSG) is read first, on solids only: an open shape's `inverse` stays an
+  // unknown property, and the names each kind lists stay its descriptor's.
+  if (const ShapeInfo* info = find_shape(kind); info && info->closure != Closure::Open)
+    s.inverse = ps.boolean("inverse", false);
   if (build_described(std::make_index_sequence<kShapeKindCount>(), kind, ps, s.geometry)) {
     // built by its descriptor
   } else if (kind == "triangle") {
@@ -728,6 +739,60 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
 NodeId SceneBuilder::group(std::vector<Child> children, SourceRef loc) {
   scene_.groups.push_back(GroupDesc{std::move(children)});
   return add_node(scene_, NodeKind::Group, scene_.groups.size() - 1, loc);
+}
+
+namespace {
+
+// Why `id` (a child of a CSG block of kind `op`) cannot take part, or "" when it can: CSG
+// combines solids, so a light, an open surface (no inside) or a mesh (not known to be
+// closed) is refused. Blocks inside were checked when they were built.
+std::string csg_refusal(const SceneDesc& scene, NodeId id, std::string_view op, int depth = 0) {
+  const Node& node = scene.nodes[id];
+  if (node.kind == NodeKind::Light) return "a light cannot be part of a CSG block (place it beside the block)";
+  if (node.kind == NodeKind::Csg) return "";
+  if (node.kind == NodeKind::Group) {
+    if (depth > tol::kMaxGroupDepth) return "groups nested too deep";
+    for (const Child& c : scene.groups[node.index].children)
+      if (std::string why = csg_refusal(scene, c.node, op, depth + 1); !why.empty()) return why;
+    return "";
+  }
+  const ShapeDesc& s = scene.shapes[node.index];
+  const ShapeInfo& info = kShapeInfos[s.geometry.index()];
+  if (std::holds_alternative<MeshRef>(s.geometry))
+    return fmt::format("a mesh cannot be part of '{}' yet: CSG needs solids with an inside (use a group for a union "
+                       "of meshes)",
+                       op);
+  bool open = info.closure == Closure::Open;
+  if (const auto* c = std::get_if<Cylinder>(&s.geometry)) open = !c->capped;
+  if (const auto* c = std::get_if<Cone>(&s.geometry)) open = !c->capped;
+  if (open) {
+    bool capped_kind = info.closure == Closure::WhenCapped;
+    std::string what = fmt::format("{} {}", capped_kind ? "an uncapped" : "a", info.name);
+    return fmt::format("{} cannot be part of '{}': it is an open surface with no inside, and CSG combines solids "
+                       "(use a group to place it beside the block, or a closed shape: box, sphere, capped cylinder)",
+                       what, op);
+  }
+  return "";
+}
+
+}  // namespace
+
+NodeId SceneBuilder::csg(std::string_view kind, std::vector<Child> children, ParamSet& ps) {
+  ps.set_valid_names(names_of(kind));
+  CsgDesc d;
+  d.op = kind == "intersection" ? CsgOp::Intersection
+         : kind == "difference" ? CsgOp::Difference
+         : kind == "merge"      ? CsgOp::Merge
+                                : CsgOp::Union;
+  if (children.empty()) ps.fail_block(fmt::format("{} needs at least one shape", kind));
+  for (const Child& c : children)
+    if (std::string why = csg_refusal(scene_, c.node, kind); !why.empty()) throw SceneError(c.loc, why);
+  if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) d.material = ref->id;
+  d.inverse = ps.boolean("inverse", false);
+  ps.check_unused(kCsgNames);
+  d.children = std::move(children);
+  scene_.csgs.push_back(std::move(d));
+  return add_node(scene_, NodeKind::Csg, scene_.csgs.size() - 1, ps.loc());
 }
 
 void SceneBuilder::place(const Child& instance) { scene_.roots.push_back(instance); }

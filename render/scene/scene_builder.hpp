@@ -16,7 +16,7 @@
 
 namespace rts::render {
 
-enum class BlockCategory { Settings, Camera, Material, Texture, Shape, Light, Group, Unknown };
+enum class BlockCategory { Settings, Camera, Material, Texture, Shape, Light, Group, Csg, Unknown };
 
 struct BuilderLimits {
   std::size_t max_mesh_triangles = 50'000'000;  // OBJ / inline meshes, in total
@@ -46,6 +46,10 @@ class SceneBuilder {
   NodeId shape(std::string_view kind, ParamSet& params);      // not placed yet
   NodeId light(std::string_view kind, ParamSet& params);      // not placed yet
   NodeId group(std::vector<Child> children, SourceRef loc);
+  // `union`, `intersection`, `difference` or `merge` of the children (properties `material`,
+  // the children's default, and `inverse`). Throws SceneError when a child cannot take part:
+  // a light, or an open shape (no inside) in anything but a union.
+  NodeId csg(std::string_view kind, std::vector<Child> children, ParamSet& params);
   void place(const Child& instance);                          // into the world
 
   // Files (meshes, image textures) outside the policy's folders are refused (SceneError).

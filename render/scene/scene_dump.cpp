@@ -89,8 +89,10 @@ std::string shape_text(const ShapeDesc& s) {
     std::string operator()(const Quad& g) {
       return fmt::format("quad corner {} edge_u {} edge_v {}", vec(g.corner), vec(g.edge_u), vec(g.edge_v));
     }
+    std::string operator()(const Torus& g) { return fmt::format("torus major {} minor {}", num(g.major), num(g.minor)); }
   };
-  return std::visit(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material));
+  return std::visit(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material)) +
+         (s.inverse ? " inverse true" : "");
 }
 
 std::string light_text(const LightDesc& l) {
@@ -191,10 +193,20 @@ void SceneDesc::dump(std::ostream& out) const {
       case NodeKind::Group:
         out << fmt::format("group children {}", groups[n.index].children.size());
         break;
+      case NodeKind::Csg: {
+        static const char* kOps[] = {"union", "intersection", "difference", "merge"};
+        const CsgDesc& d = csgs[n.index];
+        out << fmt::format("{} children {} material {}{}", kOps[static_cast<int>(d.op)], d.children.size(),
+                           id(d.material), d.inverse ? " inverse true" : "");
+        break;
+      }
     }
     out << where(n.loc) << '\n';
     if (n.kind == NodeKind::Group)
       for (const Child& ch : groups[n.index].children)
+        out << fmt::format("    child node {} transform {}{}\n", ch.node, mat(ch.transform), where(ch.loc));
+    if (n.kind == NodeKind::Csg)
+      for (const Child& ch : csgs[n.index].children)
         out << fmt::format("    child node {} transform {}{}\n", ch.node, mat(ch.transform), where(ch.loc));
   }
   out << fmt::format("roots {}\n", roots.size());

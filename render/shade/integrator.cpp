@@ -280,7 +280,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
 
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Interface f;
-  if (!is_black(to_rgb(m.transmit))) f = interface(pr.media, hit.instance, m, entering);
+  if (!is_black(to_rgb(m.transmit))) f = interface(pr.media, hit.medium, m, entering);
   const SpecularWeights w = specular_weights(m, incident, n, cos_i, f.n_from, f.n_to);
   const Rgb &kr = w.reflect, &kt = w.transmit;
   const Vec3& refracted = w.refracted;
@@ -293,9 +293,9 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
     pending.push_back(PendingRay{r, saturate(pr.weight * kt), pr.depth + 1, pr.media});
     // The refracted ray is inside the object now, or has left it.
     if (entering)
-      pending.back().media.enter(hit.instance, f.n_to);
+      pending.back().media.enter(hit.medium, f.n_to);
     else
-      pending.back().media.leave(hit.instance);
+      pending.back().media.leave(hit.medium);
   }
   if (max_channel(kr * pr.weight) > tol::kMinPathWeight) {
     Vec3 dir = reflected_direction(m, incident + 2.0 * cos_i * n, ng, path.sampler);

@@ -47,6 +47,8 @@ T sample(SceneDesc& s) {
     return MeshRef{static_cast<MeshId>(s.meshes.size() - 1), false};
   } else if constexpr (std::is_same_v<T, Quad>) {
     return Quad{Vec3(-1, 0, 1), Vec3(2, 0, 0), Vec3(0, 2, 0)};
+  } else if constexpr (std::is_same_v<T, Torus>) {
+    return Torus{0.8, 0.3};
   } else {
     static_assert(kNoSample<T>, "a new shape kind needs a sample in test_error_bounds.cpp");
   }

@@ -20,7 +20,8 @@ struct ShapeTraits<Plane> {
       {"offset", "number", "`0`", "Distance from the origin along `normal`."},
   };
   static constexpr ShapeInfo kInfo{
-      .name = "plane", .properties = kProperties, .closure = Closure::Open, .has_uv = true, .bounded = false};
+      // Closed: in CSG a plane is the half-space away from its normal, as in POV-Ray.
+      .name = "plane", .properties = kProperties, .closure = Closure::Closed, .has_uv = true, .bounded = false};
   // From the block's parameters (unknown names are checked by the builder afterwards).
   static Plane build(ParamSet& ps) {
     Plane g;

@@ -48,6 +48,12 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
       continue;
     }
     Rgb le = to_rgb(m.emission);
+    // A CSG part shows only where its block's result does: sampling its whole surface would
+    // light from cut-away parts, so it is found by BSDF rays only.
+    if (!is_black(le) && i >= world.instance_count() - world.csg_part_count()) {
+      ++unsampled_emitters_;
+      continue;
+    }
     if (!is_black(le)) add_emitter(world, scene, i, le);
   }
   for (const CompiledLight& l : lights) {

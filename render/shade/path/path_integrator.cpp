@@ -147,7 +147,7 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
     Lobes lb = lobes(m, material_id, hit);
     double n_from = 1.0, n_to = 1.0;
     if (has_transmission_ && !is_black(lb.transmit)) {
-      interface(media, hit.instance, m, entering, n_from, n_to);
+      interface(media, hit.medium, m, entering, n_from, n_to);
       lb.eta = n_from / n_to;
     }
     Bsdf bsdf(lb, n, ng, -dir);
@@ -189,9 +189,9 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
     if (bs.transmitted) {
       ++counters.refraction;
       if (entering)
-        media.enter(hit.instance, n_to);
+        media.enter(hit.medium, n_to);
       else
-        media.leave(hit.instance);
+        media.leave(hit.medium);
     } else {
       ++counters.reflection;
     }

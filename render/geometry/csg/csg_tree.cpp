@@ -1,0 +1,163 @@
+#include "render/geometry/csg/csg_tree.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rts::render {
+
+void CsgTree::evaluate(const uint8_t* leaf_inside, uint8_t* state) const {
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const CsgNode& n = nodes[i];
+    bool v;
+    if (n.leaf) {
+      v = leaf_inside[n.first] != 0;
+    } else {
+      const uint32_t* c = children.data() + n.first;
+      switch (n.op) {
+        case CsgOp::Union:
+        case CsgOp::Merge:
+          v = false;
+          for (uint32_t k = 0; k < n.count && !v; ++k) v = state[c[k]] != 0;
+          break;
+        case CsgOp::Intersection:
+          v = true;
+          for (uint32_t k = 0; k < n.count && v; ++k) v = state[c[k]] != 0;
+          break;
+        case CsgOp::Difference:
+          v = n.count > 0 && state[c[0]] != 0;
+          for (uint32_t k = 1; k < n.count && v; ++k) v = state[c[k]] == 0;
+          break;
+        default:
+          v = false;
+      }
+    }
+    state[i] = static_cast<uint8_t>(v != n.inverse);
+  }
+}
+
+AABB CsgTree::bounds(const std::vector<AABB>& leaf_bounds) const {
+  const double inf = std::numeric_limits<double>::infinity();
+  const AABB everything{Vec3(-inf), Vec3(inf)};
+  std::vector<AABB> b(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const CsgNode& n = nodes[i];
+    AABB box;
+    if (n.leaf) {
+      box = leaf_bounds[n.first];
+    } else {
+      const uint32_t* c = children.data() + n.first;
+      switch (n.op) {
+        case CsgOp::Union:
+        case CsgOp::Merge:
+          for (uint32_t k = 0; k < n.count; ++k)
+            if (b[c[k]].valid()) box.extend(b[c[k]]);
+          break;
+        case CsgOp::Intersection:
+          box = everything;
+          for (uint32_t k = 0; k < n.count; ++k) {
+            box.lo = glm::max(box.lo, b[c[k]].lo);
+            box.hi = glm::min(box.hi, b[c[k]].hi);
+          }
+          if (!box.valid()) box = AABB{};
+          break;
+        case CsgOp::Difference:
+          if (n.count > 0) box = b[c[0]];
+          break;
+      }
+    }
+    if (n.inverse) box = everything;
+    b[i] = box;
+  }
+  return b.empty() ? AABB{} : b.back();
+}
+
+namespace {
+
+struct Event {
+  double t;
+  uint32_t leaf;
+};
+
+}  // namespace
+
+bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, const Interval& ray_t, double tie_abs,
+                       double tie_rel, CsgSurface& out) {
+  const uint32_t nl = tree.leaf_count;
+  const std::size_t nn = tree.nodes.size();
+  if (nl == 0 || nl > kMaxCsgLeaves || nn == 0 || nn > kMaxCsgNodes) return false;
+  Event ev[kMaxCsgLeaves * kMaxLeafCrossings];
+  uint8_t leaf_in[kMaxCsgLeaves];
+  int ne = 0;
+  for (uint32_t l = 0; l < nl; ++l) {
+    leaf_in[l] = leaves[l].inside_at_start ? 1 : 0;
+    for (int k = 0; k < leaves[l].count && k < kMaxLeafCrossings; ++k) ev[ne++] = Event{leaves[l].t[k], l};
+  }
+  if (ne == 0) return false;  // the state never changes along the line: no surface
+  std::sort(ev, ev + ne, [](const Event& a, const Event& b) { return a.t < b.t || (a.t == b.t && a.leaf < b.leaf); });
+
+  uint8_t before[kMaxCsgNodes], after[kMaxCsgNodes], visible[kMaxCsgNodes];
+  tree.evaluate(leaf_in, before);
+  int i = 0;
+  while (i < ne) {
+    const double t0 = ev[i].t;
+    if (t0 >= ray_t.max) return false;  // later batches are all beyond the range
+    const double tie = tie_abs + tie_rel * std::abs(t0);
+    int j = i;
+    while (j < ne && ev[j].t - t0 <= tie) {
+      leaf_in[ev[j].leaf] ^= 1;
+      ++j;
+    }
+    tree.evaluate(leaf_in, after);
+    // Which nodes show a surface in this batch (post-order, so children first).
+    for (std::size_t k = 0; k < nn; ++k) {
+      const CsgNode& n = tree.nodes[k];
+      bool v = before[k] != after[k];
+      if (!n.leaf && n.op == CsgOp::Union)
+        for (uint32_t c = 0; c < n.count && !v; ++c) v = visible[tree.children[n.first + c]] != 0;
+      visible[k] = v;
+    }
+    if (visible[nn - 1]) {
+      // Down to the leaf: the first child that shows; the orientation from the highest node
+      // on the way whose state changes (a union's inner surface: the child's own).
+      uint32_t k = static_cast<uint32_t>(nn - 1);
+      bool oriented = false, entering = false;
+      while (true) {
+        if (!oriented && before[k] != after[k]) {
+          oriented = true;
+          entering = after[k] != 0;
+        }
+        const CsgNode& n = tree.nodes[k];
+        if (n.leaf) break;
+        uint32_t next = k;
+        for (uint32_t c = 0; c < n.count; ++c)
+          if (visible[tree.children[n.first + c]]) {
+            next = tree.children[n.first + c];
+            break;
+          }
+        if (next == k) break;  // cannot happen: a changed operation has a changed child
+        k = next;
+      }
+      const CsgNode& leaf = tree.nodes[k];
+      if (leaf.leaf) {
+        double t = t0;
+        for (int e = i; e < j; ++e)
+          if (ev[e].leaf == leaf.first) {
+            t = ev[e].t;
+            break;
+          }
+        if (ray_t.surrounds(t)) {
+          out.t = t;
+          out.leaf = leaf.first;
+          out.entering = entering;
+          return true;
+        }
+      }
+    }
+    std::copy(after, after + nn, before);
+    i = j;
+  }
+  return false;
+}
+
+}  // namespace rts::render

@@ -1,0 +1,78 @@
+// Where the whole line of a ray crosses one CSG leaf's surface (render/geometry/csg/csg_tree.hpp),
+// and the full hit at a chosen crossing, for each closed primitive kind.
+//
+// Convex solids (sphere, box, capped cylinder and cone) are crossed at most twice: their own
+// intersect() finds the entry over the whole line, then the exit beyond it. One crossing alone
+// is a graze along an edge or a tangent: no crossing. A plane is a half-space (inside:
+// dot(normal, p) < offset, the side away from its normal, as in POV-Ray).
+#pragma once
+
+#include "render/geometry/csg/csg_tree.hpp"
+#include "render/geometry/shapes/box.hpp"
+#include "render/geometry/shapes/cone.hpp"
+#include "render/geometry/shapes/cylinder.hpp"
+#include "render/geometry/shapes/plane.hpp"
+#include "render/geometry/shapes/sphere.hpp"
+#include "render/geometry/shapes/torus.hpp"
+
+namespace rts::render {
+
+template <class Convex>
+void convex_crossings(const Convex& shape, const Ray& ray, CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  out.count = 0;
+  SurfaceHit h;
+  if (!intersect(shape, ray, Interval::universe(), h)) return;
+  double first = h.t, last = h.t;
+  // A convex surface is crossed twice; a third step only guards against an edge reported twice.
+  for (int step = 0; step < 2 && intersect(shape, ray, Interval(last, Interval::kInfinity), h); ++step) last = h.t;
+  if (!(last > first)) return;  // a single touch: a graze, not a crossing
+  out.t[0] = first;
+  out.t[1] = last;
+  out.count = 2;
+}
+
+inline void leaf_crossings(const Sphere& s, const Ray& ray, CsgLeafCrossings& out) { convex_crossings(s, ray, out); }
+inline void leaf_crossings(const Box& b, const Ray& ray, CsgLeafCrossings& out) { convex_crossings(b, ray, out); }
+inline void leaf_crossings(const Cylinder& c, const Ray& ray, CsgLeafCrossings& out) { convex_crossings(c, ray, out); }
+inline void leaf_crossings(const Cone& c, const Ray& ray, CsgLeafCrossings& out) { convex_crossings(c, ray, out); }
+
+inline void leaf_crossings(const Plane& p, const Ray& ray, CsgLeafCrossings& out) {
+  out.count = 0;
+  double len = glm::length(p.normal);
+  if (!(len > tol::kTinyLength)) {
+    out.inside_at_start = false;
+    return;
+  }
+  Vec3 n = p.normal / len;
+  double along = glm::dot(n, ray.direction);
+  SurfaceHit h;
+  if (intersect(p, ray, Interval::universe(), h)) {
+    out.inside_at_start = along > 0.0;  // far back along the ray, it is below the plane
+    out.t[0] = h.t;
+    out.count = 1;
+  } else {
+    out.inside_at_start = glm::dot(n, ray.origin) < p.offset / len;  // parallel: one side throughout
+  }
+}
+
+inline void leaf_crossings(const Torus& tor, const Ray& ray, CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  out.count = torus_crossings(tor, ray, out.t);
+}
+
+// The hit at crossing `k` of `c` (computed by leaf_crossings for the same ray), in the shape's
+// object space: the shape's own intersect() between the neighbouring crossings.
+template <class Shape>
+bool leaf_hit(const Shape& shape, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  double lo = k > 0 ? c.t[k - 1] : -Interval::kInfinity;
+  double hi = k + 1 < c.count ? c.t[k + 1] : Interval::kInfinity;
+  return intersect(shape, ray, Interval(lo, hi), hit);
+}
+
+inline bool leaf_hit(const Torus& tor, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  torus_hit_at(tor, ray, c.t[k], hit);
+  return true;
+}
+
+}  // namespace rts::render
