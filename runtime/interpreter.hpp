@@ -138,7 +138,6 @@ class Interpreter {
   // a + b for two lists or two strings, counted against the step and memory budgets;
   // appends in place when `a` holds the only reference to its list or string.
   Value concat(Value a, const Value& b, SourceLoc loc);
-  const render::ReadPolicy& read_policy() const { return read_policy_; }
 
   // scopes
   void push_scope() { scopes_.push_back(bindings_.size()); }

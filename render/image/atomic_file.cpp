@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "render/image/temp_file_guard.hpp"
 #include "render/scene/source_ref.hpp"
 
 namespace rts::render {
@@ -58,6 +59,7 @@ void write_file_atomically(const std::string& path, const std::vector<unsigned c
 
   static thread_local std::mt19937_64 rng{std::random_device{}()};
   const std::string temp = fmt::format("{}.tmp-{}-{:016x}", path, static_cast<long>(getpid()), rng());
+  TempFileGuard guard(temp);  // Ctrl-C or kill while writing removes the temp file
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) {
     const int err = errno;

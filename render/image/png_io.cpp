@@ -1,13 +1,11 @@
-// PNG reading with libpng; atomic PNG writing with libdeflate (see encode_png).
+// PNG reading with libpng; PNG writing with libdeflate (see encode_png), to a file through
+// write_file_atomically.
 //
 // libpng reports errors by longjmp-ing out of its own (C) frames. We never let that jump cross
 // a C++ frame that owns objects with destructors: every setjmp lives in a small function whose
 // locals are trivially destructible, state is kept in caller-owned structs, and the C++
 // exception (RenderError) is thrown only after the libpng call chain has been left.
-#include <fcntl.h>
 #include <png.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -18,7 +16,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -29,7 +26,7 @@
 
 #include "render/image/image.hpp"
 #include "render/scene/resource_limits.hpp"
-#include "render/image/temp_file_guard.hpp"
+#include "render/image/atomic_file.hpp"
 
 namespace rts::render {
 
@@ -159,7 +156,8 @@ std::vector<unsigned char> pack_rows(const Image& image, int bits, Encoding enco
 
 // Caller-owned state that libpng callbacks fill in; survives the longjmp.
 struct PngIo {
-  std::FILE* file = nullptr;
+  std::FILE* file = nullptr;             // reading
+  std::vector<unsigned char>* out = nullptr;  // writing: the encoded file, appended to
   char message[256] = {};
   int saved_errno = 0;      // errno of the failing read/write, 0 if none
   bool truncated = false;   // reading: the file ended early
@@ -195,15 +193,15 @@ std::string io_failure(const PngIo& io) {
 
 // ---- writing ------------------------------------------------------------------------------
 
-// Encodes `rows` to io.file as a PNG written chunk by chunk here, compressed with libdeflate.
+// Encodes `rows` into *io.out as a PNG written chunk by chunk here, compressed with libdeflate.
 // Profile finding (callgrind, 1920x1080): zlib's deflate inside libpng was ~80% of writing
 // (0.19 s at level 3); libdeflate compresses the same filtered rows several times faster in
 // one whole-buffer call. SUB filter on every row (rendered images are smooth, so it loses
 // little to adaptive filtering). Returns false (with io filled in) on failure.
 bool write_bytes(PngIo& io, const void* data, std::size_t length) {
-  if (length == 0 || std::fwrite(data, 1, length, io.file) == length) return true;
-  io.saved_errno = errno != 0 ? errno : EIO;
-  return false;
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  if (length > 0) io.out->insert(io.out->end(), bytes, bytes + length);
+  return true;
 }
 
 void put_u32(unsigned char* p, uint32_t v) {
@@ -278,57 +276,8 @@ bool encode_png(PngIo& io, const unsigned char* rows, int width, int height, int
   return write_chunk(io, "IEND", nullptr, 0);
 }
 
-std::string directory_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
-}
-
-// `path.tmp-<pid>-<random>`: unique per process and call, in the target's directory so that
-// rename() is atomic (same file system).
-std::string temp_name_for(const std::string& path) {
-  static thread_local std::mt19937_64 rng{std::random_device{}()};
-  return fmt::format("{}.tmp-{}-{:016x}", path, static_cast<long>(getpid()), rng());
-}
-
 [[noreturn]] void fail_write(const std::string& path, const std::string& why) {
   throw RenderError({}, fmt::format("cannot write '{}': {}", path, why));
-}
-
-// Opens a fresh temp file for writing; explains a missing or read-only directory.
-std::FILE* open_temp(const std::string& path, const std::string& temp) {
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) {
-    const int err = errno;
-    const std::string dir = directory_of(path);
-    if (err == ENOENT) fail_write(path, fmt::format("directory '{}' does not exist", dir));
-    if (err == EACCES || err == EROFS || err == EPERM) {
-      fail_write(path, fmt::format("directory '{}' is not writable ({})", dir, std::strerror(err)));
-    }
-    if (err == ENOTDIR) fail_write(path, fmt::format("'{}' is not a directory", dir));
-    fail_write(path, std::strerror(err));
-  }
-  std::FILE* file = ::fdopen(fd, "wb");
-  if (file == nullptr) {
-    const int err = errno;
-    ::close(fd);
-    ::unlink(temp.c_str());
-    fail_write(path, std::strerror(err));
-  }
-  return file;
-}
-
-// Encodes straight into an existing device or pipe (no temp file, no rename).
-void write_in_place(const std::string& path, const std::vector<unsigned char>& rows, int width,
-                    int height, int bits, Encoding encoding) {
-  PngIo io;
-  io.file = std::fopen(path.c_str(), "wb");
-  if (io.file == nullptr) fail_write(path, std::strerror(errno));
-  const bool encoded = encode_png(io, rows.data(), width, height, bits, encoding);
-  const bool flushed = encoded && std::fflush(io.file) == 0;
-  if (encoded && !flushed) io.saved_errno = errno;
-  std::fclose(io.file);
-  if (!encoded || !flushed) fail_write(path, io_failure(io));
 }
 
 // ---- reading ------------------------------------------------------------------------------
@@ -424,38 +373,13 @@ void write_png(const std::string& path, const Image& image, int bits, Encoding e
                                  image.height, image.rgb.size()));
   }
   const std::vector<unsigned char> rows = pack_rows(image, bits, encoding);
-
-  // Devices and pipes (/dev/null, /dev/stdout, a FIFO) are written in place: renaming over
-  // them would replace the device node with a file. Other non-regular targets are refused.
-  struct stat target {};
-  if (::stat(path.c_str(), &target) == 0 && !S_ISREG(target.st_mode)) {
-    if (S_ISDIR(target.st_mode)) fail_write(path, "it is a directory");
-    if (!S_ISCHR(target.st_mode) && !S_ISFIFO(target.st_mode)) {
-      fail_write(path, "not a regular file, device or pipe");
-    }
-    write_in_place(path, rows, image.width, image.height, bits, encoding);
-    return;
-  }
-
-  const std::string temp = temp_name_for(path);
-  TempFileGuard guard(temp);  // Ctrl-C or kill while writing removes the temp file
+  // Encoded in memory (compressed, smaller than the rows), then written like every other file
+  // rts writes: atomically, with the temp file removed on Ctrl-C (write_file_atomically).
+  std::vector<unsigned char> file;
   PngIo io;
-  io.file = open_temp(path, temp);
-  const bool encoded = encode_png(io, rows.data(), image.width, image.height, bits, encoding);
-  // fflush + fsync so that a crash after rename() cannot leave an empty file behind.
-  bool flushed = encoded && std::fflush(io.file) == 0 && ::fsync(::fileno(io.file)) == 0;
-  if (encoded && !flushed) io.saved_errno = errno;
-  const bool closed = std::fclose(io.file) == 0;
-  if (flushed && !closed) io.saved_errno = errno;
-  if (!encoded || !flushed || !closed) {
-    ::unlink(temp.c_str());
-    fail_write(path, io_failure(io));
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(temp.c_str());
-    fail_write(path, std::strerror(err));
-  }
+  io.out = &file;
+  if (!encode_png(io, rows.data(), image.width, image.height, bits, encoding)) fail_write(path, io_failure(io));
+  write_file_atomically(path, file);
 }
 
 RenderError image_over_memory(const std::string& path, SourceRef where, long long width, long long height,

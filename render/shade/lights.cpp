@@ -111,11 +111,4 @@ LightSample sample_light(const CompiledLight& l, const Vec3& point, glm::dvec2 o
   return {};
 }
 
-LightSample sample_light(const CompiledLight& l, const Vec3& point, int index, glm::dvec2 jitter,
-                         uint32_t perm_seed) {
-  glm::dvec2 u = stratified_2d(static_cast<uint32_t>(index), static_cast<uint32_t>(l.samples),
-                               l.strata_side, jitter, perm_seed);
-  return sample_light(l, point, u);
-}
-
 }  // namespace rts::render

@@ -48,11 +48,6 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
 // across u and v; ignored by the others).
 LightSample sample_light(const CompiledLight& light, const Vec3& point, glm::dvec2 on_light);
 
-// Sample `index` of light.samples: `jitter` in [0,1)^2 places it within its stratum;
-// `perm_seed` pairs strata when samples is not a square.
-LightSample sample_light(const CompiledLight& light, const Vec3& point, int index,
-                         glm::dvec2 jitter, uint32_t perm_seed);
-
 // A spot light's smooth falloff towards the unit `light_to_point`: 1 inside the inner cone, 0
 // outside the outer one, smoothstep between.
 double spot_factor(const CompiledLight& light, const Vec3& light_to_point);

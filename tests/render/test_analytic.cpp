@@ -131,13 +131,13 @@ TEST_CASE("glass slab shifts a ray laterally by t sin(theta - theta') / cos(thet
     Tracer tracer(s);
     WorldHit in;
     REQUIRE(tracer.world->intersect(Ray{origin, dir}, Interval::positive(), in));
-    Vec3 inside;
+    Vec3 inside(0.0);
     REQUIRE(refract(dir, in.normal, 1.0 / ior, inside));
     Ray r2{offset_ray_origin(in.point, in.normal, inside, in.error), inside};
     WorldHit out;
     REQUIRE(tracer.world->intersect(r2, Interval::positive(), out));
     CHECK(out.point.y == Approx(-thickness));
-    Vec3 outside;
+    Vec3 outside(0.0);
     REQUIRE(refract(inside, -out.normal, ior, outside));  // leaving: normal faces the ray
     CHECK(glm::dot(outside, dir) == Approx(1.0));       // parallel to the incident ray
 

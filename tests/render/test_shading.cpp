@@ -12,6 +12,16 @@
 
 using namespace rts::render;
 
+namespace {
+// Sample `index` of light.samples, as the integrator draws it: `jitter` in [0,1)^2 places it
+// within its stratum; `perm_seed` pairs strata when samples is not a square.
+LightSample sample_light(const CompiledLight& l, const Vec3& point, int index, glm::dvec2 jitter, uint32_t perm_seed) {
+  glm::dvec2 u = stratified_2d(static_cast<uint32_t>(index), static_cast<uint32_t>(l.samples), l.strata_side, jitter,
+                               perm_seed);
+  return rts::render::sample_light(l, point, u);
+}
+}  // namespace
+
 TEST_CASE("refract obeys Snell's law", "[shading]") {
   double theta = 30.0 * std::numbers::pi / 180.0;
   Vec3 incident(std::sin(theta), -std::cos(theta), 0);
