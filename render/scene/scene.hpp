@@ -137,8 +137,10 @@ struct Quad     { Vec3 corner{-0.5, -0.5, 0}, edge_u{1, 0, 0}, edge_v{0, 1, 0}; 
 // In the x-z plane around y, centred at the origin (POV-Ray's torus): ring radius `major`,
 // tube radius `minor`.
 struct Torus    { double major = 1.0, minor = 0.25; };
+// (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) <= 1, POV-Ray's superellipsoid { <e, n> }.
+struct Superellipsoid { double e = 1.0, n = 1.0; };
 
-using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus>;
+using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;

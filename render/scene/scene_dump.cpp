@@ -90,6 +90,9 @@ std::string shape_text(const ShapeDesc& s) {
       return fmt::format("quad corner {} edge_u {} edge_v {}", vec(g.corner), vec(g.edge_u), vec(g.edge_v));
     }
     std::string operator()(const Torus& g) { return fmt::format("torus major {} minor {}", num(g.major), num(g.minor)); }
+    std::string operator()(const Superellipsoid& g) {
+      return fmt::format("superellipsoid e {} n {}", num(g.e), num(g.n));
+    }
   };
   return std::visit(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material)) +
          (s.inverse ? " inverse true" : "");

@@ -49,6 +49,8 @@ T sample(SceneDesc& s) {
     return Quad{Vec3(-1, 0, 1), Vec3(2, 0, 0), Vec3(0, 2, 0)};
   } else if constexpr (std::is_same_v<T, Torus>) {
     return Torus{0.8, 0.3};
+  } else if constexpr (std::is_same_v<T, Superellipsoid>) {
+    return Superellipsoid{0.3, 0.6};
   } else {
     static_assert(kNoSample<T>, "a new shape kind needs a sample in test_error_bounds.cpp");
   }

@@ -13,6 +13,7 @@
 #include "render/geometry/shapes/cylinder.hpp"
 #include "render/geometry/shapes/plane.hpp"
 #include "render/geometry/shapes/sphere.hpp"
+#include "render/geometry/shapes/superellipsoid.hpp"
 #include "render/geometry/shapes/torus.hpp"
 
 namespace rts::render {
@@ -54,6 +55,17 @@ inline void leaf_crossings(const Plane& p, const Ray& ray, CsgLeafCrossings& out
   } else {
     out.inside_at_start = glm::dot(n, ray.origin) < p.offset / len;  // parallel: one side throughout
   }
+}
+
+inline void leaf_crossings(const Superellipsoid& s, const Ray& ray, CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  out.count = superellipsoid_crossings(s, ray, out.t, kMaxLeafCrossings);
+  if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
+}
+
+inline bool leaf_hit(const Superellipsoid& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  superellipsoid_hit_at(s, ray, c.t[k], hit);
+  return true;
 }
 
 inline void leaf_crossings(const Torus& tor, const Ray& ray, CsgLeafCrossings& out) {

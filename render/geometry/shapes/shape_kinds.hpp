@@ -19,6 +19,7 @@
 #include "render/geometry/shapes/quad.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/shapes/sphere.hpp"
+#include "render/geometry/shapes/superellipsoid.hpp"
 #include "render/geometry/shapes/torus.hpp"
 #include "render/geometry/shapes/triangle.hpp"
 
