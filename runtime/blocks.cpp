@@ -365,6 +365,19 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
           out.push_back(x.v.x);
         }
         if (out.size() == items.size()) return out;
+      } else if (items.front().type == Type::List) {
+        // A color map: [[value, color], ...].
+        render::ColorMapParam map;
+        for (const Value& x : items) {
+          const auto* pair = x.type == Type::List ? &as_list(x) : nullptr;
+          if (!pair || pair->size() != 2 || (*pair)[0].type != Type::Number ||
+              ((*pair)[1].type != Type::Color && (*pair)[1].type != Type::Vector))
+            fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: a color map is a list of [number, "
+                                    "color] pairs, e.g. [[0, rgb(1)], [1, rgb(0)]]",
+                                    *p.name, kind));
+          map.entries.push_back({(*pair)[0].v.x, (*pair)[1].v});
+        }
+        return map;
       }
       fail(p.loc,
            fmt::format("property '{}' of {} cannot hold this list: properties take lists of numbers, of vectors or of colors",

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "render/shade/pattern/noise.hpp"
 #include "runtime/interpreter.hpp"
 #include "runtime/ops.hpp"
 
@@ -218,6 +219,26 @@ Value stripes(BuiltinCall& c) { return texture(c, "stripes", {"color1", "color2"
 Value gradient(BuiltinCall& c) { return texture(c, "gradient", {"color1", "color2", "scale", "axis"}); }
 Value image_texture(BuiltinCall& c) { return texture(c, "image_texture", {"file", "mapping"}); }
 
+// The noise family (render/shade/pattern/noise.hpp, the same functions the renderer and
+// compiled pattern functions call): noise(p) in [0, 1], fbm(p, octaves, lambda, omega) in
+// [-1, 1], turbulence(p, octaves, lambda, omega) in [0, 1], cells(p) in [0, 1), worley(p).
+Value noise(BuiltinCall& c) { return finite(c, render::pattern::noise01(vec(c, 0))); }
+Value cells(BuiltinCall& c) { return finite(c, render::pattern::cells(vec(c, 0))); }
+Value worley(BuiltinCall& c) { return finite(c, render::pattern::worley(vec(c, 0))); }
+template <bool Turbulence>
+Value noise_sum(BuiltinCall& c) {
+  const glm::dvec3 p = vec(c, 0);
+  const double octaves = c.argc > 1 ? num(c, 1) : 6.0;
+  if (!(octaves >= 1 && octaves <= render::pattern::kMaxOctaves) || std::floor(octaves) != octaves)
+    c.in.fail(arg_loc(c, 1), fmt::format("the octaves of '{}' must be a whole number from 1 to {}, got {}", c.def.name,
+                                         render::pattern::kMaxOctaves, octaves));
+  const double lambda = c.argc > 2 ? num(c, 2) : 2.0;
+  const double omega = c.argc > 3 ? num(c, 3) : 0.5;
+  const int n = static_cast<int>(octaves);
+  return finite(c, Turbulence ? render::pattern::turbulence(p, n, lambda, omega)
+                              : render::pattern::fbm(p, n, lambda, omega));
+}
+
 // random(seed) makes a stream; rand(r) draws from it in [0, 1), rand(r, lo, hi) in [lo, hi).
 Value random(BuiltinCall& c) {
   // Seeds are whole numbers a double holds exactly, so the same text is the same seed.
@@ -286,6 +307,11 @@ const std::vector<Builtin>& builtin_table() {
       {"stripes", 2, 4, stripes},
       {"gradient", 2, 4, gradient},
       {"image_texture", 1, 2, image_texture},
+      {"noise", 1, 1, noise},
+      {"fbm", 1, 4, noise_sum<false>},
+      {"turbulence", 1, 4, noise_sum<true>},
+      {"cells", 1, 1, cells},
+      {"worley", 1, 1, worley},
       {"random", 1, 1, random},
       {"rand", 1, 3, rand},
       {"identity", 0, 0, identity},

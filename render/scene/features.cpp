@@ -70,6 +70,14 @@ bool any_texture(const FeatureProbe& p, bool image_only) {
   return found;
 }
 
+bool any_pattern(const FeatureProbe& p) {
+  bool found = false;
+  for_each_texture(*p.material, [&](TextureId t) {
+    if (t < p.scene.textures.size() && p.scene.textures[t].kind == TextureKind::Pattern) found = true;
+  });
+  return found;
+}
+
 // The leave-out table (docs/leave-out.md describes each row). A channel at zero strength is
 // unused; a light that sends nothing is not looked at.
 constexpr FeatureRule kRules[] = {
@@ -89,6 +97,7 @@ constexpr FeatureRule kRules[] = {
     {Feature::Texture, "texture", Scope::Shape, [](const FeatureProbe& p) { return any_texture(p, false); },
      trace_flags::kTexture},
     {Feature::ImageTexture, "image_texture", Scope::Shape, [](const FeatureProbe& p) { return any_texture(p, true); }},
+    {Feature::Pattern, "pattern", Scope::Shape, [](const FeatureProbe& p) { return any_pattern(p); }},
     {Feature::Emission, "emission", Scope::Shape,
      [](const FeatureProbe& p) { return nonzero(p.material->emission) || p.material->emission_texture != kNoId; }},
     {Feature::Specular, "specular", Scope::Shape,

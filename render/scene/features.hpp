@@ -21,7 +21,7 @@ enum class Feature : uint8_t {
   // name is its block kind's): checked below
   Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad, Torus, Superellipsoid,
   // material channels
-  Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Emission, Specular, Ambient,
+  Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Pattern, Emission, Specular, Ambient,
   // lights
   PointLight, SpotLight, DirectionalLight, AreaLight, Shadows, TransmissiveShadows, AreaSampling,
   // camera and image

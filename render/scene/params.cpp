@@ -82,6 +82,10 @@ const char* param_type_name(const ParamValue& v) {
       return "list of vectors";
     case 8:
       return "list of numbers";
+    case 9:
+      return "color map";
+    case 10:
+      return "function";
   }
   return "value";
 }

@@ -9,18 +9,24 @@
 #include <variant>
 #include <vector>
 
+#include "render/scene/compiled_function.hpp"
 #include "render/scene/scene.hpp"
 
 namespace rts::render {
 
 struct TextureRef  { TextureId id = kNoId; };
 struct MaterialRef { MaterialId id = kNoId; };
+// A pattern's color map: `color_map = [[0, rgb(1)], [0.5, rgb(0.2)], ...]` (value, color) pairs.
+struct ColorMapParam { std::vector<ColorMapEntry> entries; };
+// A function of a point, compiled once by the runtime (`pattern { function = f }`, isosurfaces).
+struct FunctionRef { std::shared_ptr<const CompiledFunction> function; };
 
 // The value kinds a block property can hold. The runtime converts its own values:
 // number → double, bool, string, vector → Vec3, color → Color, list of vectors → vector<Vec3>,
-// list of numbers → vector<double>, a texture value → TextureRef, a material → MaterialRef.
+// list of numbers → vector<double>, a texture value → TextureRef, a material → MaterialRef,
+// a list of [number, color] pairs → ColorMapParam, a macro of one point → FunctionRef.
 using ParamValue = std::variant<double, bool, std::string, Vec3, Color, TextureRef, MaterialRef,
-                                std::vector<Vec3>, std::vector<double>>;
+                                std::vector<Vec3>, std::vector<double>, ColorMapParam, FunctionRef>;
 
 // "number", "vector", ... for messages.
 const char* param_type_name(const ParamValue& v);

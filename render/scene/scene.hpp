@@ -22,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/scene/pattern_desc.hpp"
 #include "render/sample/sampler.hpp"
 #include "render/scene/source_ref.hpp"
 
@@ -48,7 +49,8 @@ inline constexpr uint32_t kNoId = std::numeric_limits<uint32_t>::max();
 // LatLong and CubeMap are environment maps: looked up by direction (the background, rays that
 // leave the scene, image-based ambient light); on a surface they use the direction from the
 // texture-space origin to the point.
-enum class TextureKind : uint8_t { Checker, Stripes, Gradient, Image, LatLong, CubeMap };
+// Pattern: a procedural pattern (marble, wood, ..., a user function) with a color map.
+enum class TextureKind : uint8_t { Checker, Stripes, Gradient, Image, LatLong, CubeMap, Pattern };
 enum class TextureFilter : uint8_t { Bilinear, Nearest };
 struct TextureDesc {
   TextureKind kind = TextureKind::Checker;
@@ -63,6 +65,7 @@ struct TextureDesc {
   TextureFilter filter = TextureFilter::Bilinear;
   // CubeMap: the faces' files in the order +x, -x, +y, -y, +z, -z, resolved like image_path.
   std::vector<std::string> face_paths;
+  PatternDesc pattern;       // Pattern: which one, its turbulence, wave and color map
   Mat4 transform{1.0};       // object space → texture space is inverse(transform)
   SourceRef loc;
 };

@@ -13,6 +13,7 @@
 #include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/shade/lights.hpp"
 #include "render/scene/obj_loader.hpp"
+#include "render/scene/pattern_builder.hpp"
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
@@ -35,6 +36,13 @@ constexpr KindInfo kKinds[] = {
     {"image_texture", BlockCategory::Texture},
     {"latlong_map", BlockCategory::Texture},
     {"cube_map", BlockCategory::Texture},
+    // pattern textures (render/scene/pattern_builder.cpp)
+    {"bozo", BlockCategory::Texture}, {"spotted", BlockCategory::Texture}, {"granite", BlockCategory::Texture},
+    {"marble", BlockCategory::Texture}, {"wood", BlockCategory::Texture}, {"agate", BlockCategory::Texture},
+    {"onion", BlockCategory::Texture}, {"leopard", BlockCategory::Texture}, {"wrinkles", BlockCategory::Texture},
+    {"crackle", BlockCategory::Texture}, {"cells", BlockCategory::Texture}, {"bumps", BlockCategory::Texture},
+    {"dents", BlockCategory::Texture}, {"ripples", BlockCategory::Texture}, {"waves", BlockCategory::Texture},
+    {"pattern", BlockCategory::Texture},
     {"", BlockCategory::Shape},  // here: every shape kind (kShapeInfos), in ShapeGeometry's order
     {"point_light", BlockCategory::Light},
     {"spot_light", BlockCategory::Light},
@@ -345,6 +353,8 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
           fmt::format("property 'mapping' of image_texture must be \"uv\", \"planar\" or \"spherical\", got \"{}\"",
                       t.mapping));
     ps.check_unused(kImageTextureNames);
+  } else if (is_pattern_kind(kind)) {
+    build_pattern_texture(kind, ps, t);
   } else {
     if (kind == "checker")
       t.kind = TextureKind::Checker;

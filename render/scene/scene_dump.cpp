@@ -55,6 +55,8 @@ const char* texture_kind(TextureKind k) {
       return "latlong_map";
     case TextureKind::CubeMap:
       return "cube_map";
+    case TextureKind::Pattern:
+      return "pattern";
   }
   return "?";
 }
@@ -142,6 +144,9 @@ void SceneDesc::dump(std::ostream& out) const {
       out << fmt::format(" file {}", base(t.image_path));
     else if (t.kind == TextureKind::CubeMap)
       for (const std::string& f : t.face_paths) out << ' ' << base(f);
+    else if (t.kind == TextureKind::Pattern)
+      out << fmt::format(" {} color_map {} turbulence {}{}", static_cast<int>(t.pattern.kind), t.pattern.color_map.size(),
+                         vec(t.pattern.turbulence), t.pattern.function ? " function" : "");
     else
       out << fmt::format(" color1 {} color2 {} scale {} axis {}", col(t.color1), col(t.color2), num(t.scale), t.axis);
     // Newer options print only when not their defaults, so older dumps stay as they were.

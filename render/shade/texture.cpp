@@ -23,6 +23,7 @@
 #include <fmt/format.h>
 
 #include "render/shade/texture.hpp"
+#include "render/shade/pattern/patterns.hpp"
 
 namespace rts::render {
 
@@ -211,6 +212,10 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
     case TextureKind::Checker: return checker(desc_, q);
     case TextureKind::Stripes: return stripes(desc_, q);
     case TextureKind::Gradient: return gradient(desc_, q);
+    case TextureKind::Pattern: {
+      const glm::dvec3 c = pattern::pattern_color(desc_.pattern, q);
+      return {c.x, c.y, c.z};
+    }
     case TextureKind::LatLong:
     case TextureKind::CubeMap: return lookup_direction(q);
     case TextureKind::Image: break;

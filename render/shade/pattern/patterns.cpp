@@ -1,0 +1,140 @@
+// POV-Ray's patterns: see patterns.hpp for each one's meaning.
+#include "render/shade/pattern/patterns.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/scene/compiled_function.hpp"
+#include "render/shade/pattern/noise.hpp"
+
+namespace rts::render::pattern {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// POV-Ray's scalar Turbulence(): noise01(p) + sum_{i>=1} omega^i * noise01(lambda^i p),
+// unnormalised (about 1 on average for omega 0.5), which marble and agate add to their index.
+double pov_turbulence(const glm::dvec3& p, int octaves, double lambda, double omega) {
+  octaves = std::clamp(octaves, 1, kMaxOctaves);
+  double value = noise01(p), l = lambda, o = omega;
+  for (int i = 2; i <= octaves; ++i) {
+    value += o * noise01(p * l);
+    l *= lambda;
+    o *= omega;
+  }
+  return value;
+}
+
+double frac(double v) {
+  if (!std::isfinite(v)) return 0.0;
+  const double f = v - std::floor(v);
+  return f >= 1.0 ? 0.0 : f;
+}
+
+// Ten wave centres for ripples and waves, fixed points within the unit ball (POV-Ray draws
+// its ten from its noise table; any spread-out set gives the same look).
+constexpr glm::dvec3 kWaveSources[10] = {
+    {0.42, -0.21, 0.33},  {-0.37, 0.48, -0.12}, {0.05, 0.31, 0.57},  {-0.55, -0.36, 0.19}, {0.29, 0.52, -0.44},
+    {-0.18, -0.61, -0.27}, {0.63, 0.08, -0.16},  {-0.46, 0.13, 0.51}, {0.14, -0.44, -0.58}, {-0.07, 0.66, 0.24}};
+
+double ripples(const glm::dvec3& p, double frequency, double phase, bool fade) {
+  double sum = 0.0, weights = 0.0;
+  for (const glm::dvec3& c : kWaveSources) {
+    const double r = glm::length(p - c);
+    const double w = fade ? 1.0 / (1.0 + r) : 1.0;
+    sum += w * std::sin(kTwoPi * (r * frequency + phase));
+    weights += w;
+  }
+  return 0.5 + 0.5 * sum / weights;
+}
+
+}  // namespace
+
+double raw_value(const PatternDesc& d, const glm::dvec3& q) {
+  glm::dvec3 p = q;
+  const bool warp = d.turbulence != glm::dvec3(0.0) && d.kind != PatternKind::Marble &&
+                    d.kind != PatternKind::Agate;
+  if (warp) p += d.turbulence * vector_turbulence(p, d.octaves, d.lambda, d.omega);
+  switch (d.kind) {
+    case PatternKind::Bozo:
+    case PatternKind::Spotted:
+    case PatternKind::Bumps: return noise01(p);
+    case PatternKind::Dents: {
+      const double n = noise01(p);
+      return n * n * n;
+    }
+    case PatternKind::Granite: {
+      double value = 0.0, freq = 1.0;
+      // POV-Ray sums |0.5 - Noise|; its Noise spreads about twice as wide as noise01, so the
+      // signed noise (|gradient_noise| = 2 |0.5 - noise01|) gives granite POV-Ray's contrast.
+      for (int i = 0; i < 6; ++i, freq *= 2.0) value += std::fabs(gradient_noise(p * (4.0 * freq))) / freq;
+      return value;
+    }
+    case PatternKind::Marble:
+      return p.x + d.turbulence.x * pov_turbulence(p, d.octaves, d.lambda, d.omega);
+    case PatternKind::Wood: return std::sqrt(p.x * p.x + p.y * p.y);
+    case PatternKind::Agate: {
+      const double t = d.agate_turb * pov_turbulence(p, d.octaves, d.lambda, d.omega);
+      const double v = 0.5 * (std::sin(kTwoPi * (1.3 * t + 1.1 * p.z)) + 1.0);
+      return std::pow(std::clamp(v, 0.0, 1.0), 0.77);
+    }
+    case PatternKind::Onion: return glm::length(p);
+    case PatternKind::Leopard: {
+      const double t = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
+      return t * t;
+    }
+    case PatternKind::Wrinkles: return std::min(1.0, 0.5 * pov_turbulence(p, 10, 2.0, 0.5));
+    case PatternKind::Crackle: {
+      double f1, f2;
+      worley2(p, f1, f2);
+      return std::min(1.0, f2 - f1);
+    }
+    case PatternKind::Cells: return cells(p);
+    case PatternKind::Ripples: return ripples(p, d.frequency, d.phase, false);
+    case PatternKind::Waves: return ripples(p, d.frequency, d.phase, true);
+    case PatternKind::Function: return d.function ? d.function->eval(p) : 0.0;
+  }
+  return 0.0;
+}
+
+double wave(const PatternDesc& d, double value) {
+  const bool inside = d.kind == PatternKind::Ripples || d.kind == PatternKind::Waves;
+  const double v = inside ? value : value * d.frequency + d.phase;
+  if (!std::isfinite(v)) return 0.0;
+  switch (d.wave) {
+    case WaveKind::Ramp: return v >= 0.0 && v <= 1.0 ? v : frac(v);
+    case WaveKind::Triangle: {
+      const double f = frac(v);
+      return f <= 0.5 ? 2.0 * f : 2.0 - 2.0 * f;
+    }
+    case WaveKind::Sine: return 0.5 * (std::sin(kTwoPi * v) + 1.0);
+    case WaveKind::Scallop: return std::fabs(std::sin(std::numbers::pi * v));
+    case WaveKind::Cubic: {
+      const double f = v >= 0.0 && v <= 1.0 ? v : frac(v);
+      return f * f * (3.0 - 2.0 * f);
+    }
+    case WaveKind::Clamp: return std::clamp(v, 0.0, 1.0);
+  }
+  return 0.0;
+}
+
+glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t) {
+  if (map.empty()) return glm::dvec3(t);
+  if (!(t > map.front().value)) return map.front().color;   // also NaN
+  if (t >= map.back().value) return map.back().color;
+  std::size_t i = 1;
+  while (map[i].value < t) ++i;   // map[i-1].value < t <= map[i].value
+  const ColorMapEntry& a = map[i - 1];
+  const ColorMapEntry& b = map[i];
+  const double span = b.value - a.value;
+  if (!(span > 0.0)) return b.color;
+  return a.color + (b.color - a.color) * ((t - a.value) / span);
+}
+
+glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q) {
+  return color_map_lookup(d.color_map, wave(d, raw_value(d, q)));
+}
+
+}  // namespace rts::render::pattern

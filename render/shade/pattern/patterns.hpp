@@ -1,0 +1,36 @@
+// POV-Ray's patterns as functions of a texture-space point: each gives a value (mostly in
+// [0, 1]) that the wave function and the color map turn into a color. The meanings follow
+// POV-Ray 3.7 (its pattern.cpp), with rts's own noise (render/shade/pattern/noise.hpp), so the
+// look matches POV-Ray's by eye, not bit for bit:
+//  - bozo, spotted, bumps: noise01(p).                      dents: noise01(p)^3.
+//  - granite: sum over 6 octaves of |gradient_noise(4 * 2^i * p)| / 2^i (POV-Ray's
+//            |0.5 - Noise| at POV-Ray's contrast).
+//  - marble: x + turbulence_x * T(p), triangle wave (T: POV-Ray's scalar turbulence, an
+//            unnormalised sum of noise01 over the octaves).
+//  - wood:   sqrt(x^2 + y^2) (cylinders around z) after the turbulence warp, triangle wave.
+//  - agate:  0.5 * (sin(2 pi (1.3 * agate_turb * T(p) + 1.1 z)) + 1)^0.77.
+//  - onion:  |p| (spheres around the origin).       leopard: ((sin x + sin y + sin z) / 3)^2.
+//  - wrinkles: half of T(p) over ten octaves (lambda 2, omega 0.5), in [0, 1].
+//  - crackle: F2 - F1 of Worley noise (0 on the cell borders).   cells: one value per unit cube.
+//  - ripples, waves: concentric sine waves from ten fixed centres near the origin, `frequency`
+//            rings per unit and `phase` (waves fade with the distance, as POV-Ray's).
+//  - function: a user function f(x, y, z) (render/scene/compiled_function.hpp).
+// Every pattern but marble, wood and agate applies a non-zero `turbulence` as a warp
+// p += turbulence * vector_turbulence(p) first (POV-Ray's classic turbulence).
+#pragma once
+
+#include "render/scene/pattern_desc.hpp"
+
+namespace rts::render::pattern {
+
+// The pattern's value at texture-space point q, before the wave function.
+double raw_value(const PatternDesc& d, const glm::dvec3& q);
+// The wave function applied to value * frequency + phase (ripples and waves take frequency
+// and phase inside the pattern, so theirs is the identity here).
+double wave(const PatternDesc& d, double value);
+// The color map's color at index t (entries ascending; clamped outside).
+glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t);
+// All three: the color of the pattern at q.
+glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q);
+
+}  // namespace rts::render::pattern

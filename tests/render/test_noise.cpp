@@ -1,0 +1,309 @@
+// Noise and procedural patterns (render/shade/pattern/): ranges, mean, continuity, the
+// gradient bound isosurfaces rely on, determinism (exact values, any thread count), POV-Ray's
+// meanings of the patterns, the wave functions, color-map lookups, and compiled functions.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+#include <catch2/catch.hpp>
+
+#include "render/renderer.hpp"
+#include "render/scene/compiled_function.hpp"
+#include "render/shade/pattern/noise.hpp"
+#include "render/shade/pattern/patterns.hpp"
+#include "render/shade/texture.hpp"
+#include "scene_fixture.hpp"
+
+using namespace rts::render;
+using namespace rts::render::test;
+namespace pat = rts::render::pattern;
+
+namespace {
+
+// A fixed, platform-independent sequence of points (splitmix64), spread over [-50, 50]^3.
+struct Points {
+  uint64_t state = 12345;
+  double unit() {
+    uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+  }
+  Vec3 next(double half = 50.0) { return {(unit() * 2 - 1) * half, (unit() * 2 - 1) * half, (unit() * 2 - 1) * half}; }
+};
+
+constexpr int kSamples = 100'000;
+
+
+
+}  // namespace
+
+TEST_CASE("noise functions stay in their documented ranges", "[noise]") {
+  Points pts;
+  double lo = 1, hi = -1;
+  for (int i = 0; i < kSamples; ++i) {
+    const Vec3 p = pts.next();
+    const double n = pat::gradient_noise(p);
+    lo = std::min(lo, n);
+    hi = std::max(hi, n);
+    REQUIRE(n >= -1.0);
+    REQUIRE(n <= 1.0);
+    const double n01 = pat::noise01(p);
+    REQUIRE((n01 >= 0.0 && n01 <= 1.0));
+    const double f = pat::fbm(p, 6, 2.0, 0.5);
+    REQUIRE((f >= -1.0 && f <= 1.0));
+    const double t = pat::turbulence(p, 6, 2.0, 0.5);
+    REQUIRE((t >= 0.0 && t <= 1.0));
+    const double c = pat::cells(p);
+    REQUIRE((c >= 0.0 && c < 1.0));
+    double f1, f2;
+    pat::worley2(p, f1, f2);
+    REQUIRE((f1 >= 0.0 && f1 <= std::sqrt(3.0)));
+    REQUIRE(f2 >= f1);
+  }
+  // The range is used, not a sliver of it.
+  CHECK(lo < -0.6);
+  CHECK(hi > 0.6);
+  // Non-finite and huge points give 0, never NaN.
+  CHECK(pat::gradient_noise(Vec3(NAN, 0, 0)) == 0.0);
+  CHECK(pat::gradient_noise(Vec3(1e300, 2, 3)) == 0.0);
+  CHECK(pat::cells(Vec3(INFINITY, 0, 0)) == 0.0);
+  CHECK(pat::worley(Vec3(0, -INFINITY, 0)) == 0.0);
+}
+
+TEST_CASE("gradient noise is zero on the lattice and has mean zero", "[noise]") {
+  for (int x = -3; x <= 3; ++x)
+    for (int y = -3; y <= 3; ++y) CHECK(pat::gradient_noise(Vec3(x, y, 7 - x)) == 0.0);
+  Points pts;
+  double sum = 0, sum2 = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    const double n = pat::gradient_noise(pts.next());
+    sum += n;
+    sum2 += n * n;
+  }
+  const double mean = sum / kSamples, sd = std::sqrt(sum2 / kSamples - mean * mean);
+  // Points 100 apart on average are nearly independent: the mean's standard error is
+  // sd / sqrt(N) ~ 0.0007; 0.005 is seven of them (false-failure rate below 1e-11).
+  CHECK(std::fabs(mean) < 0.005);
+  CHECK(sd > 0.1);   // not flat
+}
+
+TEST_CASE("noise is continuous and its gradient stays under the documented bound", "[noise]") {
+  Points pts;
+  constexpr double h = 1e-5;
+  double max_slope = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    const Vec3 p = pts.next(8.0);
+    const double n = pat::gradient_noise(p);
+    const Vec3 g((pat::gradient_noise(p + Vec3(h, 0, 0)) - n) / h, (pat::gradient_noise(p + Vec3(0, h, 0)) - n) / h,
+                 (pat::gradient_noise(p + Vec3(0, 0, h)) - n) / h);
+    max_slope = std::max(max_slope, glm::length(g));
+  }
+  INFO("largest |grad noise| measured: " << max_slope);
+  CHECK(max_slope < pat::kNoiseGradientBound);
+  CHECK(max_slope > 1.0);   // the bound is not vacuous: real slopes come near it
+  // fbm and turbulence are averages of scaled noise: their slope is at most the bound times
+  // the largest frequency.
+  const Vec3 p(0.3, 0.7, 1.1);
+  const double step = 1e-7;
+  CHECK(std::fabs(pat::fbm(p + Vec3(step, 0, 0), 4, 2, 0.5) - pat::fbm(p, 4, 2, 0.5)) <=
+        pat::kNoiseGradientBound * 8 * step * 1.01);
+}
+
+TEST_CASE("noise values are exact and the same on every build", "[noise]") {
+  // Reference values recorded from this implementation (GCC -O0 and -O2, GCC -O3
+  // -march=native with -ffp-contract=off, clang -O2 all give these bits): any build, compiler
+  // or sanitizer must reproduce them exactly (no platform RNG, no fused multiply-adds).
+  const Vec3 p(0.1234, 5.678, -9.1011);
+  CHECK(pat::gradient_noise(p) == -0x1.9ed6677888b4p-3);
+  CHECK(pat::fbm(p, 6, 2, 0.5) == 0x1.9217a5c6113dfp-10);
+  CHECK(pat::turbulence(p, 5, 2.1, 0.45) == 0x1.8030a955df9d5p-3);
+  CHECK(pat::worley(p) == 0x1.310c310e1d3e1p-1);
+  CHECK(pat::cells(p) == 0x1.00502e56a447dp-1);
+}
+
+TEST_CASE("a pattern texture renders the same bytes with any thread count", "[noise]") {
+  SceneDesc s;
+  s.settings.width = 48;
+  s.settings.height = 36;
+  s.settings.samples = 2;
+  s.has_camera = true;
+  s.camera.position = Vec3(0, 2, -4);
+  s.camera.look_at = Vec3(0, 0, 0);
+  TextureDesc marble;
+  marble.kind = TextureKind::Pattern;
+  marble.pattern.kind = PatternKind::Marble;
+  marble.pattern.wave = WaveKind::Triangle;
+  marble.pattern.turbulence = Vec3(0.8);
+  marble.pattern.color_map = {{0.0, {0.9, 0.9, 0.9}}, {1.0, {0.2, 0.1, 0.3}}};
+  s.textures.push_back(marble);
+  MaterialDesc m;
+  m.texture = 0;
+  place(s, add_shape(s, Sphere{Vec3(0), 1.0}, add_material(s, m)));
+  LightDesc light;
+  light.position = Vec3(3, 5, -4);
+  place(s, add_light(s, light));
+  RenderOptions one, four;
+  one.threads = 1;
+  four.threads = 4;
+  const RenderResult a = render(s, one), b = render(s, four);
+  CHECK(a.color.rgb == b.color.rgb);
+  const auto& used = a.stats.features_used;
+  CHECK(std::find(used.begin(), used.end(), "pattern") != used.end());
+}
+
+TEST_CASE("patterns mean what POV-Ray's mean", "[patterns]") {
+  PatternDesc d;
+  d.color_map = {{0.0, {0, 0, 0}}, {1.0, {1, 1, 1}}};
+  auto value = [&](PatternKind k, WaveKind w, Vec3 q) {
+    d.kind = k;
+    d.wave = w;
+    return pat::wave(d, pat::raw_value(d, q));
+  };
+  SECTION("marble: a triangle wave along x, period 1") {
+    CHECK(value(PatternKind::Marble, WaveKind::Triangle, Vec3(0.0, 5, 3)) == Approx(0.0).margin(1e-12));
+    CHECK(value(PatternKind::Marble, WaveKind::Triangle, Vec3(0.25, -2, 1)) == Approx(0.5));
+    CHECK(value(PatternKind::Marble, WaveKind::Triangle, Vec3(0.5, 0, 0)) == Approx(1.0));
+    CHECK(value(PatternKind::Marble, WaveKind::Triangle, Vec3(0.75, 9, 9)) == Approx(0.5));
+  }
+  SECTION("wood: cylinders around z, a triangle wave of the radius") {
+    CHECK(value(PatternKind::Wood, WaveKind::Triangle, Vec3(0.3, 0.4, 0)) == Approx(1.0));   // r = 0.5
+    CHECK(value(PatternKind::Wood, WaveKind::Triangle, Vec3(0.3, 0.4, 7)) == Approx(1.0));
+    CHECK(value(PatternKind::Wood, WaveKind::Triangle, Vec3(0, 0.25, -3)) == Approx(0.5));
+  }
+  SECTION("onion: spheres, a ramp of the distance") {
+    CHECK(value(PatternKind::Onion, WaveKind::Ramp, Vec3(0, 0.3, 0)) == Approx(0.3));
+    CHECK(value(PatternKind::Onion, WaveKind::Ramp, Vec3(0, 0, 1.3)) == Approx(0.3));
+  }
+  SECTION("leopard: ((sin x + sin y + sin z) / 3)^2") {
+    const double s = (std::sin(1.0) + std::sin(2.0) + std::sin(0.5)) / 3;
+    CHECK(value(PatternKind::Leopard, WaveKind::Ramp, Vec3(1, 2, 0.5)) == Approx(s * s));
+  }
+  SECTION("crackle is 0 on the border between two cells and positive inside") {
+    double lo = 1, hi = 0;
+    Points pts;
+    for (int i = 0; i < 20000; ++i) {
+      const double v = value(PatternKind::Crackle, WaveKind::Ramp, pts.next(5));
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    CHECK(lo < 0.02);
+    CHECK(hi > 0.5);
+  }
+  SECTION("turbulence moves the pattern; zero turbulence leaves it") {
+    d.turbulence = Vec3(0.0);
+    const double plain = value(PatternKind::Wood, WaveKind::Triangle, Vec3(0.3, 0.2, 0.1));
+    d.turbulence = Vec3(0.5);
+    CHECK(value(PatternKind::Wood, WaveKind::Triangle, Vec3(0.3, 0.2, 0.1)) != plain);
+  }
+}
+
+TEST_CASE("wave functions", "[patterns]") {
+  PatternDesc d;
+  d.kind = PatternKind::Bozo;
+  d.wave = WaveKind::Ramp;
+  CHECK(pat::wave(d, 0.3) == Approx(0.3));
+  CHECK(pat::wave(d, 1.0) == 1.0);   // [0, 1] passes unchanged
+  CHECK(pat::wave(d, 1.25) == Approx(0.25));
+  CHECK(pat::wave(d, -0.25) == Approx(0.75));
+  d.wave = WaveKind::Sine;
+  CHECK(pat::wave(d, 0.25) == Approx(1.0));
+  CHECK(pat::wave(d, 0.75) == Approx(0.0).margin(1e-12));
+  d.wave = WaveKind::Scallop;
+  CHECK(pat::wave(d, 0.5) == Approx(1.0));
+  d.wave = WaveKind::Cubic;
+  CHECK(pat::wave(d, 0.5) == Approx(0.5));
+  CHECK(pat::wave(d, 0.25) == Approx(0.15625));
+  d.wave = WaveKind::Clamp;
+  CHECK(pat::wave(d, 3.0) == 1.0);
+  d.wave = WaveKind::Ramp;
+  d.frequency = 2;
+  d.phase = 0.1;
+  CHECK(pat::wave(d, 0.3) == Approx(0.7));
+  CHECK(pat::wave(d, NAN) == 0.0);
+}
+
+TEST_CASE("color map lookup interpolates linearly and clamps outside", "[patterns]") {
+  const std::vector<ColorMapEntry> map = {{0.2, {1, 0, 0}}, {0.5, {0, 1, 0}}, {0.5, {0, 0, 1}}, {0.9, {1, 1, 1}}};
+  CHECK(pat::color_map_lookup(map, 0.0) == glm::dvec3(1, 0, 0));
+  CHECK(pat::color_map_lookup(map, 0.2) == glm::dvec3(1, 0, 0));
+  const glm::dvec3 mid = pat::color_map_lookup(map, 0.35);
+  CHECK(mid.x == Approx(0.5));
+  CHECK(mid.y == Approx(0.5));
+  CHECK(mid.z == 0.0);
+  // Two entries at one value make a sharp edge: green just below, blue just above.
+  CHECK(pat::color_map_lookup(map, 0.4999999).y == Approx(1.0).epsilon(1e-5));
+  CHECK(pat::color_map_lookup(map, 0.5000001).z == Approx(1.0).epsilon(1e-5));
+  const glm::dvec3 upper = pat::color_map_lookup(map, 0.7);
+  CHECK(upper.x == Approx(0.5));
+  CHECK(upper.y == Approx(0.5));
+  CHECK(upper.z == 1.0);
+  CHECK(pat::color_map_lookup(map, 5.0) == glm::dvec3(1, 1, 1));
+  CHECK(pat::color_map_lookup(map, NAN) == glm::dvec3(1, 0, 0));
+}
+
+TEST_CASE("every pattern's color map is looked up over the pattern's range", "[patterns]") {
+  const glm::dvec3 red(0.9, 0.1, 0.1), blue(0.1, 0.2, 0.9);
+  for (int k = 0; k <= static_cast<int>(PatternKind::Waves); ++k) {
+    TextureDesc t;
+    t.kind = TextureKind::Pattern;
+    t.pattern.kind = static_cast<PatternKind>(k);
+    t.pattern.wave = t.pattern.kind == PatternKind::Marble || t.pattern.kind == PatternKind::Wood ? WaveKind::Triangle
+                                                                                                   : WaveKind::Ramp;
+    t.pattern.frequency = t.pattern.kind == PatternKind::Ripples || t.pattern.kind == PatternKind::Waves ? 3.0 : 1.0;
+    t.pattern.color_map = {{0.0, red}, {1.0, blue}};
+    t.transform = glm::scale(Mat4(1.0), Vec3(0.5));
+    const CompiledTexture tex(t, nullptr);
+    Points pts;
+    double lo = 1, hi = 0;
+    for (int i = 0; i < 4000; ++i) {
+      TexturePoint p;
+      p.object_point = pts.next(4.0);
+      const Color c = tex.eval(p);
+      // On the segment red → blue: the blend fraction from r and from b agree.
+      const double tr = (c.r - red.x) / (blue.x - red.x), tb = (c.b - red.z) / (blue.z - red.z);
+      INFO("pattern " << k);
+      REQUIRE(tr == Approx(tb).margin(1e-9));
+      REQUIRE((tr >= -1e-12 && tr <= 1 + 1e-12));
+      lo = std::min(lo, tr);
+      hi = std::max(hi, tr);
+    }
+    INFO("pattern " << k << " spans " << lo << " .. " << hi);
+    // Each pattern reaches well into both halves of its map (granite's values are small and
+    // dents' cubed: they reach the middle).
+    CHECK(lo < 0.3);
+    CHECK(hi > 0.45);
+  }
+}
+
+TEST_CASE("compiled functions evaluate straight-line code", "[patterns]") {
+  CompiledFunction f;
+  uint16_t two, x2, s, n, r;
+  REQUIRE(f.constant(2.0, two));
+  REQUIRE(f.emit(CompiledFunction::Op::Mul, {CompiledFunction::kX, two}, x2));
+  REQUIRE(f.emit(CompiledFunction::Op::Sin, {x2}, s));
+  REQUIRE(f.emit(CompiledFunction::Op::Noise, {CompiledFunction::kX, CompiledFunction::kY, CompiledFunction::kZ}, n));
+  REQUIRE(f.emit(CompiledFunction::Op::Add, {s, n}, r));
+  f.set_result(r);
+  uint16_t again;
+  REQUIRE(f.constant(2.0, again));
+  CHECK(again == two);   // constants are shared
+  const Vec3 p(0.3, -1.2, 2.5);
+  CHECK(f.eval(p) == std::sin(0.6) + pat::noise01(p));
+  CHECK(f.instructions() == 5);
+  CHECK(f.listing().find("noise r0 r1 r2") != std::string::npos);
+  // A NaN result reads as 0.
+  CompiledFunction g;
+  uint16_t neg1, root;
+  REQUIRE(g.constant(-1.0, neg1));
+  REQUIRE(g.emit(CompiledFunction::Op::Sqrt, {neg1}, root));
+  g.set_result(root);
+  CHECK(g.eval(p) == 0.0);
+  // It is full at kMaxRegisters.
+  CompiledFunction big;
+  uint16_t last = 0;
+  std::size_t made = 0;
+  while (big.emit(CompiledFunction::Op::Neg, {CompiledFunction::kX}, last)) ++made;
+  CHECK(made == CompiledFunction::kMaxRegisters - 3);
+}
