@@ -345,6 +345,8 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
       return render::TextureRef{realize_texture(v)};
     case Type::Material:
       return render::MaterialRef{realize_material(v)};
+    case Type::Macro:
+      return render::FunctionRef{compile_function(v, p.loc)};
     case Type::List: {
       const auto& items = as_list(v);
       if (items.empty()) return std::vector<double>{};

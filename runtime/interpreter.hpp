@@ -67,6 +67,8 @@ const std::vector<Builtin>& builtin_table();
 std::vector<Builtin> with_math_builtins(std::vector<Builtin> table);
 
 class Interpreter {
+  friend class FunctionCompiler;   // reads the global bindings and the builtin table
+
  public:
   Interpreter(SourceManager& sources, const EvalOptions& options, DiagnosticSink& warnings);
 
@@ -82,6 +84,9 @@ class Interpreter {
   // The builder id of a material / texture value, built on first use and cached in it.
   uint32_t realize_material(const Value& material);
   uint32_t realize_texture(const Value& texture);
+  // A macro of one point (`macro f(p) { return ... }`) compiled once to the renderer's
+  // register code (runtime/function_compiler.cpp); `use` is where it is given.
+  std::shared_ptr<const render::CompiledFunction> compile_function(const Value& macro, SourceLoc use);
   // Attaches the context notes (innermost first) to an error thrown while running.
   void add_notes(Diagnostic& d) const;
   // Converts a builder SceneError into a located LanguageError.

@@ -1,0 +1,128 @@
+// Pattern textures and noise in the language: the noise builtins, pattern blocks and their
+// errors, and user functions compiled once (runtime/function_compiler.cpp) agreeing exactly
+// with the interpreter.
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include "eval_helpers.hpp"
+#include "render/scene/compiled_function.hpp"
+#include "render/shade/pattern/noise.hpp"
+
+using namespace rts;
+using rts::test::eval_diagnostic;
+using rts::test::eval_text;
+
+namespace {
+
+// The value of a number expression, read back exactly through a texture's scale (which must
+// be positive: callers keep it so).
+double value_of(const std::string& prelude, const std::string& expr) {
+  render::SceneDesc s = eval_text(prelude + "\nplane { normal = <0, 1, 0>  material = material { texture = gradient { scale = " + expr + " } } }");
+  REQUIRE(!s.textures.empty());
+  return s.textures.back().scale;
+}
+
+}  // namespace
+
+TEST_CASE("noise builtins call the renderer's noise", "[patterns]") {
+  const glm::dvec3 p(0.1234, 5.678, -9.1011);
+  CHECK(value_of("", "noise(<0.1234, 5.678, -9.1011>)") == render::pattern::noise01(p));
+  CHECK(value_of("", "fbm(<0.1234, 5.678, -9.1011>) + 1") == render::pattern::fbm(p, 6, 2, 0.5) + 1);
+  CHECK(value_of("", "turbulence(<0.1234, 5.678, -9.1011>, 5, 2.1, 0.45)") ==
+        render::pattern::turbulence(p, 5, 2.1, 0.45));
+  CHECK(value_of("", "cells(<0.1234, 5.678, -9.1011>)") == render::pattern::cells(p));
+  CHECK(value_of("", "worley(<0.1234, 5.678, -9.1011>)") == render::pattern::worley(p));
+  CHECK(eval_diagnostic("let x = fbm(<1, 2, 3>, 0)").message ==
+        "the octaves of 'fbm' must be a whole number from 1 to 16, got 0");
+  CHECK(eval_diagnostic("let x = noise(1)").message == "argument 1 of 'noise' must be a vector, got a number");
+}
+
+TEST_CASE("pattern blocks build pattern textures with POV-Ray's defaults", "[patterns]") {
+  render::SceneDesc s = eval_text(
+      "plane { normal = <0, 1, 0>  material = material { texture = marble { turbulence = 0.8  color_map = [[0, rgb(1)], [0.5, rgb(0.5, 0.2, 0.1)], "
+      "[1, rgb(0)]] } scale 0.5 } }\n"
+      "sphere { radius = 1  material = material { texture = wood { turbulence = <0.1, 0.2, 0>  octaves = 3  wave = \"sine\" } "
+      "bump = bumps { }  bump_scale = 0.3 } }\n");
+  REQUIRE(s.textures.size() == 3);
+  const render::TextureDesc& marble = s.textures[0];
+  CHECK(marble.kind == render::TextureKind::Pattern);
+  CHECK(marble.pattern.kind == render::PatternKind::Marble);
+  CHECK(marble.pattern.wave == render::WaveKind::Triangle);
+  CHECK(marble.pattern.turbulence == glm::dvec3(0.8));
+  REQUIRE(marble.pattern.color_map.size() == 3);
+  CHECK(marble.pattern.color_map[1].color == glm::dvec3(0.5, 0.2, 0.1));
+  CHECK(marble.transform[0][0] == 0.5);
+  const render::TextureDesc& wood = s.textures[1];
+  CHECK(wood.pattern.wave == render::WaveKind::Sine);
+  CHECK(wood.pattern.octaves == 3);
+  CHECK(wood.pattern.turbulence == glm::dvec3(0.1, 0.2, 0));
+  // No color_map: black at 0 to white at 1.
+  REQUIRE(s.textures[2].pattern.color_map.size() == 2);
+  CHECK(s.textures[2].pattern.color_map[1].color == glm::dvec3(1.0));
+  CHECK(s.materials[1].bump == 2);
+}
+
+TEST_CASE("pattern block errors are located and say what to do", "[patterns]") {
+  auto message = [](const std::string& text) { return eval_diagnostic(text).message; };
+  CHECK(message("let t = marble { turbulance = 1 }\nplane { normal = <0, 1, 0>  material = material { texture = t } }")
+            .starts_with("unknown property 'turbulance' for marble; did you mean 'turbulence'?"));
+  CHECK(message("plane { normal = <0, 1, 0>  material = material { texture = bozo { color_map = [[0.5, rgb(1)], [0.2, rgb(0)]] } } }") ==
+        "the color_map of bozo must list its values in ascending order: entry 2 (0.2) comes after 0.5");
+  CHECK(message("plane { normal = <0, 1, 0>  material = material { texture = bozo { color_map = [[0.5, 1]] } } }")
+            .starts_with("property 'color_map' of bozo cannot hold this list: a color map is a list of [number, color] pairs"));
+  CHECK(message("plane { normal = <0, 1, 0>  material = material { texture = bozo { wave = \"square\" } } }")
+            .starts_with("property 'wave' of bozo must be \"ramp\""));
+  CHECK(message("plane { normal = <0, 1, 0>  material = material { texture = granite { octaves = 40 } } }") ==
+        "property 'octaves' of granite must be from 1 to 16, got 40");
+  CHECK(message("plane { normal = <0, 1, 0>  material = material { texture = pattern { } } }")
+            .starts_with("pattern needs property 'function'"));
+  CHECK(message("plane { normal = <0, 1, 0>  material = material { texture = agate { function = 1 } } }")
+            .starts_with("unknown property 'function' for agate"));
+}
+
+TEST_CASE("a user function is compiled once and agrees exactly with the interpreter", "[patterns]") {
+  const std::string prelude =
+      "let k = 2\n"
+      "let shift = <1, 0, 0.5>\n"
+      "macro ring(q, width = 0.5) { return abs(length(q) % 1 - width) }\n"
+      "macro f(p) {\n"
+      "  let q = p * k + shift\n"
+      "  let v = 0\n"
+      "  if q.x > 1.5 { v = fbm(q, 4, 2, 0.5) * 0.5 + 0.5 } else { v = turbulence(q) + noise(-q) }\n"
+      "  v += 0.1 * sin(q.y) * cos(q.z) + ring(q) + worley(q / 3) * cells(q) + max(0, dot(normalize(q), <0, 1, 0>))\n"
+      "  if v > 2 { return pow(v, 0.5) + atan2(q.y, q.x) * 0 + clamp(mix(0.2, 0.4, 0.5), 0, 1) } else { return v + 0.001 }\n"
+      "}\n"
+      "plane { normal = <0, 1, 0>  material = material { texture = pattern { function = f } } }\n";
+  const render::SceneDesc s = eval_text(prelude);
+  REQUIRE(s.textures.size() == 1);
+  const auto& fn = s.textures[0].pattern.function;
+  REQUIRE(fn != nullptr);
+  CHECK(s.textures[0].pattern.wave == render::WaveKind::Clamp);
+  const glm::dvec3 points[] = {{0.3, 0.2, 0.1}, {-1.7, 2.25, 0.8}, {4.1, -0.35, 2.2}, {0.05, 0.9, -3.3}, {2.5, 2.5, 2.5}};
+  for (const glm::dvec3& p : points) {
+    const std::string call = fmt::format("f(<{:.17g}, {:.17g}, {:.17g}>)", p.x, p.y, p.z);
+    INFO(call);
+    CHECK(value_of(prelude, call) == fn->eval(p));
+  }
+}
+
+TEST_CASE("what a compiled function may not do is a located error", "[patterns]") {
+  auto diag = [](const std::string& body) {
+    return eval_diagnostic("macro f(p) {\n" + body + "\n}\nplane { normal = <0, 1, 0>  material = material { texture = pattern { function = f } } }");
+  };
+  Diagnostic d = diag("for i in 0 .. 3 { }\nreturn 1");
+  CHECK(d.message.starts_with("a compiled function (a pattern or isosurface macro) may hold only"));
+  CHECK(d.loc.line == 2);
+  CHECK(diag("return p").message == "macro 'f' returns a vector; a pattern function returns a number");
+  CHECK(diag("let s = \"text\"\nreturn 1").message.starts_with("this expression cannot be compiled"));
+  CHECK(diag("return print(1)").message.starts_with("'print' cannot be called in a compiled function"));
+  CHECK(diag("if p.x > 0 { return 1 }\nreturn 0").message ==
+        "in a compiled function, an 'if' must return on both branches or on neither");
+  CHECK(diag("let n = 1").message == "macro 'f' must end with 'return' to be used as a function");
+  CHECK(eval_diagnostic("macro g(p) { return g(p) }\nplane { normal = <0, 1, 0>  material = material { texture = pattern { function = g } } }")
+            .message.starts_with("macros nest more than 32 deep"));
+  CHECK(eval_diagnostic("macro g() { return 1 }\nplane { normal = <0, 1, 0>  material = material { texture = pattern { function = g } } }")
+            .message.starts_with("macro 'g' is used as a function of a point, so it needs a parameter"));
+}
