@@ -191,6 +191,17 @@ TEST_CASE("patterns mean what POV-Ray's mean", "[patterns]") {
     CHECK(lo < 0.02);
     CHECK(hi > 0.5);
   }
+  SECTION("granite, wrinkles, crackle, agate, leopard, dents stay in [0, 1] (no ramp wrap-around)") {
+    Points pts;
+    for (PatternKind k : {PatternKind::Granite, PatternKind::Wrinkles, PatternKind::Crackle, PatternKind::Agate,
+                          PatternKind::Leopard, PatternKind::Dents, PatternKind::Bozo}) {
+      d.kind = k;
+      for (int i = 0; i < 20000; ++i) {
+        const double v = pat::raw_value(d, pts.next(10));
+        REQUIRE((v >= 0.0 && v <= 1.0));
+      }
+    }
+  }
   SECTION("turbulence moves the pattern; zero turbulence leaves it") {
     d.turbulence = Vec3(0.0);
     const double plain = value(PatternKind::Wood, WaveKind::Triangle, Vec3(0.3, 0.2, 0.1));

@@ -69,8 +69,10 @@ double raw_value(const PatternDesc& d, const glm::dvec3& q) {
       double value = 0.0, freq = 1.0;
       // POV-Ray sums |0.5 - Noise|; its Noise spreads about twice as wide as noise01, so the
       // signed noise (|gradient_noise| = 2 |0.5 - noise01|) gives granite POV-Ray's contrast.
+      // POV-Ray's sum never exceeds 1; at twice the spread this one can (rarely), and the
+      // ramp wave would wrap those peaks to the map's first color: clamp them instead.
       for (int i = 0; i < 6; ++i, freq *= 2.0) value += std::fabs(gradient_noise(p * (4.0 * freq))) / freq;
-      return value;
+      return std::min(1.0, value);
     }
     case PatternKind::Marble:
       return p.x + d.turbulence.x * pov_turbulence(p, d.octaves, d.lambda, d.omega);

@@ -4,7 +4,7 @@
 // look matches POV-Ray's by eye, not bit for bit:
 //  - bozo, spotted, bumps: noise01(p).                      dents: noise01(p)^3.
 //  - granite: sum over 6 octaves of |gradient_noise(4 * 2^i * p)| / 2^i (POV-Ray's
-//            |0.5 - Noise| at POV-Ray's contrast).
+//            |0.5 - Noise| at POV-Ray's contrast), at most 1.
 //  - marble: x + turbulence_x * T(p), triangle wave (T: POV-Ray's scalar turbulence, an
 //            unnormalised sum of noise01 over the octaves).
 //  - wood:   sqrt(x^2 + y^2) (cylinders around z) after the turbulence warp, triangle wave.
