@@ -121,6 +121,12 @@ TEST_CASE("noise values are exact and the same on every build", "[noise]") {
   CHECK(pat::turbulence(p, 5, 2.1, 0.45) == 0x1.8030a955df9d5p-3);
   CHECK(pat::worley(p) == 0x1.310c310e1d3e1p-1);
   CHECK(pat::cells(p) == 0x1.00502e56a447dp-1);
+  const Vec3 v = pat::vector_noise(p);
+  CHECK(v.x == pat::gradient_noise(p));
+  CHECK(v.y == -0x1.0d4c7fde4fbfbp-1);
+  CHECK(v.z == -0x1.1ed901121c3a8p-2);
+  const Vec3 t = pat::vector_turbulence(p, 6, 2, 0.5);
+  CHECK(t == Vec3(0x1.8bcf472ef8f9p-9, -0x1.2596ca9b61b2cp-1, -0x1.f36d23a59bb36p-7));
 }
 
 TEST_CASE("a pattern texture renders the same bytes with any thread count", "[noise]") {

@@ -12,7 +12,8 @@
 //  - fbm(p, octaves, lambda, omega) = sum_i omega^i * gradient_noise(lambda^i * p), divided by
 //    sum_i omega^i: in [-1, 1].
 //  - turbulence(p, ...) = the same sum of |gradient_noise|: in [0, 1].
-//  - vector_noise(p): three decorrelated gradient_noise values (the lattice shifted per axis).
+//  - vector_noise(p): three gradient noises in one lattice walk: x is gradient_noise(p), y and
+//    z pick other gradients at each corner (re-hashed), so the three are uncorrelated.
 //  - cells(p): one value in [0, 1) per unit cube (POV-Ray's `cells` pattern).
 //  - worley(p): distance from p to the nearest feature point (one per unit cube), F1 in
 //    [0, sqrt(3)]; worley2 gives F1 and F2 (crackle uses F2 - F1).
