@@ -1,6 +1,11 @@
 #include "dist/mpi_session.hpp"
 
+#include <unistd.h>
+
 #include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
 
 #ifdef RTS_HAVE_MPI
 #include <mpi.h>
@@ -24,8 +29,18 @@ MpiSession::MpiSession(int* argc, char*** argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
   active_ = true;
 #else
+  // This build has no MPI: when a launcher started it, become rts-mpi (the same program with
+  // Open MPI, built beside it), so that plain runs never load MPI's libraries.
   (void)argc;
-  (void)argv;
+  if (!launched_by_mpi_launcher()) return;
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::string mpi_exe = ec ? std::string() : (exe.parent_path() / "rts-mpi").string();
+  if (!mpi_exe.empty() && ::access(mpi_exe.c_str(), X_OK) == 0) {
+    ::execv(mpi_exe.c_str(), *argv);
+  }
+  std::cerr << "rts: warning: started by an MPI launcher, but this rts has no MPI (rts-mpi is not beside it): "
+               "every rank renders the whole image alone\n";
 #endif
 }
 
