@@ -102,4 +102,10 @@ inline constexpr double kMinEmitterArea = 1e-200;
 // just outside.
 inline constexpr double kSphereConeMargin = 1e-6;
 
+// Ground fog: a ray whose direction's height component (unit direction) is below this is
+// treated as level, its optical depth the density at its height times its length. The closed
+// form divides a difference of heights by it, which for steeper rays loses at most ~1e-16 / 1e-9
+// of its value to rounding.
+inline constexpr double kFogLevelRay = 1e-9;
+
 }  // namespace rts::render::tol

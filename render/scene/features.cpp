@@ -127,6 +127,7 @@ constexpr FeatureRule kRules[] = {
     {Feature::Csg, "csg", Scope::Scene, [](const FeatureProbe&) { return false; }},
     // Decided by the World (World::uses_bvh) and added by the renderer.
     {Feature::Bvh, "bvh", Scope::Scene, [](const FeatureProbe&) { return false; }},
+    {Feature::Fog, "fog", Scope::Scene, [](const FeatureProbe& p) { return p.scene.settings.fog_distance > 0.0; }},
 };
 
 constexpr bool rules_in_feature_order() {

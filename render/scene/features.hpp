@@ -30,6 +30,8 @@ enum class Feature : uint8_t {
   Csg,
   // acceleration
   Bvh,
+  // atmosphere
+  Fog,
   Count
 };
 

@@ -223,6 +223,12 @@ struct Settings {
   // along each shading normal (times ambient_light).
   TextureId environment = kNoId;
   bool environment_ambient = false;
+  // Fog (render/shade/fog.hpp): none while fog_distance is 0. fog_altitude > 0 makes it ground
+  // fog, thick below fog_offset and thinning above it.
+  double fog_distance = 0.0;
+  Color fog_color{0.0};
+  double fog_offset = 0.0;
+  double fog_altitude = 0.0;
   uint64_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;  // how pixel samples are placed
   // An animation's frame count: `rts render` without --frames renders frames 0..frames-1

@@ -60,7 +60,8 @@ const std::vector<std::string_view> kSettingsNames = {"width",         "height",
                                                       "max_depth",     "background",  "ambient_light",
                                                       "seed",          "sampler",     "environment",
                                                       "environment_ambient", "frames",
-                                                      "integrator"};
+                                                      "integrator",    "fog_distance", "fog_color",
+                                                      "fog_offset",    "fog_altitude"};
 const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
                                                     "fov",        "fov_axis",   "handedness", "view_width",
                                                     "aperture",   "focus_distance"};
@@ -240,6 +241,13 @@ void SceneBuilder::settings(ParamSet& ps) {
   s.environment_ambient = ps.boolean("environment_ambient", s.environment_ambient);
   if (s.environment_ambient && s.environment == kNoId)
     throw SceneError(loc_of(ps, "environment_ambient"), "environment_ambient needs an 'environment' texture");
+  s.fog_distance = ps.number("fog_distance", s.fog_distance);
+  require(ps, "fog_distance", s.fog_distance >= 0, ">= 0 (0: no fog)", s.fog_distance);
+  s.fog_color = ps.color("fog_color", s.fog_color);
+  non_negative_color(ps, "fog_color", s.fog_color);
+  s.fog_offset = ps.number("fog_offset", s.fog_offset);
+  s.fog_altitude = ps.number("fog_altitude", s.fog_altitude);
+  require(ps, "fog_altitude", s.fog_altitude >= 0, ">= 0 (0: constant fog)", s.fog_altitude);
   if (ps.has("seed")) {
     double seed = ps.number("seed", 0);
     constexpr double kMaxExactWhole = 9007199254740992.0;  // 2^53: larger doubles skip integers

@@ -127,6 +127,9 @@ void SceneDesc::dump(std::ostream& out) const {
   if (s.environment != kNoId)
     out << fmt::format(" environment texture {} environment_ambient {}", s.environment, yes(s.environment_ambient));
   if (s.integrator != IntegratorKind::Whitted) out << " integrator " << integrator_name(s.integrator);
+  if (s.fog_distance > 0)
+    out << fmt::format(" fog distance {} color {} offset {} altitude {}", num(s.fog_distance), col(s.fog_color),
+                       num(s.fog_offset), num(s.fog_altitude));
   out << '\n';
   const CameraDesc& c = camera;
   out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}{}{}\n",

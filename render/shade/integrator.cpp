@@ -63,6 +63,11 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
     environment_ = &textures[settings.environment];
     environment_ambient_ = settings.environment_ambient;
   }
+  if (settings.fog_distance > 0.0) {
+    fog_on_ = true;
+    fog_ = Fog{settings.fog_distance, settings.fog_offset, settings.fog_altitude};
+    fog_color_ = to_rgb(settings.fog_color);
+  }
 }
 
 Rgb Integrator::background(const Vec3& direction) const {
@@ -253,7 +258,15 @@ template <unsigned F>
 Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const {
   const Ray& ray = pr.ray;
   WorldHit hit;
-  if (!world_.intersect(ray, Interval::positive(), hit)) return background(ray.direction);
+  if (!world_.intersect(ray, Interval::positive(), hit)) {
+    if (!fog_on_) return background(ray.direction);
+    double t = fog_.transmittance(ray.origin, ray.direction, std::numeric_limits<double>::infinity());
+    return t * background(ray.direction) + (1.0 - t) * fog_color_;
+  }
+  // What the fog between the ray's origin and the hit leaves of the light from the hit (1: no
+  // fog); the rest of the segment's light is the fog's colour.
+  const double fog_t = fog_on_ ? fog_.transmittance(ray.origin, ray.direction, hit.t) : 1.0;
+  auto fogged = [&](const Rgb& c) { return fog_on_ ? fog_t * c + (1.0 - fog_t) * fog_color_ : c; };
   std::optional<MaterialDesc> scratch;
   const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
   Vec3 incident = glm::normalize(ray.direction);
@@ -275,8 +288,11 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   color += direct_light<F>(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, path);
   color = saturate(color);
 
-  if constexpr (!(F & trace_flags::kSecondary)) return color;  // nothing reflects or transmits
-  if (pr.depth >= max_depth_) return color;
+  if constexpr (!(F & trace_flags::kSecondary)) return fogged(color);  // nothing reflects or transmits
+  if (pr.depth >= max_depth_) return fogged(color);
+  // The light the secondary rays bring back crosses the same fog (x * 1.0 is exact: without
+  // fog the weights are unchanged).
+  const Rgb weight = pr.weight * fog_t;
 
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Interface f;
@@ -287,23 +303,23 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
 
   // Pushed refracted first so the reflected subtree is walked first (see trace()). Weights
   // saturate so colors above 1 reflected thousands of times stay finite.
-  if (max_channel(kt * pr.weight) > tol::kMinPathWeight) {
+  if (max_channel(kt * weight) > tol::kMinPathWeight) {
     ++path.counters.refraction;
     Ray r{offset_ray_origin(hit.point, ng, refracted, hit.error), refracted};
-    pending.push_back(PendingRay{r, saturate(pr.weight * kt), pr.depth + 1, pr.media});
+    pending.push_back(PendingRay{r, saturate(weight * kt), pr.depth + 1, pr.media});
     // The refracted ray is inside the object now, or has left it.
     if (entering)
       pending.back().media.enter(hit.medium, f.n_to);
     else
       pending.back().media.leave(hit.medium);
   }
-  if (max_channel(kr * pr.weight) > tol::kMinPathWeight) {
+  if (max_channel(kr * weight) > tol::kMinPathWeight) {
     Vec3 dir = reflected_direction(m, incident + 2.0 * cos_i * n, ng, path.sampler);
     ++path.counters.reflection;
     Ray r{offset_ray_origin(hit.point, ng, dir, hit.error), dir};
-    pending.push_back(PendingRay{r, saturate(pr.weight * kr), pr.depth + 1, pr.media});
+    pending.push_back(PendingRay{r, saturate(weight * kr), pr.depth + 1, pr.media});
   }
-  return color;
+  return fogged(color);
 }
 
 }  // namespace rts::render

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/scene/features.hpp"
+#include "render/shade/fog.hpp"
 #include "render/shade/lights.hpp"
 #include "render/shade/material.hpp"
 #include "render/shade/medium_stack.hpp"
@@ -102,6 +103,11 @@ class Integrator {
   Rgb background_, ambient_light_;
   const CompiledTexture* environment_ = nullptr;   // settings.environment, if any
   bool environment_ambient_ = false;
+  // Fog, when settings.fog_distance > 0: one test per ray when there is none (a branch that
+  // always goes the same way), and unfogged results bit for bit.
+  bool fog_on_ = false;
+  Fog fog_;
+  Rgb fog_color_{0.0};
   int max_depth_;
   const path::PathIntegrator* path_tracer_ = nullptr;
 };

@@ -253,3 +253,15 @@ for i in 0 .. 5 {
   CHECK_THAT(eval_error("trace(3, <0, 0, 0>, <0, 0, 1>)"),
              Catch::Contains("argument 1 of 'trace' must be an object (a shape or a group), got a number"));
 }
+
+TEST_CASE("fog settings are checked and reach the scene", "[eval][fog]") {
+  SceneDesc s = eval_text("settings { fog_distance = 10  fog_color = rgb(0.5)  fog_offset = 1  fog_altitude = 2 }");
+  CHECK(s.settings.fog_distance == 10);
+  CHECK(s.settings.fog_color.g == 0.5);
+  CHECK(s.settings.fog_offset == 1);
+  CHECK(s.settings.fog_altitude == 2);
+  CHECK(eval_text("settings { }").settings.fog_distance == 0);  // no fog unless asked
+  CHECK_THAT(eval_error("settings { fog_distance = -1 }"), Catch::Contains("fog_distance"));
+  CHECK_THAT(eval_error("settings { fog_altitude = -1 }"), Catch::Contains("fog_altitude"));
+  CHECK_THAT(eval_error("settings { fog_colour = rgb(1) }"), Catch::Contains("did you mean 'fog_color'?"));
+}

@@ -1,0 +1,97 @@
+// Fog against closed forms: exponential attenuation exp(-s / distance) for constant fog, the
+// integrated ground-fog profile, and the integrator's blend T·L + (1 − T)·fog_color along
+// camera and reflected rays; and a scene without fog traced exactly as before.
+#include <cmath>
+#include <limits>
+
+#include <catch2/catch.hpp>
+
+#include "render/shade/fog.hpp"
+#include "scene_fixture.hpp"
+#include "tracer.hpp"
+
+using namespace rts::render;
+using namespace rts::render::test;
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+TEST_CASE("constant fog transmits exp(-s / distance)", "[fog]") {
+  Fog f{4.0, 0.0, 0.0};
+  CHECK(f.transmittance(Vec3(0), Vec3(0, 0, 1), 4.0) == Approx(std::exp(-1.0)));
+  CHECK(f.transmittance(Vec3(1, 2, 3), Vec3(0, 0, 1), 10.0) == Approx(std::exp(-2.5)));
+  // t is in units of the direction: a direction of length 2 doubles the path.
+  CHECK(f.transmittance(Vec3(0), Vec3(0, 2, 0), 3.0) == Approx(std::exp(-1.5)));
+  CHECK(f.transmittance(Vec3(0), Vec3(0, 0, 1), kInf) == 0.0);
+  CHECK(f.transmittance(Vec3(0), Vec3(0, 0, 1), 0.0) == 1.0);
+}
+
+TEST_CASE("ground fog: density 1 below the offset, 1/(1 + h/altitude)^2 above", "[fog]") {
+  const double d = 2.0, off = 1.0, alt = 0.5;
+  Fog f{d, off, alt};
+  // Level rays: the density at their height times their length.
+  CHECK(f.transmittance(Vec3(0, 0.5, 0), Vec3(1, 0, 0), 3.0) == Approx(std::exp(-3.0 / d)));
+  CHECK(f.transmittance(Vec3(0, off + alt, 0), Vec3(1, 0, 0), 3.0) == Approx(std::exp(-3.0 * 0.25 / d)));
+  // Straight up from the offset: the integral of 1/(1 + h/alt)^2 from 0 to alt is alt/2, and
+  // to infinity alt.
+  CHECK(f.transmittance(Vec3(0, off, 0), Vec3(0, 1, 0), alt) == Approx(std::exp(-alt / 2 / d)));
+  CHECK(f.transmittance(Vec3(0, off, 0), Vec3(0, 1, 0), kInf) == Approx(std::exp(-alt / d)));
+  // Down from the same point to 0.4 below the offset, then on into the ground for ever.
+  CHECK(f.transmittance(Vec3(0, off + alt, 0), Vec3(0, -1, 0), alt + 0.4) ==
+        Approx(std::exp(-(alt / 2 + 0.4) / d)));
+  CHECK(f.transmittance(Vec3(0, off + alt, 0), Vec3(0, -1, 0), kInf) == 0.0);
+  // A slanted ray covers its height change over 1/sin of the length: at 30 degrees, twice.
+  Vec3 up30(std::cos(M_PI / 6), 0.5, 0);
+  CHECK(f.transmittance(Vec3(0, off, 0), up30, 2 * alt) == Approx(std::exp(-2 * (alt / 2) / d)));
+  // Nearly level rays agree with level ones (no division blow-up).
+  CHECK(f.transmittance(Vec3(0, 0.5, 0), Vec3(1, 1e-12, 0), 3.0) == Approx(std::exp(-3.0 / d)));
+}
+
+TEST_CASE("the integrator blends each ray segment with the fog colour", "[fog]") {
+  // An emissive wall 5 units in front of the camera ray, constant fog of distance 2.5.
+  SceneDesc s;
+  s.settings.background = Color(0.1, 0.2, 0.3);
+  MaterialDesc lamp = emissive(Color(1.0, 0.5, 0.25));
+  place(s, add_shape(s, Plane{Vec3(0, 0, -1), -5.0}, add_material(s, lamp)));
+  Ray towards{Vec3(0), Vec3(0, 0, 1)}, away{Vec3(0), Vec3(0, 0, -1)};
+  const Rgb wall = Tracer(s).trace(towards);
+  CHECK(wall.r == 1.0);  // without fog: the emission exactly
+  CHECK(Tracer(s).trace(away).b == 0.3);
+
+  s.settings.fog_distance = 2.5;
+  s.settings.fog_color = Color(0.5, 0.6, 0.7);
+  Tracer fogged(s);
+  const double t = std::exp(-5.0 / 2.5);
+  Rgb c = fogged.trace(towards);
+  CHECK(c.r == Approx(t * 1.0 + (1 - t) * 0.5));
+  CHECK(c.g == Approx(t * 0.5 + (1 - t) * 0.6));
+  CHECK(c.b == Approx(t * 0.25 + (1 - t) * 0.7));
+  // Rays that leave the scene travel through infinite fog: the fog colour alone.
+  Rgb sky = fogged.trace(away);
+  CHECK(sky.r == Approx(0.5));
+  CHECK(sky.b == Approx(0.7));
+}
+
+TEST_CASE("reflected light crosses the fog of both segments", "[fog]") {
+  // A black mirror at z = 2 facing the camera (at the origin looking at +z), an emissive wall
+  // behind the camera at z = -3: the camera ray's segment is 2 long, the reflected one 5.
+  SceneDesc s;
+  MaterialDesc mirror;
+  mirror.color = Color(0.0);
+  mirror.ambient = 0.0;
+  mirror.diffuse = 0.0;
+  mirror.reflect = Color(1.0);
+  place(s, add_shape(s, Plane{Vec3(0, 0, -1), -2.0}, add_material(s, mirror)));
+  place(s, add_shape(s, Plane{Vec3(0, 0, 1), -3.0}, add_material(s, emissive(Color(1.0)))));
+  s.settings.fog_distance = 3.5;
+  s.settings.fog_color = Color(0.0);
+  Rgb c = Tracer(s).trace(Ray{Vec3(0), Vec3(0, 0, 1)});
+  CHECK(c.r == Approx(std::exp(-7.0 / 3.5)));
+  // A grey fog: the wall's light is blended on the reflected segment, that result again on the
+  // camera's segment.
+  s.settings.fog_color = Color(0.5);
+  c = Tracer(s).trace(Ray{Vec3(0), Vec3(0, 0, 1)});
+  const double t1 = std::exp(-2.0 / 3.5), t2 = std::exp(-5.0 / 3.5);
+  CHECK(c.r == Approx(t1 * (t2 * 1.0 + (1 - t2) * 0.5) + (1 - t1) * 0.5));
+}
