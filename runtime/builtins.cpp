@@ -7,31 +7,14 @@
 
 #include "render/shade/pattern/noise.hpp"
 #include "runtime/interpreter.hpp"
+#include "runtime/builtin_args.hpp"
 #include "runtime/ops.hpp"
 
 namespace rts::runtime {
 
 namespace {
 
-SourceLoc arg_loc(const BuiltinCall& c, std::size_t i) { return c.call.args[i].value->loc; }
-
-[[noreturn]] void bad_arg(const BuiltinCall& c, std::size_t i, const char* expected) {
-  c.in.fail(arg_loc(c, i), fmt::format("argument {} of '{}' must be {}, got {}", i + 1, c.def.name, expected,
-                                       with_article(c.args[i].type)));
-}
-
-double num(const BuiltinCall& c, std::size_t i) {
-  if (c.args[i].type != Type::Number) bad_arg(c, i, "a number");
-  return c.args[i].v.x;
-}
-glm::dvec3 vec(const BuiltinCall& c, std::size_t i) {
-  if (c.args[i].type != Type::Vector) bad_arg(c, i, "a vector");
-  return c.args[i].v;
-}
-const std::string& str(const BuiltinCall& c, std::size_t i) {
-  if (c.args[i].type != Type::String) bad_arg(c, i, "a string");
-  return as_string(c.args[i]);
-}
+using namespace builtin_args;
 
 // A number result that must be finite: "sqrt(-1) produced NaN (not a number)".
 Value finite(const BuiltinCall& c, double r) {

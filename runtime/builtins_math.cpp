@@ -10,26 +10,15 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "runtime/interpreter.hpp"
+#include "runtime/builtin_args.hpp"
 #include "runtime/ops.hpp"
 
 namespace rts::runtime {
 
 namespace {
 
-SourceLoc arg_loc(const BuiltinCall& c, std::size_t i) { return c.call.args[i].value->loc; }
+using namespace builtin_args;
 
-[[noreturn]] void bad_arg(const BuiltinCall& c, std::size_t i, const char* expected) {
-  c.in.fail(arg_loc(c, i), fmt::format("argument {} of '{}' must be {}, got {}", i + 1, c.def.name, expected,
-                                       with_article(c.args[i].type)));
-}
-double num(const BuiltinCall& c, std::size_t i) {
-  if (c.args[i].type != Type::Number) bad_arg(c, i, "a number");
-  return c.args[i].v.x;
-}
-glm::dvec3 vec(const BuiltinCall& c, std::size_t i) {
-  if (c.args[i].type != Type::Vector) bad_arg(c, i, "a vector");
-  return c.args[i].v;
-}
 Value finite_vector(const BuiltinCall& c, glm::dvec3 v) {
   for (int k = 0; k < 3; ++k) check_finite(v[k], c.call.loc, c.def.name);
   return Value::vector(v);
