@@ -325,6 +325,28 @@ bool same_clock(const AnimationClock& a, const AnimationClock& b) {
   return a.clock == b.clock && a.frame == b.frame && a.frames == b.frames;
 }
 
+// The scene at `clock` into `out`: the probe itself when it was evaluated at this very clock
+// (evaluating again would give the same scene; it is moved, so used once), else a fresh
+// evaluation. Returns its exit code after reporting an evaluation error.
+int scene_at(const RenderCommand& c, const CommandContext& ctx, const AnimationClock& clock, Evaluated& probe,
+             const AnimationClock& probe_clock, Evaluated& out) {
+  if (probe.sources && same_clock(clock, probe_clock)) {
+    out = std::move(probe);
+    return kExitOk;
+  }
+  EvalOptions eval = c.eval;
+  eval.animation = clock;
+  DiagnosticSink frame_sink(std::cerr, ctx.color);
+  return evaluate_scene(c, eval, frame_sink, out);
+}
+
+// Every frame of an animation that never reads the clock is the same image: say so once.
+void warn_if_static(const RenderCommand& c, const Evaluated& probe, const FrameRange& animation) {
+  if (!probe.uses_clock && animation.count() > 1)
+    std::cerr << fmt::format("rts: warning: {}: the scene never reads clock, frame or frames: every frame "
+                             "is the same image\n", c.scene);
+}
+
 // Renders the frames of an animation this process is given (docs/scale-out.md): each frame is
 // evaluated afresh at its clock, so it depends on its number alone, never on which frames
 // this process rendered before it.
@@ -333,9 +355,7 @@ int run_frames(const RenderCommand& c, const CLI::App& cmd, const CommandContext
                const TaskSlice& task, Evaluated probe, const AnimationClock& probe_clock, DiagnosticSink& sink) {
   const std::string manifest = c.manifest.empty() ? default_manifest_path(pattern) : c.manifest;
   const std::vector<int64_t> frames = task_frames(selected, task);
-  if (!probe.uses_clock && animation.count() > 1)
-    std::cerr << fmt::format("rts: warning: {}: the scene never reads clock, frame or frames: every frame "
-                             "is the same image\n", c.scene);
+  warn_if_static(c, probe, animation);
   std::size_t done = 0, skipped = 0;
   for (int64_t f : frames) {
     const std::string out = frame_path(pattern, f);
@@ -346,25 +366,17 @@ int run_frames(const RenderCommand& c, const CLI::App& cmd, const CommandContext
     }
     auto start = std::chrono::steady_clock::now();
     AnimationClock clock{frame_clock(animation, f), f, animation.count()};
-    Evaluated fresh;
-    Evaluated* ev = &fresh;
-    if (probe.sources && same_clock(clock, probe_clock)) {
-      ev = &probe;  // the probe was this very frame: evaluating it again gives the same scene
-    } else {
-      EvalOptions eval = c.eval;
-      eval.animation = clock;
-      DiagnosticSink frame_sink(std::cerr, ctx.color);
-      if (int rc = evaluate_scene(c, eval, frame_sink, fresh); rc != kExitOk) return rc;
-    }
+    Evaluated ev;
+    if (int rc = scene_at(c, ctx, clock, probe, probe_clock, ev); rc != kExitOk) return rc;
     render::RenderStats stats;
-    if (int rc = render_scene(c, cmd, *ev, out, spec, sink, &stats); rc != kExitOk) return rc;
+    if (int rc = render_scene(c, cmd, ev, out, spec, sink, &stats); rc != kExitOk) return rc;
     FrameRecord r;
     r.frame = f;
     r.clock = clock.clock;
     r.file = out;
     r.checksum = file_checksum(out);
     r.scene = c.scene;
-    r.scene_hash = scene_hash(*ev->sources);
+    r.scene_hash = scene_hash(*ev.sources);
     r.args = ctx.args;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stats.error.known) r.error_rmse = stats.error.rmse;
@@ -377,7 +389,6 @@ int run_frames(const RenderCommand& c, const CLI::App& cmd, const CommandContext
       std::cerr << "rts: error: " << e.what() << "\n";
       return kExitRenderError;
     }
-    if (ev == &probe) probe.sources.reset();  // used once
     ++done;
   }
   std::cerr << fmt::format("rts: frames {}..{}{}: rendered {}, skipped {} already written; manifest {}\n",
@@ -394,9 +405,7 @@ int run_video(const RenderCommand& c, const CLI::App& cmd, const CommandContext&
   auto start = std::chrono::steady_clock::now();
   std::unique_ptr<render::VideoWriter> video;
   render::OutputSpec spec;  // unused: frames go to the video
-  if (!probe.uses_clock && animation.count() > 1)
-    std::cerr << fmt::format("rts: warning: {}: the scene never reads clock, frame or frames: every frame "
-                             "is the same image\n", c.scene);
+  warn_if_static(c, probe, animation);
   try {
     check_output_writable(out);
   } catch (const render::RenderError& e) {
@@ -405,19 +414,11 @@ int run_video(const RenderCommand& c, const CLI::App& cmd, const CommandContext&
   }
   for (int64_t f = selected.first; f <= selected.last; ++f) {
     AnimationClock clock{frame_clock(animation, f), f, animation.count()};
-    Evaluated fresh;
-    Evaluated* ev = &fresh;
-    if (probe.sources && same_clock(clock, probe_clock)) {
-      ev = &probe;
-    } else {
-      EvalOptions eval = c.eval;
-      eval.animation = clock;
-      DiagnosticSink frame_sink(std::cerr, ctx.color);
-      if (int rc = evaluate_scene(c, eval, frame_sink, fresh); rc != kExitOk) return rc;
-    }
+    Evaluated ev;
+    if (int rc = scene_at(c, ctx, clock, probe, probe_clock, ev); rc != kExitOk) return rc;
     if (!video) {
-      const int w = cmd.count("--width") ? c.width : ev->scene.settings.width;
-      const int h = cmd.count("--height") ? c.height : ev->scene.settings.height;
+      const int w = cmd.count("--width") ? c.width : ev.scene.settings.width;
+      const int h = cmd.count("--height") ? c.height : ev.scene.settings.height;
       try {
         render::VideoOptions vo;
         vo.fps = c.fps;
@@ -428,8 +429,7 @@ int run_video(const RenderCommand& c, const CLI::App& cmd, const CommandContext&
       }
     }
     const std::string label = fmt::format("{} frame {}", out, f);
-    if (int rc = render_scene(c, cmd, *ev, label, spec, sink, nullptr, video.get()); rc != kExitOk) return rc;
-    if (ev == &probe) probe.sources.reset();
+    if (int rc = render_scene(c, cmd, ev, label, spec, sink, nullptr, video.get()); rc != kExitOk) return rc;
   }
   try {
     video->finish();
