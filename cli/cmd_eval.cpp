@@ -10,11 +10,11 @@
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
 #include "cli/number_flags.hpp"
-#include "render/scene/resource_limits.hpp"
 #include "parser/diagnostics.hpp"
+#include "render/scene/resource_limits.hpp"
+#include "render/scene/scene_summary.hpp"
 #include "render/scene/source_ref.hpp"
 #include "runtime/evaluator.hpp"
-#include "runtime/scene_summary.hpp"
 
 namespace rts::cli {
 
@@ -111,8 +111,8 @@ void add_evaluating_command(CLI::App& app, CommandContext& ctx, const char* name
 void add_check_command(CLI::App& app, CommandContext& ctx) {
   add_evaluating_command(app, ctx, "check", "Evaluate a scene without rendering and summarise it",
                          [](const EvalResult& result) {
-                           runtime::SceneSummary s = runtime::summarize(result.scene);
-                           runtime::print_summary(std::cout, result.scene, s, result.seconds);
+                           render::SceneSummary s = render::summarize(result.scene);
+                           render::print_summary(std::cout, result.scene, s, result.seconds);
                          },
                          /*warn_unused=*/true);
 }

@@ -22,12 +22,8 @@ struct Restore {
   ~Restore() { ref = saved; }
 };
 
-// Object counts stop growing here (no overflow however groups multiply).
-constexpr uint64_t kSaturatedCount = uint64_t(1) << 62;
-// Placing a group of this many objects or more checks the memory budget first.
-constexpr uint64_t kObjectsPerMemoryCheck = 1 << 16;
-// What the renderer spends per object in the world (instance record, BVH share), roughly.
-constexpr std::size_t kBytesPerInstance = 256;
+using ObjectCount = Placement::ObjectCount;
+constexpr uint64_t kSaturatedCount = Placement::kSaturatedCount;
 
 void set_or_add(std::vector<Property>& props, Property p) {
   for (Property& q : props)
@@ -43,10 +39,9 @@ void set_or_add(std::vector<Property>& props, Property p) {
 void Interpreter::collect_properties(const ast::BlockBody& body, std::vector<Property>& props, bool allow_placement) {
   Restore<unsigned> loops(loop_depth_);
   Restore<bool> in_macro(in_macro_);
-  Restore<bool> placement(placement_allowed_);
+  Placement::Allow placement(placement_, allow_placement);
   loop_depth_ = 0;    // `break` cannot leave a block
   in_macro_ = false;  // nor can `return`
-  placement_allowed_ = allow_placement;
   check_stack(body.items.empty() ? current_loc_ : body.items.front().loc);
   push_scope();
   for (const ast::BlockItem& item : body.items) {
@@ -76,8 +71,7 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
       std::vector<render::Child> children;
       std::vector<Property> props;
       {
-        Restore<std::vector<render::Child>*> target(target_);
-        target_ = &children;
+        Placement::Into target(placement_, children);
         collect_properties(e.body, props, true);
       }
       if (!props.empty())
@@ -85,12 +79,7 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
              fmt::format("unknown property '{}' for group (a group takes no properties)", *props.front().name));
       // What the group expands to, checked now: groups of groups double at every level, and
       // 40 levels are 2^40 objects, which flattening would try to build.
-      ObjectCount count;
-      for (const render::Child& c : children) {
-        ObjectCount n = node_count(c.node);
-        count.shapes = std::min(count.shapes + n.shapes, kSaturatedCount);
-        count.lights = std::min(count.lights + n.lights, kSaturatedCount);
-      }
+      ObjectCount count = placement_.count(children);
       if (count.total() > options_.limits.max_objects)
         fail(e.loc, fmt::format("this group expands to {} objects, more than the limit of {} (groups inside groups "
                                 "multiply; raise the limit with --max-objects)",
@@ -100,7 +89,7 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
       Value v;
       v.type = Type::Object;
       v.id = builder_.group(std::move(children), ref(e.loc));
-      record_node(v.id, count);
+      placement_.record(v.id, count);
       return v;
     }
     case render::BlockCategory::Csg: {
@@ -109,16 +98,10 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
       std::vector<render::Child> children;
       std::vector<Property> props;
       {
-        Restore<std::vector<render::Child>*> target(target_);
-        target_ = &children;
+        Placement::Into target(placement_, children);
         collect_properties(e.body, props, true);
       }
-      ObjectCount count;
-      for (const render::Child& c : children) {
-        ObjectCount n = node_count(c.node);
-        count.shapes = std::min(count.shapes + n.shapes, kSaturatedCount);
-        count.lights = std::min(count.lights + n.lights, kSaturatedCount);
-      }
+      ObjectCount count = placement_.count(children);
       if (count.total() > render::kMaxCsgLeaves)
         fail(e.loc, fmt::format("this {} holds {} shapes, more than the {} one CSG block can combine", kind,
                                 count.total() >= kSaturatedCount ? std::string("billions of")
@@ -128,7 +111,7 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
       Value v;
       v.type = Type::Object;
       v.id = builder_.csg(kind, std::move(children), ps);
-      record_node(v.id, ObjectCount{1, 0});
+      placement_.record(v.id, ObjectCount{1, 0});
       return v;
     }
     case render::BlockCategory::Material:
@@ -182,10 +165,10 @@ Value Interpreter::define_object(const std::string& kind, SourceLoc loc, const s
   v.type = Type::Object;
   const bool shape = render::SceneBuilder::category(kind) == render::BlockCategory::Shape;
   v.id = shape ? builder_.shape(kind, ps) : builder_.light(kind, ps);
-  record_node(v.id, shape ? ObjectCount{1, 0} : ObjectCount{0, 1});
+  placement_.record(v.id, shape ? ObjectCount{1, 0} : ObjectCount{0, 1});
   for (const render::SceneWarning& w : builder_.take_warnings()) {
-    auto it = files_by_name_.find(w.where.file);
-    warnings_.warning(it != files_by_name_.end() ? SourceLoc{it->second, w.where.line, w.where.col} : loc, w.message);
+    const SourceFile* file = includes_.file_named(w.where.file);
+    warnings_.warning(file ? SourceLoc{file, w.where.line, w.where.col} : loc, w.message);
   }
   return v;
 }
@@ -419,31 +402,9 @@ uint32_t Interpreter::realize_texture(const Value& texture) {
 }
 
 void Interpreter::place(const Value& object, SourceLoc loc) {
-  if (!placement_allowed_)
-    fail(loc, "objects can only be placed at top level, in a group or in a macro (not inside another block)");
-  if (++placements_ > options_.limits.max_objects)
-    fail(loc,
-         fmt::format("more than {} objects placed (raise the limit with --max-objects)", options_.limits.max_objects));
+  placement_.admit(loc);
   render::Child c{realize_object(object), object_transform(object), ref(loc)};
-  if (target_) {
-    target_->push_back(c);
-    return;
-  }
-  ObjectCount n = node_count(c.node);
-  world_objects_.shapes = std::min(world_objects_.shapes + n.shapes, kSaturatedCount);
-  world_objects_.lights = std::min(world_objects_.lights + n.lights, kSaturatedCount);
-  if (world_objects_.total() > options_.limits.max_objects)
-    fail(loc, fmt::format("the scene holds more than {} objects once its groups are expanded (raise the limit with "
-                          "--max-objects)",
-                          options_.limits.max_objects));
-  // Every object in the world costs the renderer an instance record and BVH nodes.
-  if (n.total() >= kObjectsPerMemoryCheck) check_memory(n.total() * kBytesPerInstance, loc, "this group's objects");
-  builder_.place(c);
-}
-
-void Interpreter::record_node(uint32_t id, ObjectCount count) {
-  if (node_counts_.size() <= id) node_counts_.resize(std::size_t(id) + 1);
-  node_counts_[id] = count;
+  if (placement_.to_world(c, loc)) builder_.place(c);
 }
 
 }  // namespace rts::runtime

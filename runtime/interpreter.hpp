@@ -12,10 +12,7 @@
 
 #include <array>
 #include <cstdint>
-#include <deque>
-#include <map>
 #include <memory>
-#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -26,19 +23,17 @@
 #include "render/scene/probe.hpp"
 #include "render/scene/resource_limits.hpp"
 #include "render/scene/scene_builder.hpp"
+#include "runtime/binding.hpp"
+#include "runtime/budget.hpp"
+#include "runtime/defines.hpp"
+#include "runtime/includes.hpp"
+#include "runtime/placement.hpp"
 #include "runtime/evaluator.hpp"
 #include "runtime/value.hpp"
 
 namespace rts::runtime {
 
 enum class Flow : uint8_t { Normal, Break, Continue, Return };
-
-struct Binding {
-  ast::Symbol name;
-  Value value;
-  SourceLoc loc;  // where it was declared, for "already defined" notes
-  bool used = false;  // looked up at least once (for the unused-declaration warnings)
-};
 
 // One active macro call or include, for error notes.
 struct Context {
@@ -75,7 +70,7 @@ class Interpreter {
   // Runs the main file; throws LanguageError (with notes) on any error.
   void run(const SourceFile& main);
   render::SceneDesc finish() { return builder_.finish(); }
-  double parse_seconds() const { return parse_seconds_; }  // of every file parsed
+  double parse_seconds() const { return includes_.parse_seconds(); }  // of every file parsed
 
   // ---- services for builtins and blocks ----
   [[noreturn]] void fail(SourceLoc loc, std::string message) const;
@@ -91,31 +86,23 @@ class Interpreter {
   void add_notes(Diagnostic& d) const;
   // Converts a builder SceneError into a located LanguageError.
   LanguageError from_scene_error(const render::SceneError& e) const;
-  // Counts `n` evaluation steps of kind `what` ("macro calls", "list elements built"...)
-  // against --max-steps, and now and then the process's memory against --max-memory.
-  void spend(uint64_t n, SourceLoc loc, const char* what) {
-    steps_ += n;
-    if (steps_ > options_.limits.max_steps || steps_ >= next_memory_check_) check_budgets(loc, what);
+  // The budgets (runtime/budget.hpp), for builtins and blocks.
+  void spend(uint64_t n, SourceLoc loc, const char* what) { budget_.spend(n, loc, what); }
+  void check_memory(std::size_t bytes, SourceLoc loc, const char* what) const {
+    budget_.check_memory(bytes, loc, what);
   }
-  // Fails (located) unless `bytes` more fit under --max-memory; `what` names the value.
-  void check_memory(std::size_t bytes, SourceLoc loc, const char* what);
-  // The text of `v` (str, format, print, error, assert), its bytes counted as steps: a text
-  // past the steps left fails at `loc` before it is finished, so it never outgrows the budget.
-  std::string text_of(const Value& v, SourceLoc loc, bool quote_strings = false);
-  // The lowest stack address evaluation may reach before failing cleanly (0: unchecked).
-  void set_stack_floor(std::uintptr_t floor, std::size_t stack_bytes) {
-    stack_floor_ = floor;
-    stack_bytes_ = stack_bytes;
+  std::string text_of(const Value& v, SourceLoc loc, bool quote_strings = false) {
+    return budget_.text_of(v, loc, quote_strings);
   }
+  void set_stack_floor(std::uintptr_t floor, std::size_t stack_bytes) { budget_.set_stack_floor(floor, stack_bytes); }
   // trace(object, origin, direction): [hit point, unit normal], or none on a miss (trace.cpp).
   Value trace_object(const Value& object, const glm::dvec3& origin, const glm::dvec3& direction, SourceLoc loc);
-  uint64_t world_shapes() const { return world_objects_.shapes; }
-  uint64_t world_lights() const { return world_objects_.lights; }
+  uint64_t world_shapes() const { return placement_.world().shapes; }
+  uint64_t world_lights() const { return placement_.world().lights; }
   bool uses_clock() const { return uses_clock_; }  // read `clock`, `frame` or `frames`
 
  private:
   // statements (interpreter.cpp)
-  ast::Program timed_parse(const SourceFile& file);
   void run_program(const ast::Program& program, bool is_main);
   Flow exec_list(const ast::StmtList& stmts);
   Flow exec_body(const ast::Body& body);
@@ -125,18 +112,8 @@ class Interpreter {
   Flow exec_for(const ast::ForStmt& s);
   Flow exec_while(const ast::WhileStmt& s);
   void exec_include(const ast::IncludeStmt& s);
-  // The standard library's folder (options_.stdlib_dir, else found once); "" if none.
-  const std::string& stdlib_dir();
-  void count_iteration(SourceLoc loc);
-  // Warns about each material, texture, object and macro declared at the top level of the
-  // main file and never named again (options_.warn_unused).
-  void warn_unused(const SourceFile& main);
-  void check_budgets(SourceLoc loc, const char* what);
-  void check_stack(SourceLoc loc) {
-    if (stack_floor_ && reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0)) < stack_floor_)
-      stack_exhausted(loc);
-  }
-  [[noreturn]] void stack_exhausted(SourceLoc loc);
+  void count_iteration(SourceLoc loc) { budget_.count_iteration(loc); }
+  void check_stack(SourceLoc loc) const { budget_.check_stack(loc, macro_depth_); }
   // `xs = xs + e` and `xs += e` on a list or string: appends in place when the variable
   // holds the only reference. Returns false when the statement is not of that form.
   bool exec_append(const ast::AssignStmt& s);
@@ -155,7 +132,7 @@ class Interpreter {
   [[noreturn]] void undefined(ast::Symbol name, SourceLoc loc);
   std::size_t globals_end() const { return scopes_.size() > 1 ? scopes_[1] : bindings_.size(); }
 
-  // expressions (interpreter.cpp, ops.cpp)
+  // names and expressions (expressions.cpp, ops.cpp)
   Value eval(const ast::Expr& e);
   Value eval_name(const ast::NameExpr& e);
   bool animation_constant(ast::Symbol name, Value& out);
@@ -186,19 +163,14 @@ class Interpreter {
   render::ParamSet to_params(const std::string& kind, SourceLoc loc, const std::vector<Property>& props);
   render::ParamValue to_param(const Property& p, const std::string& kind);
   void place(const Value& object, SourceLoc loc);
-  // Shapes and lights a node stands for once groups are expanded (1 for a shape or light).
-  struct ObjectCount {
-    uint64_t shapes = 0, lights = 0;
-    uint64_t total() const { return shapes + lights; }
-  };
-  void record_node(uint32_t id, ObjectCount count);
-  ObjectCount node_count(uint32_t id) const {
-    return id < node_counts_.size() ? node_counts_[id] : ObjectCount{};
-  }
 
   SourceManager& sources_;
   const EvalOptions& options_;
   DiagnosticSink& warnings_;
+  Budget budget_;
+  Includes includes_;
+  Defines defines_;
+  Placement placement_;
   render::SceneBuilder builder_;
 
   std::vector<Binding> bindings_;
@@ -210,29 +182,12 @@ class Interpreter {
   bool in_macro_ = false;    // `return` allowed
   Value return_value_;
 
-  double parse_seconds_ = 0.0;
-  std::string stdlib_dir_;  // see stdlib_dir()
   // trace(): the World of the object traced last, rebuilt when another object is traced.
   std::unique_ptr<render::ObjectProbe> probe_;
   render::Child probe_key_;
   std::size_t probe_shapes_ = 0;  // shapes defined when it was built (ids stay valid; a guard)
-  bool stdlib_found_ = false;
   bool uses_clock_ = false;
-  uint64_t iterations_ = 0;
-  std::size_t placements_ = 0;
-  uint64_t steps_ = 0;
-  uint64_t next_memory_check_ = 0;
   SourceLoc current_loc_;  // the statement running now (for out-of-memory errors)
-  std::uintptr_t stack_floor_ = 0;
-  std::size_t stack_bytes_ = 0;
-  std::vector<ObjectCount> node_counts_;  // by NodeId
-  ObjectCount world_objects_;             // placed in the world, groups expanded
-  render::ReadPolicy read_policy_;
-
-  // Placement target: the world (null), a group's children, or "nowhere" (inside a
-  // non-group block, where placing an object is an error).
-  std::vector<render::Child>* target_ = nullptr;
-  bool placement_allowed_ = true;
 
   // Built-in functions by symbol (a binding of the same name shadows them), with a small
   // direct-mapped cache in front.
@@ -245,23 +200,6 @@ class Interpreter {
   uint32_t find_builtin(ast::Symbol name);
   std::unordered_map<ast::Symbol, uint32_t> builtins_;
   std::array<BuiltinCacheEntry, kBuiltinCacheSize> builtin_cache_{};
-
-  // Files: parsed programs (kept alive: macros point into them), include cache, cycle check.
-  std::deque<ast::Program> programs_;
-  std::map<std::string, const ast::Program*> parsed_;  // canonical path → program
-  std::vector<std::string> include_chain_;             // canonical paths being run
-  std::set<std::string> included_;                     // canonical paths run to the end (include once)
-  std::unordered_map<const char*, const SourceFile*> files_by_name_;
-
-  // -D defines: parsed expressions, and whether each matched a top-level let.
-  struct DefineExpr {
-    ast::Symbol name;
-    const ast::Expr* expr;
-    std::string text;
-    bool used = false;
-  };
-  std::vector<DefineExpr> defines_;
-  const ast::Program* main_program_ = nullptr;
 };
 
 }  // namespace rts::runtime

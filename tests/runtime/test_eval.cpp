@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "eval_helpers.hpp"
-#include "runtime/scene_summary.hpp"
+#include "render/scene/scene_summary.hpp"
 
 using namespace rts;
 using namespace rts::render;
@@ -353,7 +353,7 @@ TEST_CASE("check's summary counts placed instances through groups and bounds the
       "pair scale 2\n"
       "plane { normal = <0, 1, 0> }\n"
       "point_light { position = <0, 5, 0> }\n");
-  runtime::SceneSummary sum = runtime::summarize(s);
+  render::SceneSummary sum = render::summarize(s);
   CHECK(sum.shapes["sphere"] == 4);  // one definition: 2 group instances x 2 children
   CHECK(sum.shapes["plane"] == 1);
   CHECK(sum.lights["point_light"] == 1);

@@ -1,4 +1,4 @@
-#include "runtime/scene_summary.hpp"
+#include "render/scene/scene_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,21 +8,18 @@
 
 #include "render/geometry/shapes/shape_kinds.hpp"
 
-namespace rts::runtime {
+namespace rts::render {
 
 namespace {
 
-using render::Mat4;
-using render::Vec3;
-
 // Object-space bounds of a shape (its descriptor's bounds()); false for unbounded shapes
 // (planes) and empty meshes.
-bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Vec3& lo, Vec3& hi) {
+bool shape_bounds(const SceneDesc& scene, const ShapeDesc& s, Vec3& lo, Vec3& hi) {
   return std::visit(
       [&](const auto& g) {
         using T = std::decay_t<decltype(g)>;
-        if constexpr (std::is_same_v<T, render::MeshRef>) {
-          const render::MeshData& m = *scene.meshes[g.mesh];
+        if constexpr (std::is_same_v<T, MeshRef>) {
+          const MeshData& m = *scene.meshes[g.mesh];
           if (m.positions.empty()) return false;
           lo = Vec3(std::numeric_limits<double>::max());
           hi = -lo;
@@ -31,8 +28,8 @@ bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Ve
             hi = glm::max(hi, m.origin + Vec3(p));
           }
           return true;
-        } else if constexpr (render::ShapeTraits<T>::kInfo.bounded) {
-          const render::AABB b = bounds(g);
+        } else if constexpr (ShapeTraits<T>::kInfo.bounded) {
+          const AABB b = bounds(g);
           lo = b.lo;
           hi = b.hi;
           return true;
@@ -44,28 +41,28 @@ bool shape_bounds(const render::SceneDesc& scene, const render::ShapeDesc& s, Ve
 }
 
 
-const char* light_kind(render::LightKind k) {
+const char* light_kind(LightKind k) {
   switch (k) {
-    case render::LightKind::Point:
+    case LightKind::Point:
       return "point_light";
-    case render::LightKind::Spot:
+    case LightKind::Spot:
       return "spot_light";
-    case render::LightKind::Directional:
+    case LightKind::Directional:
       return "directional_light";
-    case render::LightKind::Area:
+    case LightKind::Area:
       return "area_light";
   }
   return "light";
 }
 
 struct Walker {
-  const render::SceneDesc& scene;
+  const SceneDesc& scene;
   SceneSummary& out;
   std::vector<std::pair<bool, std::pair<Vec3, Vec3>>> shape_box;  // cached per shape
 
   // Iterative: groups may nest as deep as macro recursion goes (far past the C++ stack).
-  void walk(render::NodeId root, const Mat4& root_transform) {
-    std::vector<std::pair<render::NodeId, Mat4>> todo{{root, root_transform}};
+  void walk(NodeId root, const Mat4& root_transform) {
+    std::vector<std::pair<NodeId, Mat4>> todo{{root, root_transform}};
     while (!todo.empty()) {
       auto [id, m] = todo.back();
       todo.pop_back();
@@ -73,18 +70,18 @@ struct Walker {
     }
   }
 
-  void visit(render::NodeId id, const Mat4& m, std::vector<std::pair<render::NodeId, Mat4>>& todo) {
+  void visit(NodeId id, const Mat4& m, std::vector<std::pair<NodeId, Mat4>>& todo) {
     ++out.instances;
-    const render::Node& n = scene.nodes[id];
+    const Node& n = scene.nodes[id];
     switch (n.kind) {
-      case render::NodeKind::Shape: {
-        const render::ShapeDesc& s = scene.shapes[n.index];
-        ++out.shapes[std::string(render::shape_name(s.geometry))];
-        if (auto* mesh = std::get_if<render::MeshRef>(&s.geometry))
+      case NodeKind::Shape: {
+        const ShapeDesc& s = scene.shapes[n.index];
+        ++out.shapes[std::string(shape_name(s.geometry))];
+        if (auto* mesh = std::get_if<MeshRef>(&s.geometry))
           out.triangles += scene.meshes[mesh->mesh]->indices.size() / 3;
         auto& [bounded, box] = shape_box[n.index];
         if (!bounded) {
-          out.unbounded = out.unbounded || std::holds_alternative<render::Plane>(s.geometry);
+          out.unbounded = out.unbounded || std::holds_alternative<Plane>(s.geometry);
           return;
         }
         for (int c = 0; c < 8; ++c) {
@@ -100,16 +97,16 @@ struct Walker {
         }
         return;
       }
-      case render::NodeKind::Light:
+      case NodeKind::Light:
         ++out.lights[light_kind(scene.lights[n.index].kind)];
         return;
-      case render::NodeKind::Group:
-        for (const render::Child& c : scene.groups[n.index].children) todo.emplace_back(c.node, m * c.transform);
+      case NodeKind::Group:
+        for (const Child& c : scene.groups[n.index].children) todo.emplace_back(c.node, m * c.transform);
         return;
-      case render::NodeKind::Csg:
+      case NodeKind::Csg:
         // Counted by its shapes (a loose bound: a difference's holes and an intersection's
         // cuts do not shrink it).
-        for (const render::Child& c : scene.csgs[n.index].children) todo.emplace_back(c.node, m * c.transform);
+        for (const Child& c : scene.csgs[n.index].children) todo.emplace_back(c.node, m * c.transform);
         return;
     }
   }
@@ -124,7 +121,7 @@ std::string vec(const Vec3& v) { return fmt::format("<{}, {}, {}>", num(v.x), nu
 
 }  // namespace
 
-SceneSummary summarize(const render::SceneDesc& scene) {
+SceneSummary summarize(const SceneDesc& scene) {
   SceneSummary s;
   s.shape_definitions = scene.shapes.size();
   s.materials = scene.materials.size();
@@ -138,11 +135,11 @@ SceneSummary summarize(const render::SceneDesc& scene) {
     bool b = shape_bounds(scene, scene.shapes[i], lo, hi);
     w.shape_box[i] = {b, {lo, hi}};
   }
-  for (const render::Child& c : scene.roots) w.walk(c.node, c.transform);
+  for (const Child& c : scene.roots) w.walk(c.node, c.transform);
   return s;
 }
 
-void print_summary(std::ostream& out, const render::SceneDesc& scene, const SceneSummary& s, double seconds) {
+void print_summary(std::ostream& out, const SceneDesc& scene, const SceneSummary& s, double seconds) {
   std::size_t placed_shapes = 0, placed_lights = 0;
   for (auto& [k, n] : s.shapes) placed_shapes += n;
   for (auto& [k, n] : s.lights) placed_lights += n;
@@ -159,16 +156,16 @@ void print_summary(std::ostream& out, const render::SceneDesc& scene, const Scen
                        s.unbounded ? " (plus unbounded planes)" : "");
   else
     out << fmt::format("bounds:     none{}\n", s.unbounded ? " (only unbounded planes)" : "");
-  const render::CameraDesc& c = scene.camera;
+  const CameraDesc& c = scene.camera;
   out << fmt::format("camera:     {}{} at {} looking at {}, {}\n",
-                     c.projection == render::Projection::Perspective ? "perspective" : "orthographic",
+                     c.projection == Projection::Perspective ? "perspective" : "orthographic",
                      scene.has_camera ? "" : " (default)", vec(c.position), vec(c.look_at),
-                     c.projection == render::Projection::Perspective ? fmt::format("fov {}", num(c.fov))
+                     c.projection == Projection::Perspective ? fmt::format("fov {}", num(c.fov))
                                                                      : fmt::format("view width {}", num(c.view_width)));
-  const render::Settings& st = scene.settings;
+  const Settings& st = scene.settings;
   out << fmt::format("image:      {}x{}, {} sample{} per pixel, max depth {}\n", st.width, st.height, st.samples,
                      st.samples == 1 ? "" : "s", st.max_depth);
   out << fmt::format("evaluated in {:.3f} s\n", seconds);
 }
 
-}  // namespace rts::runtime
+}  // namespace rts::render

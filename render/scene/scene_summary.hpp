@@ -1,4 +1,5 @@
-// A summary of an evaluated scene for `rts check`: what it contains, how many instances,
+// A summary of a scene for `rts check` (beside SceneDesc::dump, scene_dump.cpp, which `rts
+// eval` prints): what it contains, how many instances,
 // where it is (world-space bounds of everything bounded), camera and image settings.
 #pragma once
 
@@ -9,7 +10,7 @@
 
 #include "render/scene/scene.hpp"
 
-namespace rts::runtime {
+namespace rts::render {
 
 struct SceneSummary {
   std::map<std::string, std::size_t> shapes;  // kind → placed instances (world-space count)
@@ -19,13 +20,13 @@ struct SceneSummary {
   std::size_t triangles = 0;                  // mesh triangles over all placed instances
   std::size_t materials = 0, textures = 0, meshes = 0, groups = 0;
   bool has_bounds = false;  // false when nothing bounded is placed
-  render::Vec3 bounds_min{0.0}, bounds_max{0.0};
+  Vec3 bounds_min{0.0}, bounds_max{0.0};
   bool unbounded = false;  // a plane is placed (not in the bounds)
 };
 
-SceneSummary summarize(const render::SceneDesc& scene);
+SceneSummary summarize(const SceneDesc& scene);
 
 // The `rts check` report; `seconds` is the evaluation time.
-void print_summary(std::ostream& out, const render::SceneDesc& scene, const SceneSummary& s, double seconds);
+void print_summary(std::ostream& out, const SceneDesc& scene, const SceneSummary& s, double seconds);
 
-}  // namespace rts::runtime
+}  // namespace rts::render
