@@ -244,8 +244,10 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
     std::cerr << "rts: " << out << ": " << result.stats.summary() << "\n";
     if (dist) {
       const dist::ExchangeStats& x = dist->exchange->stats();
-      std::cerr << fmt::format("rts: {}: {} tiles: {} rendered by rank 0, {} by the other {} rank(s), {} from the "
-                               "checkpoint\n", out, x.tiles, x.rendered_here, x.rendered_remote,
+      const std::string rounds =
+          x.rounds > 1 ? fmt::format(" over {} rounds ({} left alone: nothing to add)", x.rounds, x.skipped) : "";
+      std::cerr << fmt::format("rts: {}: {} tiles{}: {} rendered by rank 0, {} by the other {} rank(s), {} from the "
+                               "checkpoint\n", out, x.tiles, rounds, x.rendered_here, x.rendered_remote,
                                dist->mpi->size() - 1, x.from_checkpoint);
       if (c.stats.print && x.rendered_here > 0) {
         const double per_tile = x.render_seconds_here / x.rendered_here;
@@ -487,9 +489,6 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   if (distributed && (frames_flag || video || task.count > 1))
     throw CLI::ValidationError("--checkpoint/mpirun", "distribute one still; for an animation's frames use "
                                                       "--task-index/--task-count or a Slurm array (docs/scale-out.md)");
-  if (distributed && (c.target_error > 0 || c.time_limit > 0))
-    throw CLI::ValidationError("--target-error/--time-limit", "are not available with mpirun or --checkpoint yet: "
-                                                              "render a fixed number of samples (--samples)");
   // Under mpirun every rank evaluates the scene; rank 0 alone reports what it finds.
   std::ostringstream rank_messages;
   DiagnosticSink sink(mpi.rank() == 0 ? std::cerr : rank_messages, ctx.color && mpi.rank() == 0);

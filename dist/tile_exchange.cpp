@@ -1,5 +1,6 @@
 #include "dist/tile_exchange.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cstring>
 #include <deque>
@@ -30,22 +31,28 @@ constexpr int kTagRequest = 1, kTagAssign = 2, kTagResult = 3;
 
 }  // namespace
 
-void TileQueueExchange::run(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile) {
-  stats_ = ExchangeStats{};
-  stats_.tiles = tile_count;
+void TileQueueExchange::run(const Round& round, const RenderTile& render_tile, const StoreTile& store_tile) {
+  stats_.tiles += round.tile_count;
+  ++stats_.rounds;
   if (mpi_.rank() == 0)
-    run_root(tile_count, render_tile, store_tile);
+    run_root(round, render_tile, store_tile);
   else
     run_worker(render_tile);
 }
 
-void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile) {
+void TileQueueExchange::run_root(const Round& round, const RenderTile& render_tile, const StoreTile& store_tile) {
+  const int tile_count = round.tile_count;
   std::vector<char> stored(static_cast<std::size_t>(tile_count), 0);
   if (checkpoint_) {
-    for (const auto& [tile, payload] : checkpoint_->finished()) {
-      if (tile >= tile_count)
+    // A one-pass render's journal holds units 0..tiles-1; a progressive one's, every round's
+    // units (round × tiles + tile), read back round by round.
+    const bool one_pass = round.prepare == nullptr;
+    for (const auto& [unit, payload] : checkpoint_->finished()) {
+      if (one_pass && (unit < 0 || unit >= tile_count))
         throw render::RenderError({}, fmt::format("checkpoint '{}' holds tile {} of an image of {} tiles",
-                                                  checkpoint_->path(), tile, tile_count));
+                                                  checkpoint_->path(), unit, tile_count));
+      if (unit < round.first_unit || unit >= round.first_unit + tile_count) continue;
+      const int tile = unit - round.first_unit;
       store_tile(tile, payload);
       stored[static_cast<std::size_t>(tile)] = 1;
       ++stats_.from_checkpoint;
@@ -55,21 +62,32 @@ void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, 
   for (int t = 0; t < tile_count; ++t)
     if (!stored[static_cast<std::size_t>(t)]) todo.push_back(t);
 
-  std::mutex mutex;  // guards next, done_here, local_error
+  std::mutex mutex;  // guards next, done_here, local_error and the prepare calls
   std::size_t next = 0;
-  auto take = [&] {
+  // Tiles not yet stored; a skipped tile is never stored, so it is counted off when skipped.
+  std::atomic<std::size_t> remaining{todo.size()};
+  // The next tile to render and its input, or -1 when none is left.
+  auto take = [&](std::vector<unsigned char>& input) {
     std::lock_guard lock(mutex);
-    return next < todo.size() ? todo[next++] : -1;
+    while (next < todo.size()) {
+      const int t = todo[next++];
+      input.clear();
+      if (!round.prepare || (*round.prepare)(t, input)) return t;
+      ++stats_.skipped;
+      --remaining;
+    }
+    return -1;
   };
   std::deque<std::pair<int, std::vector<unsigned char>>> done_here;
   std::exception_ptr local_error;
   // Rank 0 renders as well, on a thread of its own, while this thread serves the other ranks.
   std::thread local([&] {
     try {
-      for (int t = take(); t >= 0; t = take()) {
+      std::vector<unsigned char> input;
+      for (int t = take(input); t >= 0; t = take(input)) {
         std::vector<unsigned char> payload;
         const auto start = std::chrono::steady_clock::now();
-        render_tile(t, payload);
+        render_tile(t, input, payload);
         stats_.render_seconds_here += seconds_since(start);
         std::lock_guard lock(mutex);
         done_here.emplace_back(t, std::move(payload));
@@ -81,11 +99,10 @@ void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, 
     }
   });
 
-  std::size_t remaining = todo.size();
   int workers = mpi_.active() ? mpi_.size() - 1 : 0;
   auto keep = [&](int tile, const std::vector<unsigned char>& payload) {
     store_tile(tile, payload);
-    if (checkpoint_) checkpoint_->append(tile, payload);
+    if (checkpoint_) checkpoint_->append(round.first_unit + tile, payload);
     --remaining;
   };
   try {
@@ -111,8 +128,12 @@ void TileQueueExchange::run_root(int tile_count, const RenderTile& render_tile, 
         if (flag && st.MPI_TAG == kTagRequest) {
           int unused = 0;
           MPI_Recv(&unused, 1, MPI_INT, st.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-          int tile = take();
-          MPI_Send(&tile, 1, MPI_INT, st.MPI_SOURCE, kTagAssign, MPI_COMM_WORLD);
+          std::vector<unsigned char> input;
+          int tile = take(input);
+          std::vector<unsigned char> msg(sizeof tile + input.size());
+          std::memcpy(msg.data(), &tile, sizeof tile);
+          if (!input.empty()) std::memcpy(msg.data() + sizeof tile, input.data(), input.size());
+          MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_BYTE, st.MPI_SOURCE, kTagAssign, MPI_COMM_WORLD);
           if (tile < 0) --workers;
           busy = true;
           stats_.serve_seconds += seconds_since(start);
@@ -153,11 +174,20 @@ void TileQueueExchange::run_worker(const RenderTile& render_tile) {
   for (;;) {
     int ask = 0, tile = -1;
     MPI_Send(&ask, 1, MPI_INT, 0, kTagRequest, MPI_COMM_WORLD);
-    MPI_Recv(&tile, 1, MPI_INT, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    // The assignment: the tile's number, then its input (empty for a one-pass render).
+    MPI_Status st;
+    MPI_Probe(0, kTagAssign, MPI_COMM_WORLD, &st);
+    int bytes = 0;
+    MPI_Get_count(&st, MPI_BYTE, &bytes);
+    std::vector<unsigned char> assign(static_cast<std::size_t>(bytes));
+    MPI_Recv(assign.data(), bytes, MPI_BYTE, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (assign.size() < sizeof tile) throw render::RenderError({}, "rank 0 sent a malformed tile assignment");
+    std::memcpy(&tile, assign.data(), sizeof tile);
     if (tile < 0) break;
+    const std::vector<unsigned char> input(assign.begin() + sizeof tile, assign.end());
     std::vector<unsigned char> payload;
     const auto start = std::chrono::steady_clock::now();
-    render_tile(tile, payload);
+    render_tile(tile, input, payload);
     stats_.render_seconds_here += seconds_since(start);
     std::vector<unsigned char> msg(sizeof tile + payload.size());
     std::memcpy(msg.data(), &tile, sizeof tile);

@@ -15,7 +15,9 @@
 namespace rts::dist {
 
 struct ExchangeStats {
-  int tiles = 0;                   // in the image
+  int tiles = 0;                   // in the image (summed over the rounds of a progressive render)
+  int rounds = 0;                  // 1, or a progressive render's passes and adaptive rounds
+  int skipped = 0;                 // tiles a round left alone (nothing to add, or out of time)
   int from_checkpoint = 0;         // read back from the journal instead of rendered
   int rendered_here = 0;           // by this process
   int rendered_remote = 0;         // gathered from other ranks (root only)
@@ -30,12 +32,13 @@ class TileQueueExchange final : public render::TileExchange {
  public:
   // `checkpoint`: rank 0's journal, or null. Both must outlive run().
   TileQueueExchange(const MpiSession& mpi, Checkpoint* checkpoint) : mpi_(mpi), checkpoint_(checkpoint) {}
-  void run(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile) override;
+  void run(const Round& round, const RenderTile& render_tile, const StoreTile& store_tile) override;
+  bool another_round(bool more) override { return mpi_.from_root(more ? 1 : 0) != 0; }
   bool root() const override { return mpi_.rank() == 0; }
   const ExchangeStats& stats() const { return stats_; }
 
  private:
-  void run_root(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile);
+  void run_root(const Round& round, const RenderTile& render_tile, const StoreTile& store_tile);
   void run_worker(const RenderTile& render_tile);
 
   const MpiSession& mpi_;

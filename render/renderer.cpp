@@ -15,6 +15,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "render/sample/accum_payload.hpp"
 #include "render/sample/adaptive.hpp"
 #include "render/sample/camera.hpp"
 #include "render/scene/features.hpp"
@@ -292,18 +293,15 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   };
 
   auto render_start = Clock::now();
-  if (options.exchange) {
+  auto tile_rect = [&](int tile) {
+    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+    return TileRect{x0, y0, std::min(x0 + kTileSize, rs.width), std::min(y0 + kTileSize, rs.height)};
+  };
+  if (options.exchange && !progressive) {
     // Shared with other processes: the same per-pixel work as the one-pass branch below,
     // packed per tile (tile_payload.hpp) and gathered on the root.
-    if (progressive)
-      throw RenderError({}, "--target-error and --time-limit are not available under mpirun yet: render a fixed "
-                            "number of samples (--samples)");
-    auto rect = [&](int tile) {
-      const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-      return TileRect{x0, y0, std::min(x0 + kTileSize, rs.width), std::min(y0 + kTileSize, rs.height)};
-    };
-    auto render_tile = [&](int tile, std::vector<unsigned char>& payload) {
-      const TileRect r = rect(tile);
+    auto render_tile = [&](int tile, const std::vector<unsigned char>&, std::vector<unsigned char>& payload) {
+      const TileRect r = tile_rect(tile);
       std::vector<RayCounters> row_counters(static_cast<std::size_t>(r.y1 - r.y0));
       arena.execute([&] {
         tbb::parallel_for(r.y0, r.y1, [&](int y) {
@@ -321,11 +319,116 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
     };
     auto store_tile = [&](int tile, const std::vector<unsigned char>& payload) {
       RayCounters counters;
-      unpack_tile(frame, rect(tile), payload, counters);
+      unpack_tile(frame, tile_rect(tile), payload, counters);
       stats.rays += counters;
     };
-    options.exchange->run(tile_count, render_tile, store_tile);
+    options.exchange->run({0, tile_count, nullptr}, render_tile, store_tile);
     err.passes = 1;
+  } else if (options.exchange) {
+    // Progressive and shared: the passes and adaptive rounds of the branch at the end, each a
+    // round of tiles among the processes. The root keeps every pixel's sample sums and plans
+    // each round from the whole image, exactly as one process does; a tile travels with its
+    // pixels' sums and the samples each takes (accum_payload.hpp), so the image, the
+    // estimates and the plan are the bytes of a one-process render for any process count. A
+    // time limit is checked between tiles (one process checks between pixels).
+    TileExchange& ex = *options.exchange;
+    const std::size_t count = ex.root() ? static_cast<std::size_t>(rs.width) * static_cast<std::size_t>(rs.height) : 0;
+    std::vector<PixelAccum> accs;
+    std::vector<uint32_t> add;
+    try {
+      accs.resize(count);
+      add.resize(count);
+    } catch (const std::bad_alloc&) {
+      throw RenderError(scene.settings.loc, fmt::format("out of memory for the sample sums of a {}x{} image",
+                                                        rs.width, rs.height));
+    }
+    std::atomic<bool> out_of_time{false};
+    auto check_time = [&] {
+      if (options.time_limit > 0 && seconds_since(render_start) >= options.time_limit) out_of_time = true;
+      return out_of_time.load();
+    };
+    int round = 0;
+    const TileExchange::PrepareTile prepare = [&](int tile, std::vector<unsigned char>& input) {
+      if (round > 0 && check_time()) return false;
+      const TileRect r = tile_rect(tile);
+      bool any = false;
+      for (int y = r.y0; y < r.y1 && !any; ++y)
+        for (int x = r.x0; x < r.x1 && !any; ++x) any = add[frame.index(x, y)] > 0;
+      if (any) pack_round_input(accs, add, rs.width, r, input);
+      return any;
+    };
+    auto render_tile = [&](int tile, const std::vector<unsigned char>& input, std::vector<unsigned char>& payload) {
+      const TileRect r = tile_rect(tile);
+      std::vector<PixelAccum> tile_accs;
+      std::vector<uint32_t> tile_add;
+      unpack_round_input(input, r, tile_accs, tile_add);
+      const int w = r.x1 - r.x0;
+      std::vector<RayCounters> row_counters(static_cast<std::size_t>(r.y1 - r.y0));
+      arena.execute([&] {
+        tbb::parallel_for(r.y0, r.y1, [&](int y) {
+          RayCounters& counters = row_counters[static_cast<std::size_t>(y - r.y0)];
+          for (int x = r.x0; x < r.x1; ++x) {
+            const std::size_t k = static_cast<std::size_t>(y - r.y0) * static_cast<std::size_t>(w) +
+                                  static_cast<std::size_t>(x - r.x0);
+            if (tile_add[k] > 0) pixels.add_samples(x, y, tile_add[k], tile_accs[k], counters);
+          }
+        });
+      });
+      RayCounters total;
+      for (const RayCounters& c : row_counters) total += c;
+      pack_round_result(total, tile_accs, payload);
+    };
+    auto store_tile = [&](int tile, const std::vector<unsigned char>& payload) {
+      RayCounters counters;
+      unpack_round_result(payload, tile_rect(tile), rs.width, accs, counters);
+      stats.rays += counters;
+    };
+    auto run_round = [&] {
+      ex.run({round * tile_count, tile_count, &prepare}, render_tile, store_tile);
+      ++round;
+      ++err.passes;
+    };
+    if (!ex.root()) {
+      run_round();
+      while (ex.another_round(false)) run_round();
+    } else {
+      // The same passes and stopping rules as one process (the last branch below).
+      const std::vector<uint32_t> goals = adaptive ? std::vector<uint32_t>{first_goal} : pass_schedule(spp, batches);
+      for (std::size_t p = 0; p < goals.size(); ++p) {
+        if (p > 0 && check_time()) break;
+        for (std::size_t i = 0; i < count; ++i) add[i] = goals[p] - accs[i].taken;
+        if (p > 0) ex.another_round(true);
+        run_round();
+      }
+      if (adaptive) {
+        const double target_mse = options.target_error * options.target_error;
+        std::vector<PixelEstimate> est(count);
+        std::vector<uint32_t> taken(count);
+        while (!check_time()) {
+          double mse = 0;
+          for (std::size_t i = 0; i < count; ++i) {
+            est[i] = estimate_pixel(accs[i], batches);
+            taken[i] = accs[i].taken;
+            mse += (est[i].variance.x + est[i].variance.y + est[i].variance.z) / 3.0;
+          }
+          if (mse / static_cast<double>(count) <= target_mse) {
+            err.target_reached = true;
+            break;
+          }
+          std::vector<double> var = channel_mean_variance(est);
+          AdaptiveInput in{rs.width, rs.height, &var, &taken, spp, static_cast<uint32_t>(batches), target_mse};
+          add = plan_adaptive_round(in);
+          if (std::all_of(add.begin(), add.end(), [](uint32_t a) { return a == 0; })) break;
+          ex.another_round(true);
+          run_round();
+        }
+      }
+      ex.another_round(false);
+      err.stopped_by_time = out_of_time.load();
+      for_each_tile(
+          [&](int x, int y, RayCounters& counters) { pixels.store(x, y, accs[frame.index(x, y)], frame, counters); },
+          nullptr, nullptr);
+    }
   } else if (!progressive) {
     // One pass: each pixel takes all its samples at once; nothing is kept between pixels.
     Progress progress(static_cast<std::size_t>(tile_count), options.progress);

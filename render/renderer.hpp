@@ -20,14 +20,29 @@ namespace rts::render {
 // so the image does not depend on which process rendered which tile.
 class TileExchange {
  public:
-  using RenderTile = std::function<void(int tile, std::vector<unsigned char>& payload)>;
+  // Root only: what rendering `tile` needs in this round (empty for a one-pass render, the
+  // tile's sample sums and the samples to add for a progressive one); false skips the tile
+  // this round (nothing to add, or out of time).
+  using PrepareTile = std::function<bool(int tile, std::vector<unsigned char>& input)>;
+  using RenderTile =
+      std::function<void(int tile, const std::vector<unsigned char>& input, std::vector<unsigned char>& payload)>;
   using StoreTile = std::function<void(int tile, const std::vector<unsigned char>& payload)>;
+  // One round of work: `tile_count` tiles, known to checkpoints as units first_unit + tile (a
+  // progressive render's rounds number their units apart, so a resume finds each round's).
+  struct Round {
+    int first_unit = 0;
+    int tile_count = 0;
+    const PrepareTile* prepare = nullptr;  // null: every tile, with an empty input
+  };
   virtual ~TileExchange() = default;
-  // Renders `tile_count` tiles among the processes: `render_tile` renders a tile here and packs
+  // Renders a round's tiles among the processes: `render_tile` renders a tile here and packs
   // it; `store_tile` unpacks a tile (from here, another process or a checkpoint) into this
   // process's image and statistics. Returns when the root has stored every tile, or when a
   // worker has no more work.
-  virtual void run(int tile_count, const RenderTile& render_tile, const StoreTile& store_tile) = 0;
+  virtual void run(const Round& round, const RenderTile& render_tile, const StoreTile& store_tile) = 0;
+  // Between the rounds of a progressive render: the root passes whether another round follows
+  // and every process gets the root's answer back (a collective: every process calls it).
+  virtual bool another_round(bool more) = 0;
   // True on the process that gathers the image (the only one whose result is complete).
   virtual bool root() const = 0;
 };

@@ -32,6 +32,25 @@ for n in 1 2 3 4; do
 done
 expect_grep "$TMP/err" "by the other 3 rank" "rank 0 reports the split"
 
+# Adaptive sampling: rank 0 plans every round from the whole image, so its decisions (the
+# samples each pixel takes), the image, the error AOV and the error estimate are one process's
+# for any rank count.
+errline() { grep -o '[0-9.]* spp on average.*' "$1" | head -1; }
+ADAPT=(--samples 64 --target-error 0.004 --aov error --no-progress)
+"$RTS" render "$TMP/s.rts" -o "$TMP/ad.png" "${ADAPT[@]}" 2>"$TMP/ad.err" ||
+  { echo "FAIL: the single-process adaptive render"; cat "$TMP/ad.err"; exit 1; }
+for n in 1 3; do
+  expect_exit 0 "adaptive under mpirun -np $n" -- "${MPIRUN[@]}" "$n" "$RTS" render "$TMP/s.rts" -o "$TMP/ad$n.png" \
+      "${ADAPT[@]}" --threads 1
+  for f in "" .error; do
+    cmp -s "$TMP/ad$f.png" "$TMP/ad$n$f.png" || { echo "FAIL: adaptive -np $n: ad$n$f.png differs from one process's"; FAILS=$((FAILS + 1)); }
+  done
+  [[ "$(errline "$TMP/err")" == "$(errline "$TMP/ad.err")" && -n "$(errline "$TMP/ad.err")" ]] ||
+    { echo "FAIL: adaptive -np $n reports another error estimate:"; errline "$TMP/err"; errline "$TMP/ad.err"; FAILS=$((FAILS + 1)); }
+  [[ "$(rays "$TMP/err")" == "$(rays "$TMP/ad.err")" ]] || { echo "FAIL: adaptive -np $n counts other rays"; FAILS=$((FAILS + 1)); }
+done
+expect_grep "$TMP/err" "over [2-9][0-9]* rounds" "the adaptive render ran in rounds"
+
 # Killed mid-render, resumed from the checkpoint: the same bytes. The heavier scene makes sure
 # the kill lands while tiles remain.
 sed 's/samples = 8 }/samples = 256 }/' "$TMP/s.rts" >"$TMP/h.rts"
@@ -59,6 +78,15 @@ pkill -9 -f -- "--checkpoint $TMP/ck2" 2>/dev/null
 expect_exit 0 "resume under mpirun -np 2" -- "${MPIRUN[@]}" 2 "$RTS" render "$TMP/h.rts" -o "$TMP/h2.png" --threads 1 --checkpoint "$TMP/ck2"
 cmp -s "$TMP/h.png" "$TMP/h2.png" || { echo "FAIL: the image resumed under mpirun differs"; FAILS=$((FAILS + 1)); }
 
+# An adaptive render killed and resumed: each round's tiles come back from the journal.
+sed 's/samples = 8 }/samples = 512 }/' "$TMP/s.rts" >"$TMP/ha.rts"
+HA=(--target-error 0.002 --no-progress --threads 1)
+"$RTS" render "$TMP/ha.rts" -o "$TMP/ha.png" "${HA[@]}" 2>/dev/null
+kill_after_tiles "$TMP/ck3/rts-checkpoint.journal" "$RTS" render "$TMP/ha.rts" -o "$TMP/ha1.png" "${HA[@]}" --checkpoint "$TMP/ck3"
+expect_exit 0 "resume an adaptive render" -- "${MPIRUN[@]}" 2 "$RTS" render "$TMP/ha.rts" -o "$TMP/ha1.png" "${HA[@]}" --checkpoint "$TMP/ck3"
+expect_grep "$TMP/err" "[1-9][0-9]* from the checkpoint" "the adaptive resume reuses journaled tiles"
+cmp -s "$TMP/ha.png" "$TMP/ha1.png" || { echo "FAIL: the resumed adaptive image differs"; FAILS=$((FAILS + 1)); }
+
 # A torn last record is dropped; the image is still the same.
 size=$(stat -c %s "$TMP/ck1/rts-checkpoint.journal")
 truncate -s $((size - 100)) "$TMP/ck1/rts-checkpoint.journal"
@@ -76,6 +104,5 @@ printf 'sphere { radius = oops }\n' >"$TMP/bad.rts"
 expect_exit 1 "a scene error under mpirun" -- "${MPIRUN[@]}" 3 "$RTS" render "$TMP/bad.rts" -o "$TMP/bad.png"
 [[ $(grep -c "error: undefined name 'oops'" "$TMP/err") == 1 ]] || { echo "FAIL: the error is not reported exactly once:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); }
 expect_grep "$TMP/err" "bad.rts:1:19" "located"
-expect_exit 2 "adaptive sampling under mpirun is refused" -- "${MPIRUN[@]}" 2 "$RTS" render "$TMP/s.rts" -o "$TMP/a.png" --target-error 0.01
 expect_exit 2 "an animation under mpirun is refused" -- "${MPIRUN[@]}" 2 "$RTS" render "$TMP/s.rts" --frames 0..3 -o "$TMP/f_#.png"
 finish
