@@ -26,5 +26,6 @@ void add_eval_command(CLI::App& app, CommandContext& ctx);    // cli/cmd_eval.cp
 void add_render_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_render.cpp
 void add_converge_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_converge.cpp
 void add_import_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_import.cpp
+void add_fmt_command(CLI::App& app, CommandContext& ctx);     // cli/cmd_fmt.cpp
 
 }  // namespace rts::cli

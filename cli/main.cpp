@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   cli::add_render_command(app, ctx);
   cli::add_converge_command(app, ctx);
   cli::add_import_command(app, ctx);
+  cli::add_fmt_command(app, ctx);
 
   // A first word that is neither an option nor a command is most likely a misspelt command.
   auto is_command = [&](const std::string& word) {
@@ -41,7 +42,7 @@ int main(int argc, char** argv) {
   };
   if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
     std::cerr << "rts: unknown command '" << argv[1]
-              << "' (expected one of: parse, check, eval, render, converge, import)\n";
+              << "' (expected one of: parse, check, eval, render, converge, import, fmt)\n";
     std::cerr << "Run 'rts --help' for usage.\n";
     return kExitUsage;
   }
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
     return kExitInternal;
   }
   if (app.get_subcommands().empty()) {
-    std::cerr << "rts: no command given (expected one of: parse, check, eval, render, converge, import)\n";
+    std::cerr << "rts: no command given (expected one of: parse, check, eval, render, converge, import, fmt)\n";
     std::cerr << "Run 'rts --help' for usage.\n";
     return kExitUsage;
   }

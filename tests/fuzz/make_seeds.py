@@ -2,7 +2,7 @@
 """Fills a seed directory for one fuzz harness from files already in the tree.
 
 usage: make_seeds.py NAME OUT_DIR
-  parse, eval, render: every .rts under examples/ and tests/golden/
+  parse, format, eval, render: every .rts under examples/ and tests/golden/
   obj:                 every .obj under examples/ and tests/ (first 64 KiB of large ones)
   png:                 every small .png under examples/ and tests/, plus a few PNG colour
                        types the tree has none of (gray, gray+alpha, palette, RGBA, 16-bit,
@@ -66,9 +66,9 @@ def main():
             f.write(data[:MAX_SEED_BYTES])
         count += 1
 
-    if name in ("parse", "eval", "render"):
+    if name in ("parse", "format", "eval", "render"):
         for p in files(".rts", ["examples", "tests/golden"]):
-            if name != "parse" and os.path.basename(p) in SLOW_SCENES:
+            if name not in ("parse", "format") and os.path.basename(p) in SLOW_SCENES:
                 continue
             put(os.path.basename(p), open(p, "rb").read())
     elif name == "obj":
@@ -81,7 +81,7 @@ def main():
         for base, data in generated_pngs():
             put(base, data)
     else:
-        sys.exit(f"make_seeds.py: unknown harness '{name}' (parse, eval, obj, png, render)")
+        sys.exit(f"make_seeds.py: unknown harness '{name}' (parse, format, eval, obj, png, render)")
     print(f"{count} seeds for {name} in {out}")
 
 
