@@ -24,6 +24,7 @@
 #include "dist/checkpoint.hpp"
 #include "dist/mpi_session.hpp"
 #include "dist/tile_exchange.hpp"
+#include "dist/tile_log.hpp"
 #include "cli/stats_report.hpp"
 #include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
@@ -65,6 +66,7 @@ struct RenderCommand {
   bool skip_existing = false;
   int fps = 24;
   std::string checkpoint;  // --checkpoint DIR (dist/checkpoint.hpp)
+  std::string tile_log;    // --tile-log FILE (dist/tile_log.hpp)
 };
 
 // A still shared by ranks (mpirun) or journaled (--checkpoint): the tile queue, and whether
@@ -261,6 +263,13 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
                                                 : "");
       }
     }
+    if (dist && !c.tile_log.empty()) {
+      const int tiles_per_round = dist->exchange->stats().rounds > 0
+                                      ? dist->exchange->stats().tiles / dist->exchange->stats().rounds
+                                      : 1;
+      dist::write_tile_log(c.tile_log, dist->exchange->stats(), dist->mpi->size(), std::max(tiles_per_round, 1),
+                           result.stats);
+    }
     print_sampling_warnings(out, result.stats);
     report_stats(c.stats, result.stats);
     if (stats_out) *stats_out = result.stats;
@@ -279,7 +288,8 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
 // The options that change pixels, for a checkpoint's key: the command line without the ones
 // that do not (threads, output name, progress and statistics flags, the checkpoint itself).
 std::string pixel_options(const std::vector<std::string>& args) {
-  static const std::vector<std::string> kWithValue = {"--threads", "-o", "--output", "--checkpoint", "--stats-json"};
+  static const std::vector<std::string> kWithValue = {"--threads", "-o",         "--output",
+                                                      "--checkpoint", "--stats-json", "--tile-log"};
   static const std::vector<std::string> kFlags = {"--no-progress", "--stats"};
   std::string out;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -485,9 +495,10 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
                                                        "frames, name them like out/ball_####.png", out));
 
   const dist::MpiSession& mpi = *ctx.mpi;
-  const bool distributed = mpi.active() || !c.checkpoint.empty();
+  // --tile-log alone runs a still through the same tile queue, on one process.
+  const bool distributed = mpi.active() || !c.checkpoint.empty() || !c.tile_log.empty();
   if (distributed && (frames_flag || video || task.count > 1))
-    throw CLI::ValidationError("--checkpoint/mpirun", "distribute one still; for an animation's frames use "
+    throw CLI::ValidationError("--checkpoint/--tile-log/mpirun", "distribute one still; for an animation's frames use "
                                                       "--task-index/--task-count or a Slurm array (docs/scale-out.md)");
   // Under mpirun every rank evaluates the scene; rank 0 alone reports what it finds.
   std::ostringstream rank_messages;
@@ -601,6 +612,8 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
                    "Animation: render every N-th frame of the range, from --task-index", false);
   cmd->add_option("--checkpoint", c->checkpoint,
                   "Journal finished tiles in DIR; the same command resumes there after a crash (stills; mpirun too)");
+  cmd->add_option("--tile-log", c->tile_log,
+                  "Still: write each tile's rank, seconds and size as JSON Lines to FILE (docs/scale-out.md)");
   add_whole_option(*cmd, "--fps", c->fps, 1, 1000, "Video (-o .mp4/.webm): frames per second (default 24)", false);
   cmd->add_flag("--skip-existing", c->skip_existing, "Animation: skip frames whose image is already written");
   cmd->add_option("--manifest", c->manifest,

@@ -78,7 +78,12 @@ void TileQueueExchange::run_root(const Round& round, const RenderTile& render_ti
     }
     return -1;
   };
-  std::deque<std::pair<int, std::vector<unsigned char>>> done_here;
+  struct Done {
+    int tile;
+    double seconds;
+    std::vector<unsigned char> payload;
+  };
+  std::deque<Done> done_here;
   std::exception_ptr local_error;
   // Rank 0 renders as well, on a thread of its own, while this thread serves the other ranks.
   std::thread local([&] {
@@ -88,9 +93,10 @@ void TileQueueExchange::run_root(const Round& round, const RenderTile& render_ti
         std::vector<unsigned char> payload;
         const auto start = std::chrono::steady_clock::now();
         render_tile(t, input, payload);
-        stats_.render_seconds_here += seconds_since(start);
+        const double seconds = seconds_since(start);
         std::lock_guard lock(mutex);
-        done_here.emplace_back(t, std::move(payload));
+        stats_.render_seconds_here += seconds;
+        done_here.push_back({t, seconds, std::move(payload)});
       }
     } catch (...) {
       std::lock_guard lock(mutex);
@@ -100,7 +106,8 @@ void TileQueueExchange::run_root(const Round& round, const RenderTile& render_ti
   });
 
   int workers = mpi_.active() ? mpi_.size() - 1 : 0;
-  auto keep = [&](int tile, const std::vector<unsigned char>& payload) {
+  auto keep = [&](int tile, const std::vector<unsigned char>& payload, int rank, double seconds) {
+    stats_.log.push_back({round.first_unit + tile, rank, seconds, payload.size()});
     store_tile(tile, payload);
     if (checkpoint_) checkpoint_->append(round.first_unit + tile, payload);
     --remaining;
@@ -108,14 +115,14 @@ void TileQueueExchange::run_root(const Round& round, const RenderTile& render_ti
   try {
     while (remaining > 0 || workers > 0) {
       bool busy = false;
-      std::deque<std::pair<int, std::vector<unsigned char>>> mine;
+      std::deque<Done> mine;
       {
         std::lock_guard lock(mutex);
         mine.swap(done_here);
         if (local_error) break;
       }
-      for (auto& [tile, payload] : mine) {
-        keep(tile, payload);
+      for (const Done& d : mine) {
+        keep(d.tile, d.payload, 0, d.seconds);
         ++stats_.rendered_here;
         busy = true;
       }
@@ -142,11 +149,17 @@ void TileQueueExchange::run_root(const Round& round, const RenderTile& render_ti
           MPI_Get_count(&st, MPI_BYTE, &bytes);
           std::vector<unsigned char> msg(static_cast<std::size_t>(bytes));
           MPI_Recv(msg.data(), bytes, MPI_BYTE, st.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          // The tile's number, the seconds it took there, its payload.
           int tile = -1;
-          if (msg.size() >= sizeof tile) std::memcpy(&tile, msg.data(), sizeof tile);
+          double seconds = 0;
+          constexpr std::size_t kHead = sizeof tile + sizeof seconds;
+          if (msg.size() >= kHead) {
+            std::memcpy(&tile, msg.data(), sizeof tile);
+            std::memcpy(&seconds, msg.data() + sizeof tile, sizeof seconds);
+          }
           if (tile < 0 || tile >= tile_count)
             throw render::RenderError({}, fmt::format("rank {} sent a tile that is not in the image", st.MPI_SOURCE));
-          keep(tile, std::vector<unsigned char>(msg.begin() + sizeof tile, msg.end()));
+          keep(tile, std::vector<unsigned char>(msg.begin() + kHead, msg.end()), st.MPI_SOURCE, seconds);
           ++stats_.rendered_remote;
           stats_.bytes_received += msg.size();
           busy = true;
@@ -188,10 +201,12 @@ void TileQueueExchange::run_worker(const RenderTile& render_tile) {
     std::vector<unsigned char> payload;
     const auto start = std::chrono::steady_clock::now();
     render_tile(tile, input, payload);
-    stats_.render_seconds_here += seconds_since(start);
-    std::vector<unsigned char> msg(sizeof tile + payload.size());
+    const double seconds = seconds_since(start);
+    stats_.render_seconds_here += seconds;
+    std::vector<unsigned char> msg(sizeof tile + sizeof seconds + payload.size());
     std::memcpy(msg.data(), &tile, sizeof tile);
-    std::memcpy(msg.data() + sizeof tile, payload.data(), payload.size());
+    std::memcpy(msg.data() + sizeof tile, &seconds, sizeof seconds);
+    std::memcpy(msg.data() + sizeof tile + sizeof seconds, payload.data(), payload.size());
     MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD);
     ++stats_.rendered_here;
   }

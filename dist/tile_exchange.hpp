@@ -6,13 +6,23 @@
 // Without MPI (one process with --checkpoint) the same queue runs with rank 0 alone.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "dist/checkpoint.hpp"
 #include "dist/mpi_session.hpp"
 #include "render/renderer.hpp"
 
 namespace rts::dist {
+
+// One tile as rank 0 received it: for --tile-log and bench/simulate_ranks.py.
+struct TileRecord {
+  int unit;            // round × tiles + tile
+  int rank;            // that rendered it
+  double seconds;      // rendering it there (wall time of its threads)
+  std::size_t bytes;   // its payload
+};
 
 struct ExchangeStats {
   int tiles = 0;                   // in the image (summed over the rounds of a progressive render)
@@ -26,6 +36,7 @@ struct ExchangeStats {
   // answering requests — the serial part that bounds how many ranks one root can feed.
   double fold_seconds = 0, serve_seconds = 0;
   double render_seconds_here = 0;  // rendering tiles on this process (its rendering thread)
+  std::vector<TileRecord> log;     // every tile stored, in arrival order (root only; not the checkpoint's)
 };
 
 class TileQueueExchange final : public render::TileExchange {

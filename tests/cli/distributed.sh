@@ -32,6 +32,20 @@ for n in 1 2 3 4; do
 done
 expect_grep "$TMP/err" "by the other 3 rank" "rank 0 reports the split"
 
+# --tile-log: one JSON line per tile (96x72 in 16x16 tiles: 30), then the summary.
+expect_exit 0 "mpirun -np 2 --tile-log" -- "${MPIRUN[@]}" 2 "$RTS" render "$TMP/s.rts" -o "$TMP/tl.png" \
+    --threads 1 --no-progress --tile-log "$TMP/tl.jsonl"
+python3 - "$TMP/tl.jsonl" <<'PY' || FAILS=$((FAILS + 1))
+import json, sys
+recs = [json.loads(l) for l in open(sys.argv[1])]
+tiles, summary = recs[:-1], recs[-1].get("summary")
+ok = summary is not None and len(tiles) == 30 and sorted(r["tile"] for r in tiles) == list(range(30)) \
+     and summary["ranks"] == 2 and summary["rendered_remote"] == sum(r["rank"] == 1 for r in tiles) \
+     and all(r["seconds"] >= 0 and r["bytes"] > 0 for r in tiles)
+print("" if ok else f"FAIL: --tile-log holds {len(tiles)} tiles, summary {summary}")
+sys.exit(0 if ok else 1)
+PY
+
 # Adaptive sampling: rank 0 plans every round from the whole image, so its decisions (the
 # samples each pixel takes), the image, the error AOV and the error estimate are one process's
 # for any rank count.
