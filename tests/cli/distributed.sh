@@ -51,11 +51,18 @@ PY
 # for any rank count.
 errline() { grep -o '[0-9.]* spp on average.*' "$1" | head -1; }
 ADAPT=(--samples 64 --target-error 0.004 --aov error --no-progress)
-"$RTS" render "$TMP/s.rts" -o "$TMP/ad.png" "${ADAPT[@]}" 2>"$TMP/ad.err" ||
+"$RTS" render "$TMP/s.rts" -o "$TMP/ad.png" "${ADAPT[@]}" --threads 1 --stats-json "$TMP/ad.json" 2>"$TMP/ad.err" ||
   { echo "FAIL: the single-process adaptive render"; cat "$TMP/ad.err"; exit 1; }
 for n in 1 3; do
   expect_exit 0 "adaptive under mpirun -np $n" -- "${MPIRUN[@]}" "$n" "$RTS" render "$TMP/s.rts" -o "$TMP/ad$n.png" \
-      "${ADAPT[@]}" --threads 1
+      "${ADAPT[@]}" --threads 1 --stats-json "$TMP/ad$n.json"
+  # --stats-json: the same document but for the clock (seconds, rays per second).
+  python3 - "$TMP/ad.json" "$TMP/ad$n.json" <<'PY' || { echo "FAIL: adaptive -np $n: --stats-json differs beyond timings"; FAILS=$((FAILS + 1)); }
+import json, sys
+def load(p):
+    d = json.load(open(p)); d.pop("seconds"); d["rays"].pop("per_second"); return d
+sys.exit(0 if load(sys.argv[1]) == load(sys.argv[2]) else 1)
+PY
   for f in "" .error; do
     cmp -s "$TMP/ad$f.png" "$TMP/ad$n$f.png" || { echo "FAIL: adaptive -np $n: ad$n$f.png differs from one process's"; FAILS=$((FAILS + 1)); }
   done
