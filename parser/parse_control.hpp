@@ -8,6 +8,7 @@
 #include <tao/pegtl.hpp>
 
 #include "grammar/grammar.hpp"
+#include "parser/comma_hint.hpp"
 #include "parser/parse_state.hpp"
 
 namespace rts::parse_detail {
@@ -87,6 +88,15 @@ struct control : pegtl::normal<Rule> {
     }
     if constexpr (std::is_same_v<Rule, g::end_of_input>) {
       message += ", found " + describe_found(in.current(), in.end());
+    }
+    if constexpr (std::is_same_v<Rule, g::block_close>) {
+      // POV-Ray's positional arguments or commas between properties (parser/comma_hint.hpp).
+      if (!in.empty() && in.peek_char() == ',' && !st.opens.empty()) {
+        Diagnostic d = comma_in_block_error(
+            *st.file, st.opens.back().loc, static_cast<std::size_t>(in.current() - st.file->text().data()));
+        d.loc = at;
+        throw LanguageError(std::move(d));
+      }
     }
     Diagnostic d{Severity::Error, at, std::move(message), {}};
     if constexpr (closes_bracket<Rule>) {
