@@ -15,6 +15,7 @@
 #include "render/scene/scene_summary.hpp"
 #include "render/scene/source_ref.hpp"
 #include "runtime/evaluator.hpp"
+#include "runtime/scene_warnings.hpp"
 
 namespace rts::cli {
 
@@ -77,6 +78,9 @@ bool run_eval(const EvalCommand& cmd, CommandContext& ctx, SourceManager& source
   DiagnosticSink sink(std::cerr, ctx.color);
   try {
     result = evaluate_file(sources, cmd.file, cmd.options, sink);
+    // `rts check` warns as `rts render` does, before rendering (runtime/scene_warnings.hpp).
+    if (cmd.options.warn_unused)
+      for (const Diagnostic& d : scene_warnings(result, sources, sources.find(cmd.file))) sink.report(d);
     return true;
   } catch (const LanguageError& e) {
     sink.report(e.diag);

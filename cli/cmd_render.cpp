@@ -32,6 +32,7 @@
 #include "render/image/video_writer.hpp"
 #include "render/renderer.hpp"
 #include "runtime/evaluator.hpp"
+#include "runtime/scene_warnings.hpp"
 
 namespace rts::cli {
 namespace {
@@ -101,21 +102,6 @@ void print_warnings(const std::vector<render::Warning>& warnings) {
   }
 }
 
-// In path mode emissive materials and the sky are lights too: a scene lit only by them is
-// not "unlit".
-bool path_lit(const render::SceneDesc& scene, const std::string& integrator_flag) {
-  bool path = integrator_flag.empty() ? scene.settings.integrator == render::IntegratorKind::Path
-                                      : integrator_flag == "path";
-  if (!path) return false;
-  const render::Color& bg = scene.settings.background;
-  if (scene.settings.environment != render::kNoId || bg.r > 0 || bg.g > 0 || bg.b > 0) return true;
-  for (const render::MaterialDesc& m : scene.materials) {
-    const render::Color& e = m.emission;
-    if (m.emission_texture != render::kNoId || e.r > 0 || e.g > 0 || e.b > 0) return true;
-  }
-  return false;
-}
-
 // Fails early (before spending time rendering) when the output folder cannot take the file.
 void check_output_writable(const std::string& out) {
   std::error_code ec;
@@ -163,16 +149,13 @@ struct Evaluated {
 int evaluate_scene(const RenderCommand& c, const EvalOptions& eval, DiagnosticSink& sink, Evaluated& out) {
   try {
     EvalResult evaluated = evaluate_file(*out.sources, c.scene, eval, sink);
-    out.scene = std::move(evaluated.scene);
     out.eval_seconds = evaluated.seconds;
     out.parse_seconds = evaluated.parse_seconds;
     out.uses_clock = evaluated.uses_clock;
-    // A black image with no word of why is a trap (a library file rendered by mistake).
-    SourceLoc whole_file{out.sources->find(c.scene), 0, 0};
-    if (evaluated.world_shapes == 0)
-      sink.warning(whole_file, "the scene places no objects: the image shows only the background");
-    else if (evaluated.world_lights == 0 && !path_lit(out.scene, c.integrator))
-      sink.warning(whole_file, "the scene places no lights: objects show only their ambient light and emission");
+    // The same warnings as `rts check` and the language server (runtime/scene_warnings.hpp).
+    for (const Diagnostic& d : scene_warnings(evaluated, *out.sources, out.sources->find(c.scene), c.integrator))
+      sink.report(d);
+    out.scene = std::move(evaluated.scene);
   } catch (const LanguageError& e) {
     sink.report(e.diag);
     return kExitLanguageError;
@@ -230,7 +213,6 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
 
   try {
     if (!video && !dist) check_output_writable(out);
-    print_warnings(ev.scene.warnings);
     render::RenderResult result = render::render(ev.scene, opts);
     if (dist && !dist->root()) return kExitOk;  // rank 0 writes the image
     print_warnings(result.warnings);

@@ -86,6 +86,22 @@ contains "$tmp/err" "print: rgb(0.25, 0.25, 0.25)"
 expect 1 env RTS_STDLIB="$tmp/elsewhere" "$rts" check "$tmp/lib.rts"   # no shapes.rts there
 contains "$tmp/err" "cannot find include file 'std/shapes.rts' in the standard library $tmp/elsewhere"
 
+# rts check warns as rts render does (runtime/scene_warnings.hpp): the same lines, in order.
+cat > "$tmp/warn.rts" <<'SCENE'
+camera { position = <0, 1, 0>  look_at = <0, 0, 5> }
+point_light { position = <0, 5, -5> }
+sphere { radius = 3 }
+triangle { v0 = <0, 0, 0>  v1 = <1, 1, 1>  v2 = <2, 2, 2> }
+SCENE
+expect 0 "$rts" check "$tmp/warn.rts"
+contains "$tmp/err" "warn.rts:4:1: warning: triangle has zero area"
+contains "$tmp/err" "warn.rts:1:1: warning: the camera is inside a sphere"
+contains "$tmp/err" "warn.rts:3:1: note: the sphere is placed here"
+grep "warning:\|note:" "$tmp/err" > "$tmp/check.warnings"
+expect 0 "$rts" render "$tmp/warn.rts" -o "$tmp/warn.png" --width 4 --height 4 --no-progress
+grep "warning:\|note:" "$tmp/err" > "$tmp/render.warnings"
+diff "$tmp/check.warnings" "$tmp/render.warnings" >/dev/null || fail "rts check and rts render warn differently: $(diff "$tmp/check.warnings" "$tmp/render.warnings")"
+
 if [[ $failures -gt 0 ]]; then
   echo "$failures check(s) failed" >&2
   exit 1

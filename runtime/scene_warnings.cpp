@@ -1,0 +1,127 @@
+#include "runtime/scene_warnings.hpp"
+
+#include <cmath>
+#include <string>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "render/scene/flatten.hpp"
+
+namespace rts {
+namespace {
+
+using render::Vec3;
+
+SourceLoc locate(const SourceManager& sources, const render::SourceRef& where) {
+  if (where.file && *where.file)
+    if (const SourceFile* f = sources.find(where.file)) return SourceLoc{f, where.line, where.col};
+  return {};
+}
+
+// In path mode emissive materials and the sky are lights too: a scene lit only by them is
+// not "unlit".
+bool path_lit(const render::SceneDesc& scene, std::string_view integrator) {
+  bool path = integrator.empty() ? scene.settings.integrator == render::IntegratorKind::Path : integrator == "path";
+  if (!path) return false;
+  const render::Color& bg = scene.settings.background;
+  if (scene.settings.environment != render::kNoId || bg.r > 0 || bg.g > 0 || bg.b > 0) return true;
+  for (const render::MaterialDesc& m : scene.materials) {
+    const render::Color& e = m.emission;
+    if (m.emission_texture != render::kNoId || e.r > 0 || e.g > 0 || e.b > 0) return true;
+  }
+  return false;
+}
+
+// Whether the object-space point p is strictly inside the closed shape; false for the open
+// ones (planes, triangles, discs, quads) and for meshes and superellipsoids (not checked).
+struct Inside {
+  Vec3 p;
+  bool operator()(const render::Sphere& s) const { return glm::length(p - s.center) < s.radius; }
+  bool operator()(const render::Box& b) const {
+    return p.x > b.min.x && p.x < b.max.x && p.y > b.min.y && p.y < b.max.y && p.z > b.min.z && p.z < b.max.z;
+  }
+  bool operator()(const render::Cylinder& c) const { return in_cone(c.from, c.to, c.radius, c.radius, c.capped); }
+  bool operator()(const render::Cone& c) const { return in_cone(c.from, c.to, c.radius_from, c.radius_to, c.capped); }
+  bool operator()(const render::Torus& t) const {
+    double ring = std::sqrt(p.x * p.x + p.z * p.z) - t.major;
+    return ring * ring + p.y * p.y < t.minor * t.minor;
+  }
+  template <typename Other>
+  bool operator()(const Other&) const { return false; }
+
+  bool in_cone(const Vec3& from, const Vec3& to, double r0, double r1, bool capped) const {
+    if (!capped) return false;
+    Vec3 axis = to - from;
+    double len2 = glm::dot(axis, axis);
+    if (!(len2 > 0)) return false;
+    double t = glm::dot(p - from, axis) / len2;
+    if (!(t > 0 && t < 1)) return false;
+    double r = r0 + (r1 - r0) * t;
+    return glm::length(p - (from + t * axis)) < r;
+  }
+};
+
+// The closed shapes Inside knows, by name; null for the others (not checked).
+const char* closed_shape(const render::ShapeGeometry& g) {
+  if (std::holds_alternative<render::Sphere>(g)) return "sphere";
+  if (std::holds_alternative<render::Box>(g)) return "box";
+  if (std::holds_alternative<render::Cylinder>(g)) return "cylinder";
+  if (std::holds_alternative<render::Cone>(g)) return "cone";
+  if (std::holds_alternative<render::Torus>(g)) return "torus";
+  return nullptr;
+}
+
+void camera_inside(const EvalResult& result, const SourceManager& sources, std::vector<Diagnostic>& out) {
+  const render::SceneDesc& scene = result.scene;
+  render::FlatScene flat;
+  try {
+    flat = render::flatten_scene(scene);
+  } catch (const render::RenderError&) {
+    return;  // the render reports it
+  }
+  const Vec3 eye = scene.camera.position;
+  for (const render::FlatShape& s : flat.shapes) {
+    const render::ShapeDesc& shape = scene.shapes[s.shape];
+    const char* word = closed_shape(shape.geometry);
+    if (shape.inverse || word == nullptr) continue;
+    render::Mat4 to_object = glm::inverse(s.to_world);
+    Vec3 p = Vec3(to_object * glm::dvec4(eye, 1.0));
+    if (!std::isfinite(p.x + p.y + p.z) || !std::visit(Inside{p}, shape.geometry)) continue;
+    Diagnostic d;
+    d.severity = Severity::Warning;
+    d.loc = locate(sources, scene.camera.loc);
+    d.message = fmt::format("the camera is inside a {}: it sees only the {}'s inside (move the camera or the {})",
+                            word, word, word);
+    SourceLoc placed = locate(sources, s.loc);
+    if (!placed.valid()) placed = locate(sources, shape.loc);
+    if (placed.valid()) d.notes.push_back(Note{placed, fmt::format("the {} is placed here", word)});
+    if (!d.loc.valid()) d.loc = placed;
+    out.push_back(std::move(d));
+    return;  // one is enough: the innermost is what the camera sees
+  }
+}
+
+}  // namespace
+
+std::vector<Diagnostic> scene_warnings(const EvalResult& result, const SourceManager& sources,
+                                       const SourceFile* main, std::string_view integrator) {
+  std::vector<Diagnostic> out;
+  for (const render::Warning& w : result.scene.warnings) {
+    Diagnostic d{Severity::Warning, locate(sources, w.where), w.message, {}};
+    if (!d.loc.valid() && w.where.file && *w.where.file)
+      d.message = fmt::format("{}:{}:{}: {}", w.where.file, w.where.line, w.where.col, w.message);
+    out.push_back(std::move(d));
+  }
+  // A black image with no word of why is a trap (a library file rendered by mistake).
+  SourceLoc whole_file{main, 0, 0};
+  if (result.world_shapes == 0)
+    out.push_back({Severity::Warning, whole_file, "the scene places no objects: the image shows only the background", {}});
+  else if (result.world_lights == 0 && !path_lit(result.scene, integrator))
+    out.push_back({Severity::Warning, whole_file,
+                   "the scene places no lights: objects show only their ambient light and emission", {}});
+  if (result.world_shapes > 0) camera_inside(result, sources, out);
+  return out;
+}
+
+}  // namespace rts
