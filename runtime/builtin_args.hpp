@@ -32,4 +32,12 @@ inline const std::string& str(const BuiltinCall& c, std::size_t i) {
   return as_string(c.args[i]);
 }
 
+// select(c, a, b) with a condition that is not a bool (a POV-Ray habit: its select tests A < 0).
+[[noreturn]] inline void bad_select_condition(const Interpreter& in, const ast::CallExpr& call, const Value& cond) {
+  in.fail(call.args[0].value->loc,
+          fmt::format("the condition of 'select' must be a bool, got {} (POV-Ray's select(A, B, C) picks B "
+                      "when A < 0: write select(A < 0, B, C))",
+                      with_article(cond.type)));
+}
+
 }  // namespace rts::runtime::builtin_args

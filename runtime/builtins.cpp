@@ -132,6 +132,20 @@ Value len(BuiltinCall& c) {
   bad_arg(c, 0, "a list, a string or a range");
 }
 
+// select(c, a, b): a when c is true, b when false. eval_call evaluates only the chosen
+// argument (the builtin is `lazy`); this is the same choice for already evaluated arguments.
+Value select(BuiltinCall& c) {
+  if (c.args[0].type != Type::Bool) bad_select_condition(c.in, c.call, c.args[0]);
+  return c.args[0].truth() ? c.args[1] : c.args[2];
+}
+
+// append(xs, v, ...): a new list, xs followed by the values (xs itself is not changed; to
+// push onto a variable's list in place, `xs += [v]`).
+Value append(BuiltinCall& c) {
+  if (c.args[0].type != Type::List) bad_arg(c, 0, "a list");
+  return c.in.concat(c.args[0], Value::list(std::vector<Value>(c.args + 1, c.args + c.argc)), c.call.loc);
+}
+
 Value str_(BuiltinCall& c) { return Value::string(c.in.text_of(c.args[0], c.call.loc)); }
 
 Value format(BuiltinCall& c) {
@@ -281,6 +295,8 @@ const std::vector<Builtin>& builtin_table() {
       {"rgb", 1, 3, rgb},
       {"vec", 3, 3, vec_},
       {"len", 1, 1, len},
+      {"select", 3, 3, select, true},
+      {"append", 2, -1, append},
       {"str", 1, 1, str_},
       {"format", 1, -1, format},
       {"print", 0, -1, print},

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "render/scene/params.hpp"
+#include "runtime/builtin_args.hpp"
 #include "runtime/interpreter.hpp"
 #include "runtime/ops.hpp"
 #include "runtime/povray_hints.hpp"
@@ -265,6 +266,13 @@ Value Interpreter::eval_call(const ast::CallExpr& e) {
                                                       : fmt::format("{} to {}", b.min_args, b.max_args);
     fail(e.loc, fmt::format("'{}' takes {} argument{}, got {}", b.name, expected,
                             (b.max_args == 1 && b.min_args == 1) ? "" : "s", argc));
+  }
+  if (b.lazy) {
+    // select(c, a, b): the branch not chosen is never evaluated (it may be an error there,
+    // as xs[i] past the end).
+    Value cond = eval(*e.args[0].value);
+    if (cond.type != Type::Bool) builtin_args::bad_select_condition(*this, e, cond);
+    return eval(*e.args[cond.truth() ? 1 : 2].value);
   }
   if (argc <= kInlineArgs) {
     // Only the arguments given are constructed: an unused Value slot still costs a

@@ -49,6 +49,9 @@ struct Builtin {
   const char* name;
   int min_args, max_args;  // max_args < 0: variadic
   BuiltinFn fn;
+  // select(c, a, b): eval_call evaluates the condition and then only the chosen argument;
+  // `fn` is the same choice over evaluated arguments (compiled functions use that).
+  bool lazy = false;
 };
 struct BuiltinCall {
   Interpreter& in;
@@ -101,6 +104,10 @@ class Interpreter {
   uint64_t world_lights() const { return placement_.world().lights; }
   bool uses_clock() const { return uses_clock_; }  // read `clock`, `frame` or `frames`
 
+  // a + b for two lists or two strings, counted against the step and memory budgets;
+  // appends in place when `a` holds the only reference to its list or string.
+  Value concat(Value a, const Value& b, SourceLoc loc);
+
  private:
   // statements (interpreter.cpp)
   void run_program(const ast::Program& program, bool is_main);
@@ -117,9 +124,6 @@ class Interpreter {
   // `xs = xs + e` and `xs += e` on a list or string: appends in place when the variable
   // holds the only reference. Returns false when the statement is not of that form.
   bool exec_append(const ast::AssignStmt& s);
-  // a + b for two lists or two strings, counted against the step and memory budgets;
-  // appends in place when `a` holds the only reference to its list or string.
-  Value concat(Value a, const Value& b, SourceLoc loc);
 
   // scopes
   void push_scope() { scopes_.push_back(bindings_.size()); }
