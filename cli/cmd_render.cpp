@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <climits>
+#include <utility>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -19,6 +20,7 @@
 
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
+#include "cli/file_watch.hpp"
 #include "cli/frames.hpp"
 #include "cli/manifest.hpp"
 #include "dist/checkpoint.hpp"
@@ -42,6 +44,8 @@ namespace fs = std::filesystem;
 constexpr uint64_t kMaxThreads = 1024;
 constexpr uint64_t kMaxSeed = uint64_t(1) << 53;  // as settings.seed: every seed a double holds exactly
 constexpr uint64_t kMaxImageSide = 1'000'000;      // the pixel count has its own limit
+// --watch: an editor's save is a few events within milliseconds; wait this long for quiet.
+constexpr int kWatchSettleMs = 100;
 
 struct RenderCommand {
   std::string scene;
@@ -68,6 +72,7 @@ struct RenderCommand {
   int fps = 24;
   std::string checkpoint;  // --checkpoint DIR (dist/checkpoint.hpp)
   std::string tile_log;    // --tile-log FILE (dist/tile_log.hpp)
+  bool watch = false;      // --watch: render again on every change (cli/file_watch.hpp)
 };
 
 // A still shared by ranks (mpirun) or journaled (--checkpoint): the tile queue, and whether
@@ -437,6 +442,47 @@ int run_video(const RenderCommand& c, const CLI::App& cmd, const CommandContext&
   return kExitOk;
 }
 
+// The files a scene read besides its sources: image textures and OBJ meshes.
+void add_scene_inputs(const render::SceneDesc& scene, std::vector<std::string>& files) {
+  for (const render::TextureDesc& t : scene.textures) {
+    files.push_back(t.image_path);
+    files.insert(files.end(), t.face_paths.begin(), t.face_paths.end());
+  }
+  for (const auto& m : scene.meshes) files.push_back(m->source);
+}
+
+// --watch: renders the still, then again whenever the scene or a file it includes or reads
+// changes: first one sample per pixel (seen at once), then the full render unless another
+// change came meanwhile. A failing round reports its error and leaves the last image alone.
+int run_watch(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx, const std::string& out,
+              const render::OutputSpec& spec) {
+  FileWatcher watcher;
+  for (;;) {
+    DiagnosticSink sink(std::cerr, ctx.color);
+    Evaluated ev;
+    const bool ok = evaluate_scene(c, c.eval, sink, ev) == kExitOk;
+    std::vector<std::string> files{c.scene};
+    for (const SourceFile* f : ev.sources->files()) files.push_back(f->path());
+    if (ok) add_scene_inputs(ev.scene, files);
+    const std::size_t watched = watcher.watch(files);
+    const int samples = cmd.count("--samples") ? c.samples : ev.scene.settings.samples;
+    bool superseded = false;
+    if (ok && (samples > 1 || c.target_error > 0)) {
+      RenderCommand quick = c;
+      quick.samples = 1;
+      quick.target_error = quick.time_limit = 0;
+      const int scene_samples = std::exchange(ev.scene.settings.samples, 1);
+      render_scene(quick, cmd, ev, out, spec, sink, nullptr);
+      ev.scene.settings.samples = scene_samples;
+      superseded = watcher.changed();
+    }
+    if (superseded) continue;
+    if (ok) render_scene(c, cmd, ev, out, spec, sink, nullptr);
+    std::cerr << fmt::format("rts: watching {} file{} for changes (Ctrl-C stops)\n", watched, watched == 1 ? "" : "s");
+    watcher.wait_for_change(std::chrono::milliseconds(kWatchSettleMs));
+  }
+}
+
 int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) {
   const bool frames_flag = cmd.count("--frames") > 0;
   FrameRange flag_range;
@@ -479,6 +525,11 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   const dist::MpiSession& mpi = *ctx.mpi;
   // --tile-log alone runs a still through the same tile queue, on one process.
   const bool distributed = mpi.active() || !c.checkpoint.empty() || !c.tile_log.empty();
+  if (c.watch) {
+    if (frames_flag || video || task.count > 1 || distributed)
+      throw CLI::ValidationError("--watch", "re-renders a still: not with --frames, a video, --task-*, --checkpoint, --tile-log or mpirun");
+    return run_watch(c, cmd, ctx, out, *spec.spec);
+  }
   if (distributed && (frames_flag || video || task.count > 1))
     throw CLI::ValidationError("--checkpoint/--tile-log/mpirun", "distribute one still; for an animation's frames use "
                                                       "--task-index/--task-count or a Slurm array (docs/scale-out.md)");
@@ -597,6 +648,9 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--tile-log", c->tile_log,
                   "Still: write each tile's rank, seconds and size as JSON Lines to FILE (docs/scale-out.md)");
   add_whole_option(*cmd, "--fps", c->fps, 1, 1000, "Video (-o .mp4/.webm): frames per second (default 24)", false);
+  cmd->add_flag("--watch", c->watch,
+                "Render again whenever the scene or a file it includes or reads changes (1 sample per pixel "
+                "first, then the full render); a failing change keeps the last good image");
   cmd->add_flag("--skip-existing", c->skip_existing, "Animation: skip frames whose image is already written");
   cmd->add_option("--manifest", c->manifest,
                   "Animation: JSON Lines file of rendered frames (default: OUT-without-####.manifest.jsonl)");
