@@ -28,7 +28,7 @@
 
 #include "render/sample/camera.hpp"
 #include "render/accel/mesh_accel.hpp"
-#include "render/scene/obj_loader.hpp"
+#include "render/builder/obj_loader.hpp"
 
 using namespace rts::render;
 

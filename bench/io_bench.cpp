@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "render/image/image.hpp"
-#include "render/scene/obj_loader.hpp"
+#include "render/builder/obj_loader.hpp"
 
 namespace {
 

@@ -24,6 +24,7 @@
 #include "render/image/image_metrics.hpp"
 #include "render/image/float_image_io.hpp"
 #include "render/renderer.hpp"
+#include "render/sample/sampler.hpp"
 #include "runtime/evaluator.hpp"
 
 namespace rts::cli {

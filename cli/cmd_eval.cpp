@@ -12,7 +12,7 @@
 #include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
 #include "render/scene/resource_limits.hpp"
-#include "render/scene/scene_summary.hpp"
+#include "render/builder/scene_summary.hpp"
 #include "render/scene/source_ref.hpp"
 #include "runtime/evaluator.hpp"
 #include "runtime/scene_warnings.hpp"

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 
 namespace rts::cli {
 

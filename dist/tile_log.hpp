@@ -8,7 +8,7 @@
 #include <string>
 
 #include "dist/tile_exchange.hpp"
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 
 namespace rts::dist {
 

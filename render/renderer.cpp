@@ -15,17 +15,17 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "render/sample/accum_payload.hpp"
+#include "render/accum_payload.hpp"
 #include "render/sample/adaptive.hpp"
 #include "render/sample/camera.hpp"
-#include "render/scene/features.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/shade/features.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/image/frame.hpp"
 #include "render/image/tile_payload.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/shade/lights.hpp"
 #include "render/shade/path/path_integrator.hpp"
-#include "render/sample/pixel_renderer.hpp"
+#include "render/pixel_renderer.hpp"
 #include "render/progress.hpp"
 #include "render/scene/resource_limits.hpp"
 #include "render/shade/texture.hpp"

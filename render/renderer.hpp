@@ -9,9 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "render/image/image.hpp"
+#include "render/image/render_result.hpp"
 #include "render/scene/scene.hpp"
-#include "render/stats.hpp"
 
 namespace rts::render {
 
@@ -71,13 +70,6 @@ struct RenderOptions {
   std::size_t max_memory = 0;             // bytes (--max-memory): the image and AOVs must fit; 0: no limit
   // Non-null: the tiles are shared with other processes (mpirun); fixed sample counts only.
   TileExchange* exchange = nullptr;
-};
-
-struct RenderResult {
-  Image color;                            // linear RGB
-  std::map<std::string, Image> aovs;      // name → image (already display-ready values)
-  RenderStats stats;
-  std::vector<Warning> warnings;          // settings adjusted to render (max_depth capped)
 };
 
 // Throws RenderError (located where possible) for unreadable textures, oversize images...

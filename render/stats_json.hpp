@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 
 namespace rts::render {
 

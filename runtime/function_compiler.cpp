@@ -24,7 +24,7 @@
 
 #include <fmt/format.h>
 
-#include "render/scene/compiled_function.hpp"
+#include "render/shade/pattern/compiled_function.hpp"
 #include "runtime/interpreter.hpp"
 
 namespace rts::runtime {

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 
 namespace rts {
 namespace {

@@ -1,10 +1,10 @@
 // trace(object, origin, direction): the first point where a ray meets an object, and the
 // surface normal there, for placing things on surfaces (POV-Ray's trace). The object is traced
-// alone, with its transform, through the renderer's World (render/scene/probe.hpp); the last
+// alone, with its transform, through the renderer's World (render/accel/probe.hpp); the last
 // object's World is kept, so a loop tracing one object many times builds it once.
 #include <fmt/format.h>
 
-#include "render/scene/probe.hpp"
+#include "render/accel/probe.hpp"
 #include "runtime/interpreter.hpp"
 
 namespace rts::runtime {

@@ -1,7 +1,7 @@
-#include "render/scene/probe.hpp"
+#include "render/accel/probe.hpp"
 
 #include "render/accel/world.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 
 namespace rts::render {
 

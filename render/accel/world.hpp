@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "render/accel/bvh.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/accel/mesh_accel.hpp"
 #include "render/geometry/csg/csg_tree.hpp"
 #include "render/scene/scene.hpp"

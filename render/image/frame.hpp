@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "render/renderer.hpp"
+#include "render/image/render_result.hpp"
 
 namespace rts::render {
 

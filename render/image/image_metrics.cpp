@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 
 namespace rts::render {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "render/image/frame.hpp"
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 
 namespace rts::render {
 

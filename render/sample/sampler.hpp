@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "render/scene/sampler_kind.hpp"
+
 namespace rts::render {
 
 // splitmix64's finaliser: a bijective 64-bit mix with good avalanche.
@@ -126,30 +128,6 @@ inline double fraction_to_unit(uint32_t x, uint64_t low) {
 }
 
 // ---- samplers -----------------------------------------------------------------------------
-
-// How a pixel's sample points are placed: independently at random, on a jittered grid per
-// dimension pair (padded, randomly paired strata), or on an Owen-scrambled Sobol
-// (0,2)-sequence per dimension pair with a shuffled index (best at powers of two).
-enum class SamplerKind : uint8_t { Random, Stratified, Sobol };
-
-inline const char* sampler_name(SamplerKind k) {
-  switch (k) {
-    case SamplerKind::Random: return "random";
-    case SamplerKind::Stratified: return "stratified";
-    case SamplerKind::Sobol: return "sobol";
-  }
-  return "?";
-}
-
-// "random", "stratified" or "sobol"; false for anything else.
-inline bool parse_sampler(std::string_view name, SamplerKind& out) {
-  for (SamplerKind k : {SamplerKind::Random, SamplerKind::Stratified, SamplerKind::Sobol})
-    if (name == sampler_name(k)) {
-      out = k;
-      return true;
-    }
-  return false;
-}
 
 // A pixel's samples form `batches` independent interleaved sets (sample s is index s / K of
 // batch s % K), each stratified or low-discrepancy on its own with its own scrambling, so the

@@ -9,7 +9,6 @@
 #include <variant>
 #include <vector>
 
-#include "render/scene/compiled_function.hpp"
 #include "render/scene/scene.hpp"
 
 namespace rts::render {
@@ -19,6 +18,7 @@ struct MaterialRef { MaterialId id = kNoId; };
 // A pattern's color map: `color_map = [[0, rgb(1)], [0.5, rgb(0.2)], ...]` (value, color) pairs.
 struct ColorMapParam { std::vector<ColorMapEntry> entries; };
 // A function of a point, compiled once by the runtime (`pattern { function = f }`, isosurfaces).
+class CompiledFunction;  // render/shade/pattern/compiled_function.hpp
 struct FunctionRef { std::shared_ptr<const CompiledFunction> function; };
 
 // The value kinds a block property can hold. The runtime converts its own values:

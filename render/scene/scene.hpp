@@ -23,7 +23,7 @@
 #include <glm/glm.hpp>
 
 #include "render/scene/pattern_desc.hpp"
-#include "render/sample/sampler.hpp"
+#include "render/scene/sampler_kind.hpp"
 #include "render/scene/source_ref.hpp"
 
 namespace rts::render {

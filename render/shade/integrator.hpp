@@ -5,13 +5,13 @@
 
 #include <vector>
 
-#include "render/scene/features.hpp"
+#include "render/shade/features.hpp"
 #include "render/shade/fog.hpp"
 #include "render/shade/lights.hpp"
 #include "render/shade/material.hpp"
 #include "render/shade/medium_stack.hpp"
 #include "render/sample/sampler.hpp"
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 #include "render/shade/texture.hpp"
 #include "render/accel/world.hpp"
 
@@ -30,7 +30,7 @@ struct FirstHit {
   Rgb albedo{0.0};
 };
 
-// The shading paths are compiled for each combination of trace_flags (render/scene/features.hpp,
+// The shading paths are compiled for each combination of trace_flags (render/shade/features.hpp,
 // where the leave-out table says which feature sets which flag): a scene runs through the one
 // for the features it uses.
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "fuzz_support.hpp"
-#include "render/scene/obj_loader.hpp"
+#include "render/builder/obj_loader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const std::string path = rts::fuzz::write_input("fuzz.obj", data, size);

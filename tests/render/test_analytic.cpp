@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/renderer.hpp"
 #include "scene_fixture.hpp"

@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "render/accel/bvh.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/accel/mesh_accel.hpp"
 #include "render/geometry/shapes/sphere.hpp"
 #include "render/geometry/shapes/triangle.hpp"

@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "render/sample/camera.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/image/frame.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/shade/lights.hpp"

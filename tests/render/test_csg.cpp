@@ -7,7 +7,7 @@
 
 #include "render/accel/world.hpp"
 #include "render/geometry/csg/csg_tree.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "scene_fixture.hpp"
 #include "tracer.hpp"
 

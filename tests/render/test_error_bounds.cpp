@@ -12,7 +12,7 @@
 
 #include "render/accel/world.hpp"
 #include "render/geometry/ray.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "scene_fixture.hpp"
 
 using namespace rts::render;

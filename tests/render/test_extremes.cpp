@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "render/renderer.hpp"
-#include "render/scene/scene_builder.hpp"
+#include "render/builder/scene_builder.hpp"
 #include "scene_fixture.hpp"
 
 using namespace rts::render;

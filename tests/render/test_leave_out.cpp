@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/scene/features.hpp"
+#include "render/shade/features.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/renderer.hpp"
 #include "render/accel/world.hpp"

@@ -9,7 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include "render/renderer.hpp"
-#include "render/scene/compiled_function.hpp"
+#include "render/shade/pattern/compiled_function.hpp"
 #include "render/shade/pattern/noise.hpp"
 #include "render/shade/pattern/patterns.hpp"
 #include "render/shade/texture.hpp"

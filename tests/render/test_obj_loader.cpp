@@ -1,4 +1,4 @@
-// OBJ loading (render/scene/obj_loader.cpp): the one-pass reader's triangulation, unified vertices,
+// OBJ loading (render/builder/obj_loader.cpp): the one-pass reader's triangulation, unified vertices,
 // relative indices and located errors, checked against hand-computed meshes.
 #include <catch2/catch.hpp>
 
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "render/scene/obj_loader.hpp"
+#include "render/builder/obj_loader.hpp"
 
 using namespace rts::render;
 

@@ -10,7 +10,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/scene/scene_builder.hpp"
+#include "render/builder/scene_builder.hpp"
 
 using namespace rts::render;
 

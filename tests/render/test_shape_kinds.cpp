@@ -13,8 +13,8 @@
 #include <fmt/format.h>
 
 #include "render/geometry/shapes/shape_kinds.hpp"
-#include "render/scene/features.hpp"
-#include "render/scene/scene_builder.hpp"
+#include "render/shade/features.hpp"
+#include "render/builder/scene_builder.hpp"
 
 using namespace rts::render;
 

@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/accel/world.hpp"
 #include "scene_fixture.hpp"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "render/accel/world.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/shade/lights.hpp"
 #include "render/shade/texture.hpp"

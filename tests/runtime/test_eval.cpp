@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "eval_helpers.hpp"
-#include "render/scene/scene_summary.hpp"
+#include "render/builder/scene_summary.hpp"
 
 using namespace rts;
 using namespace rts::render;

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "eval_helpers.hpp"
-#include "render/scene/compiled_function.hpp"
+#include "render/shade/pattern/compiled_function.hpp"
 #include "render/shade/pattern/noise.hpp"
 
 using namespace rts;

@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/accel/world.hpp"
 #include "stability_support.hpp"
 

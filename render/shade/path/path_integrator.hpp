@@ -16,7 +16,7 @@
 #include "render/shade/path/light_set.hpp"
 #include "render/shade/texture.hpp"
 #include "render/sample/sampler.hpp"
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 
 namespace rts::render::path {
 

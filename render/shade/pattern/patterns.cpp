@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "render/scene/compiled_function.hpp"
+#include "render/shade/pattern/compiled_function.hpp"
 #include "render/shade/pattern/noise.hpp"
 
 namespace rts::render::pattern {

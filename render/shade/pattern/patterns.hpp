@@ -14,7 +14,7 @@
 //  - crackle: F2 - F1 of Worley noise (0 on the cell borders).   cells: one value per unit cube.
 //  - ripples, waves: concentric sine waves from ten fixed centres near the origin, `frequency`
 //            rings per unit and `phase` (waves fade with the distance, as POV-Ray's).
-//  - function: a user function f(x, y, z) (render/scene/compiled_function.hpp).
+//  - function: a user function f(x, y, z) (render/shade/pattern/compiled_function.hpp).
 // Every pattern but marble, wood and agate applies a non-zero `turbulence` as a warp
 // p += turbulence * vector_turbulence(p) first (POV-Ray's classic turbulence).
 #pragma once

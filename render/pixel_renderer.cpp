@@ -1,4 +1,4 @@
-#include "render/sample/pixel_renderer.hpp"
+#include "render/pixel_renderer.hpp"
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // Pattern texture blocks: see pattern_builder.hpp.
-#include "render/scene/pattern_builder.hpp"
+#include "render/builder/pattern_builder.hpp"
 
 #include <algorithm>
 #include <cmath>

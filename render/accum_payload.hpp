@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "render/image/tile_payload.hpp"
-#include "render/sample/pixel_renderer.hpp"
-#include "render/stats.hpp"
+#include "render/pixel_renderer.hpp"
+#include "render/image/stats.hpp"
 
 namespace rts::render {
 

@@ -1,5 +1,5 @@
 // SceneBuilder: validates block parameters and fills the SceneDesc.
-#include "render/scene/scene_builder.hpp"
+#include "render/builder/scene_builder.hpp"
 
 #include <array>
 #include <cctype>
@@ -12,8 +12,8 @@
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/shade/lights.hpp"
-#include "render/scene/obj_loader.hpp"
-#include "render/scene/pattern_builder.hpp"
+#include "render/builder/obj_loader.hpp"
+#include "render/builder/pattern_builder.hpp"
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
@@ -36,7 +36,7 @@ constexpr KindInfo kKinds[] = {
     {"image_texture", BlockCategory::Texture},
     {"latlong_map", BlockCategory::Texture},
     {"cube_map", BlockCategory::Texture},
-    // pattern textures (render/scene/pattern_builder.cpp)
+    // pattern textures (render/builder/pattern_builder.cpp)
     {"bozo", BlockCategory::Texture}, {"spotted", BlockCategory::Texture}, {"granite", BlockCategory::Texture},
     {"marble", BlockCategory::Texture}, {"wood", BlockCategory::Texture}, {"agate", BlockCategory::Texture},
     {"onion", BlockCategory::Texture}, {"leopard", BlockCategory::Texture}, {"wrinkles", BlockCategory::Texture},

@@ -65,7 +65,7 @@ struct RenderStats {
   int width = 0, height = 0, samples = 0, max_depth = 0, threads = 0;
   std::size_t instances = 0, planes = 0, lights = 0;
   RayCounters rays;
-  // What the scene uses and what rendering left out (render/scene/features.hpp names).
+  // What the scene uses and what rendering left out (render/shade/features.hpp names).
   bool specialized = true;     // false under --no-specialize
   std::string integrator = "whitted";  // "whitted" or "path"
   std::vector<std::string> path_used, path_left_out;  // path mode: its features (PathIntegrator::describe)

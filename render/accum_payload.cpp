@@ -1,4 +1,4 @@
-#include "render/sample/accum_payload.hpp"
+#include "render/accum_payload.hpp"
 
 #include <cstring>
 #include <type_traits>

@@ -1,4 +1,4 @@
-#include "render/scene/features.hpp"
+#include "render/shade/features.hpp"
 
 #include <array>
 #include <iterator>

@@ -10,7 +10,7 @@
 #include "render/image/frame.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/sample/sampler.hpp"
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 
 namespace rts::render {
 

@@ -1,4 +1,4 @@
-#include "render/scene/obj_loader.hpp"
+#include "render/builder/obj_loader.hpp"
 
 #include <charconv>
 #include <cmath>

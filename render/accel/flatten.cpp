@@ -1,4 +1,4 @@
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 
 #include <cmath>
 #include <string>

@@ -31,7 +31,7 @@ struct FlatScene {
 // tol::kMaxGroupDepth (a cycle), or an instance's composed transform is not finite or is
 // singular ("transform is singular (scale 0?)", located at the instance's placement).
 FlatScene flatten_scene(const SceneDesc& scene);
-// The same for one instance alone (trace() in the language: render/scene/probe.hpp).
+// The same for one instance alone (trace() in the language: render/accel/probe.hpp).
 FlatScene flatten_instance(const SceneDesc& scene, const Child& instance);
 
 // The light moved into world space by `m` (positions as points, directions as vectors).

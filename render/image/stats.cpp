@@ -1,4 +1,4 @@
-#include "render/stats.hpp"
+#include "render/image/stats.hpp"
 
 #include <cmath>
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "render/geometry/shapes/shape_kinds.hpp"
-#include "render/scene/flatten.hpp"
+#include "render/accel/flatten.hpp"
 #include "render/scene/scene.hpp"
 
 namespace rts::render {

@@ -1,4 +1,4 @@
-#include "render/scene/scene_summary.hpp"
+#include "render/builder/scene_summary.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Straight-line register code for user functions: see compiled_function.hpp.
-#include "render/scene/compiled_function.hpp"
+#include "render/shade/pattern/compiled_function.hpp"
 
 #include <algorithm>
 #include <cmath>
