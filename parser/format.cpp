@@ -344,7 +344,8 @@ class Formatter {
     // Among statements and properties, a line that starts none of them continues the
     // previous one's expression: one level deeper.
     bool among_items = stack_.empty() || stack_.back().kind == '{';
-    bool continues = among_items && !item && cls != Cls::Comment && s != "else";
+    // `else` and a brace on a line of its own (Allman style) line up with their statement.
+    bool continues = among_items && !item && cls != Cls::Comment && s != "else" && s != "{";
     return base + (continues ? 1 : 0);
   }
 

@@ -52,4 +52,11 @@ for f in "$SRC"/examples/*.rts "$SRC"/stdlib/*.rts; do
   "$RTS" fmt - < "$f" > "$TMP/f.rts" && "$RTS" parse "$TMP/f.rts" > "$TMP/b" 2>&1
   cmp -s "$TMP/a" "$TMP/b" || { echo "FAIL: rts parse differs after fmt: $f"; FAILS=$((FAILS + 1)); }
 done
+# And a generated scene (the parser benchmark's: materials, transforms, `with`, comments).
+python3 "$SRC/bench/gen_scene.py" --objects 3000 --rts "$TMP/gen.rts" >/dev/null
+"$RTS" parse "$TMP/gen.rts" > "$TMP/a" 2>&1
+"$RTS" fmt - < "$TMP/gen.rts" > "$TMP/gen_f.rts" && "$RTS" parse "$TMP/gen_f.rts" > "$TMP/b" 2>&1
+cmp -s "$TMP/a" "$TMP/b" || { echo "FAIL: rts parse differs after fmt: the generated scene"; FAILS=$((FAILS + 1)); }
+cmp -s "$TMP/gen.rts" "$TMP/gen_f.rts" && { echo "FAIL: the generated scene needed no formatting (the test checks nothing)"; FAILS=$((FAILS + 1)); }
+expect_exit 0 "formatting the formatted generated scene changes nothing" -- "$RTS" fmt --check "$TMP/gen_f.rts"
 finish

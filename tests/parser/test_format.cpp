@@ -124,6 +124,9 @@ TEST_CASE("layout: indentation, spacing, blank lines", "[format]") {
   CHECK(fmt("macro m(a, b = 2) { return [a, b] }\nm(1)") == "macro m(a, b = 2) { return [a, b] }\nm(1)\n");
   CHECK(fmt("let t = checker { scale = 2 } translate <1,0,0> rotate <0, 90,0>") ==
         "let t = checker { scale = 2 } translate <1, 0, 0> rotate <0, 90, 0>\n");
+  // Allman braces and a lone `else` stay at their statement's level.
+  CHECK(fmt("if a {\n}\nelse\n{\nprint(1)\n}\nmacro m()\n{\nreturn 1\n}") ==
+        "if a {\n}\nelse\n{\n    print(1)\n}\nmacro m()\n{\n    return 1\n}\n");
   CHECK(fmt("") == "");
   CHECK(fmt("\n\n") == "");
 }
