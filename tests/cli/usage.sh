@@ -4,7 +4,7 @@ source "$(dirname "$0")/lib.sh"
 expect_exit 0 "rts --help" -- "$RTS" --help
 expect_grep "$TMP/out" "render" "--help lists the render command"
 expect_grep "$TMP/out" "parse" "--help lists the parse command"
-for c in parse check eval render converge; do
+for c in parse check eval render converge fmt; do
   expect_exit 0 "rts $c --help" -- "$RTS" $c --help
   expect_grep "$TMP/out" "Usage" "rts $c --help prints usage"
 done
