@@ -456,7 +456,14 @@ void add_scene_inputs(const render::SceneDesc& scene, std::vector<std::string>& 
 // change came meanwhile. A failing round reports its error and leaves the last image alone.
 int run_watch(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx, const std::string& out,
               const render::OutputSpec& spec) {
-  FileWatcher watcher;
+  std::unique_ptr<FileWatcher> watching;
+  try {
+    watching = std::make_unique<FileWatcher>();
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rts: error: " << e.what() << "\n";
+    return kExitRenderError;
+  }
+  FileWatcher& watcher = *watching;
   for (;;) {
     DiagnosticSink sink(std::cerr, ctx.color);
     Evaluated ev;

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "render/accel/flatten.hpp"
+#include "render/scene/scene.hpp"
 
 namespace rts {
 namespace {
@@ -72,34 +72,61 @@ const char* closed_shape(const render::ShapeGeometry& g) {
   return nullptr;
 }
 
+// Instances visited looking for one that holds the camera: the walk composes one transform
+// per instance and allocates nothing, so this bounds it to a few milliseconds; a scene with
+// more instances is not checked past them.
+constexpr std::size_t kMaxInstancesChecked = 1'000'000;
+// Deeper nesting is a cycle, which the render refuses (tol::kMaxGroupDepth); the walk just stops.
+constexpr int kMaxGroupDepth = 1024;
+
+// Depth-first over the placed instances (groups expanded, CSG blocks skipped: a hole cut in
+// a solid may hold the camera), stopping at the first closed shape around the camera.
+struct CameraSearch {
+  const render::SceneDesc& scene;
+  Vec3 eye;
+  std::size_t visited = 0;
+  const render::ShapeDesc* found = nullptr;
+  render::SourceRef placed;
+
+  void visit(const render::Child& c, const render::Mat4& parent, int depth) {
+    if (found || ++visited > kMaxInstancesChecked || depth > kMaxGroupDepth) return;
+    if (c.node >= scene.nodes.size()) return;
+    const render::Node& node = scene.nodes[c.node];
+    const render::Mat4 m = parent * c.transform;
+    if (node.kind == render::NodeKind::Group) {
+      if (node.index < scene.groups.size())
+        for (const render::Child& g : scene.groups[node.index].children) visit(g, m, depth + 1);
+      return;
+    }
+    if (node.kind != render::NodeKind::Shape || node.index >= scene.shapes.size()) return;
+    const render::ShapeDesc& shape = scene.shapes[node.index];
+    if (shape.inverse || closed_shape(shape.geometry) == nullptr) return;
+    const double det = glm::determinant(m);
+    if (!std::isfinite(det) || det == 0.0) return;  // the render reports a singular transform
+    const Vec3 p = Vec3(glm::inverse(m) * glm::dvec4(eye, 1.0));
+    if (std::isfinite(p.x + p.y + p.z) && std::visit(Inside{p}, shape.geometry)) {
+      found = &shape;
+      placed = c.loc;
+    }
+  }
+};
+
 void camera_inside(const EvalResult& result, const SourceManager& sources, std::vector<Diagnostic>& out) {
   const render::SceneDesc& scene = result.scene;
-  render::FlatScene flat;
-  try {
-    flat = render::flatten_scene(scene);
-  } catch (const render::RenderError&) {
-    return;  // the render reports it
-  }
-  const Vec3 eye = scene.camera.position;
-  for (const render::FlatShape& s : flat.shapes) {
-    const render::ShapeDesc& shape = scene.shapes[s.shape];
-    const char* word = closed_shape(shape.geometry);
-    if (shape.inverse || word == nullptr) continue;
-    render::Mat4 to_object = glm::inverse(s.to_world);
-    Vec3 p = Vec3(to_object * glm::dvec4(eye, 1.0));
-    if (!std::isfinite(p.x + p.y + p.z) || !std::visit(Inside{p}, shape.geometry)) continue;
-    Diagnostic d;
-    d.severity = Severity::Warning;
-    d.loc = locate(sources, scene.camera.loc);
-    d.message = fmt::format("the camera is inside a {}: it sees only the {}'s inside (move the camera or the {})",
-                            word, word, word);
-    SourceLoc placed = locate(sources, s.loc);
-    if (!placed.valid()) placed = locate(sources, shape.loc);
-    if (placed.valid()) d.notes.push_back(Note{placed, fmt::format("the {} is placed here", word)});
-    if (!d.loc.valid()) d.loc = placed;
-    out.push_back(std::move(d));
-    return;  // one is enough: the innermost is what the camera sees
-  }
+  CameraSearch search{scene, scene.camera.position, 0, nullptr, {}};
+  for (const render::Child& root : scene.roots) search.visit(root, render::Mat4(1.0), 0);
+  if (!search.found) return;
+  const char* word = closed_shape(search.found->geometry);
+  Diagnostic d;
+  d.severity = Severity::Warning;
+  d.loc = locate(sources, scene.camera.loc);
+  d.message = fmt::format("the camera is inside a {}: it sees only the {}'s inside (move the camera or the {})",
+                          word, word, word);
+  SourceLoc placed = locate(sources, search.placed);
+  if (!placed.valid()) placed = locate(sources, search.found->loc);
+  if (placed.valid()) d.notes.push_back(Note{placed, fmt::format("the {} is placed here", word)});
+  if (!d.loc.valid()) d.loc = placed;
+  out.push_back(std::move(d));
 }
 
 }  // namespace

@@ -53,6 +53,10 @@ TEST_CASE("the inside test follows the placement's transform and each shape's ex
   CHECK(check(cam + "cone { from = <0, 0, 0>  to = <5.2, 0, 0>  radius_from = 1  radius_to = 0 }\n").warnings.empty());
   CHECK(check(cam + "torus { major = 5  minor = 0.6 }\n").warnings.size() == 1);
   CHECK(check(cam + "torus { major = 3  minor = 0.6 }\n").warnings.empty());
+  // Inside groups, through every level's transform; a CSG block is not looked into.
+  CHECK(check(cam + "group { group { sphere { radius = 0.5 } scale 4 } translate <5, 0, 0> }\n").warnings.size() == 1);
+  CHECK(check(cam + "group { sphere { radius = 0.5 } } translate <-5, 0, 0>\n").warnings.empty());
+  CHECK(check(cam + "difference { sphere { radius = 9 } sphere { radius = 8 } }\n").warnings.empty());
   // Open surfaces never contain the camera.
   CHECK(check(cam + "plane { normal = <0, 1, 0>  offset = 2 }\n").warnings.empty());
 }
