@@ -73,8 +73,8 @@ const char* closed_shape(const render::ShapeGeometry& g) {
 }
 
 // Instances visited looking for one that holds the camera: the walk composes one transform
-// per instance and allocates nothing, so this bounds it to a few milliseconds; a scene with
-// more instances is not checked past them.
+// per instance (and inverts it for a closed shape) and allocates nothing; this bounds its
+// cost for scenes of millions of instances, which are not checked past them.
 constexpr std::size_t kMaxInstancesChecked = 1'000'000;
 // Deeper nesting is a cycle, which the render refuses (tol::kMaxGroupDepth); the walk just stops.
 constexpr int kMaxGroupDepth = 1024;
