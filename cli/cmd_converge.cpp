@@ -18,11 +18,13 @@
 
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
+#include "cli/evaluate.hpp"
 #include "cli/svg_plot.hpp"
 #include "parser/diagnostics.hpp"
 #include "render/image/image.hpp"
 #include "render/image/image_metrics.hpp"
 #include "render/image/float_image_io.hpp"
+#include "render/prepared_scene.hpp"
 #include "render/renderer.hpp"
 #include "render/sample/sampler.hpp"
 #include "runtime/evaluator.hpp"
@@ -131,19 +133,9 @@ render::Image load_reference(const std::string& path) {
 int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandContext& ctx) {
   SourceManager sources;
   DiagnosticSink sink(std::cerr, ctx.color);
-  render::SceneDesc scene;
-  try {
-    scene = std::move(evaluate_file(sources, c.scene, c.eval, sink).scene);
-  } catch (const LanguageError& e) {
-    sink.report(e.diag);
-    return kExitLanguageError;
-  } catch (const SourceError& e) {
-    std::cerr << e.message << "\n";
-    return kExitLanguageError;
-  } catch (const render::SceneError& e) {
-    std::cerr << "rts: error: " << e.what() << "\n";
-    return kExitLanguageError;
-  }
+  EvalResult evaluated;
+  if (!evaluate_reporting(sources, c.scene, c.eval, sink, evaluated)) return kExitLanguageError;
+  const render::SceneDesc scene = std::move(evaluated.scene);
   if (c.max_samples < c.min_samples) {
     std::cerr << "rts: --max-samples must be at least --min-samples\n";
     return kExitUsage;
@@ -168,6 +160,8 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
     fs::create_directories(dir, ec);
     if (!fs::is_directory(dir)) throw render::RenderError({}, fmt::format("cannot create directory '{}'", dir.string()));
 
+    // Built once (flattening, BVHs, lights, textures): every run below renders the same scene.
+    const render::PreparedScene prepared = render::prepare_scene(scene, base);
     render::Image reference;
     if (!c.reference.empty()) {
       reference = load_reference(c.reference);
@@ -178,7 +172,7 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
       o.seed = render::mix64(seed + 1);  // independent of every run's noise
       o.sampler = render::SamplerKind::Sobol;
       std::cerr << fmt::format("converge: rendering the reference at {} spp...\n", *o.samples);
-      render::RenderResult ref = render::render(scene, o);
+      render::RenderResult ref = render::render(prepared, o);
       reference = std::move(ref.color);
       render::write_pfm((dir / "reference.pfm").string(), reference);
       std::cerr << fmt::format("converge: reference: {:.2f}s, its own estimated rmse {:.3g} ({})\n",
@@ -188,7 +182,7 @@ int run_converge(const ConvergeCommand& c, const CLI::App& cmd, const CommandCon
     std::vector<Run> runs;
     auto record = [&](const std::string& label, const render::RenderOptions& o) {
       double cpu_start = cpu_seconds_now();
-      render::RenderResult r = render::render(scene, o);
+      render::RenderResult r = render::render(prepared, o);
       Run run{label, *o.samples, r.stats.error.mean_spp, r.stats.render_seconds, cpu_seconds_now() - cpu_start,
               render::image_error(r.color, reference), r.stats.error};
       std::cerr << fmt::format("converge: {:>10} {:>5} spp ({:7.1f} taken) {:8.3f}s  rmse {:.4g}  est. {}\n", label,

@@ -9,13 +9,13 @@
 
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
+#include "cli/evaluate.hpp"
 #include "cli/number_flags.hpp"
 #include "parser/diagnostics.hpp"
 #include "render/scene/resource_limits.hpp"
 #include "render/builder/scene_summary.hpp"
 #include "render/scene/source_ref.hpp"
 #include "runtime/evaluator.hpp"
-#include "runtime/scene_warnings.hpp"
 
 namespace rts::cli {
 
@@ -76,19 +76,9 @@ struct EvalCommand {
 // Evaluates `cmd.file`, reporting errors; returns false (and sets the exit code) on failure.
 bool run_eval(const EvalCommand& cmd, CommandContext& ctx, SourceManager& sources, EvalResult& result) {
   DiagnosticSink sink(std::cerr, ctx.color);
-  try {
-    result = evaluate_file(sources, cmd.file, cmd.options, sink);
-    // `rts check` warns as `rts render` does, before rendering (runtime/scene_warnings.hpp).
-    if (cmd.options.warn_unused)
-      for (const Diagnostic& d : scene_warnings(result, sources, sources.find(cmd.file))) sink.report(d);
+  // `rts check` warns as `rts render` does, before rendering (runtime/scene_warnings.hpp).
+  if (evaluate_reporting(sources, cmd.file, cmd.options, sink, result, SceneWarnings{cmd.options.warn_unused, {}}))
     return true;
-  } catch (const LanguageError& e) {
-    sink.report(e.diag);
-  } catch (const SourceError& e) {
-    std::cerr << e.message << "\n";
-  } catch (const render::SceneError& e) {  // not expected: the evaluator converts these
-    std::cerr << fmt::format("{}:{}:{}: error: {}\n", e.where.file, e.where.line, e.where.col, e.what());
-  }
   ctx.exit_code = kExitLanguageError;
   return false;
 }

@@ -20,6 +20,7 @@
 
 #include "cli/command.hpp"
 #include "cli/eval_options.hpp"
+#include "cli/evaluate.hpp"
 #include "cli/file_watch.hpp"
 #include "cli/frames.hpp"
 #include "cli/manifest.hpp"
@@ -34,7 +35,6 @@
 #include "render/image/video_writer.hpp"
 #include "render/renderer.hpp"
 #include "runtime/evaluator.hpp"
-#include "runtime/scene_warnings.hpp"
 
 namespace rts::cli {
 namespace {
@@ -82,21 +82,6 @@ struct Distribution {
   dist::TileQueueExchange* exchange = nullptr;
   bool root() const { return mpi == nullptr || mpi->rank() == 0; }
 };
-
-// A render error (exit 3) is shown like a language error: located, with the source line and
-// a caret, when it points into a scene file.
-void print_error(const render::SourceRef& where, const std::string& message, const SourceManager& sources,
-                 DiagnosticSink& sink) {
-  if (where.file && *where.file) {
-    if (const SourceFile* f = sources.find(where.file)) {
-      sink.error(SourceLoc{f, where.line, where.col}, message);
-      return;
-    }
-    std::cerr << fmt::format("{}:{}:{}: error: {}\n", where.file, where.line, where.col, message);
-  } else {
-    std::cerr << "rts: error: " << message << "\n";
-  }
-}
 
 void print_warnings(const std::vector<render::Warning>& warnings) {
   for (const render::Warning& w : warnings) {
@@ -152,25 +137,13 @@ struct Evaluated {
 
 // Evaluates the scene; on failure reports the located error and returns its exit code.
 int evaluate_scene(const RenderCommand& c, const EvalOptions& eval, DiagnosticSink& sink, Evaluated& out) {
-  try {
-    EvalResult evaluated = evaluate_file(*out.sources, c.scene, eval, sink);
-    out.eval_seconds = evaluated.seconds;
-    out.parse_seconds = evaluated.parse_seconds;
-    out.uses_clock = evaluated.uses_clock;
-    // The same warnings as `rts check` and the language server (runtime/scene_warnings.hpp).
-    for (const Diagnostic& d : scene_warnings(evaluated, *out.sources, out.sources->find(c.scene), c.integrator))
-      sink.report(d);
-    out.scene = std::move(evaluated.scene);
-  } catch (const LanguageError& e) {
-    sink.report(e.diag);
+  EvalResult evaluated;
+  if (!evaluate_reporting(*out.sources, c.scene, eval, sink, evaluated, SceneWarnings{true, c.integrator}))
     return kExitLanguageError;
-  } catch (const SourceError& e) {
-    std::cerr << e.message << "\n";  // already "path: error: ..."
-    return kExitLanguageError;
-  } catch (const render::SceneError& e) {
-    print_error(e.where, e.what(), *out.sources, sink);
-    return kExitLanguageError;
-  }
+  out.eval_seconds = evaluated.seconds;
+  out.parse_seconds = evaluated.parse_seconds;
+  out.uses_clock = evaluated.uses_clock;
+  out.scene = std::move(evaluated.scene);
   return kExitOk;
 }
 

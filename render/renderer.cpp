@@ -26,6 +26,7 @@
 #include "render/shade/lights.hpp"
 #include "render/shade/path/path_integrator.hpp"
 #include "render/pixel_renderer.hpp"
+#include "render/prepared_scene.hpp"
 #include "render/progress.hpp"
 #include "render/scene/resource_limits.hpp"
 #include "render/shade/texture.hpp"
@@ -93,33 +94,12 @@ int thread_count(const RenderOptions& options) {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-// Everything built from the scene before tracing: acceleration structures, lights, textures.
-struct Prepared {
-  FlatScene flat;
-  FeatureSet features;
-  std::unique_ptr<World> world;
-  std::vector<CompiledLight> lights;
-  std::vector<CompiledTexture> textures;
-};
-
-// Only what is placed is built: textures no placed material uses are never loaded.
-Prepared prepare(const SceneDesc& scene, const ResolvedSettings& rs, const RenderOptions& options) {
-  Prepared p;
-  p.flat = flatten_scene(scene);
-  p.features = analyze_features(scene, p.flat, FeatureContext{rs.samples, rs.max_depth, !options.aovs.empty()});
-  p.world = std::make_unique<World>(scene, p.flat, options.specialize);
-  if (p.world->uses_bvh()) p.features.add(Feature::Bvh);
-  p.lights = compile_lights(p.flat.lights);
-  std::vector<bool> used = used_textures(scene, p.flat);
-  p.textures = compile_textures(scene, &used, options.max_memory);
-  return p;
-}
-
 // What --stats reports about the scene as built: features, primitives, BVH, memory by part.
-void describe(const Prepared& prep, const Frame& frame, const RenderResult& result, RenderStats& stats) {
-  const World& world = *prep.world;
-  for (std::string_view f : prep.features.used()) stats.features_used.emplace_back(f);
-  for (std::string_view f : prep.features.left_out()) stats.features_left_out.emplace_back(f);
+void describe(const PreparedScene& prep, const FeatureSet& features, const Frame& frame, const RenderResult& result,
+              RenderStats& stats) {
+  const World& world = prep.world();
+  for (std::string_view f : features.used()) stats.features_used.emplace_back(f);
+  for (std::string_view f : features.left_out()) stats.features_left_out.emplace_back(f);
   uint64_t by_kind[kShapeKindCount] = {};
   uint64_t csg_blocks = 0;
   for (std::size_t i = 0; i < world.instance_count(); ++i) {
@@ -133,14 +113,14 @@ void describe(const Prepared& prep, const Frame& frame, const RenderResult& resu
   stats.bvh_nodes = world.bvh_nodes();
   WorldMemory m = world.memory();
   std::size_t texture_bytes = 0;
-  for (const CompiledTexture& t : prep.textures) texture_bytes += t.image_bytes();
+  for (const CompiledTexture& t : prep.textures()) texture_bytes += t.image_bytes();
   std::size_t image_bytes = result.color.rgb.size() * sizeof(float);
   for (const auto& [name, image] : result.aovs) image_bytes += image.rgb.size() * sizeof(float);
   if (frame.variance) image_bytes += frame.variance->size() * sizeof(float);
   if (frame.taken) image_bytes += frame.taken->size() * sizeof(uint32_t);
   image_bytes += frame.depth.size() * sizeof(frame.depth[0]) + frame.depth_bounded.size();
   stats.memory = {{"instances", m.instances + m.transforms}, {"shapes", m.shapes}, {"bvh", m.bvh},
-                  {"meshes", m.meshes}, {"textures", texture_bytes}, {"lights", prep.lights.size() * sizeof(CompiledLight)},
+                  {"meshes", m.meshes}, {"textures", texture_bytes}, {"lights", prep.lights().size() * sizeof(CompiledLight)},
                   {"images", image_bytes}};
 }
 
@@ -203,7 +183,10 @@ std::vector<double> channel_mean_variance(const std::vector<PixelEstimate>& est)
 
 }  // namespace
 
-RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
+namespace {
+
+// render() for a scene prepared beforehand (`given`) or here (null).
+RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, const RenderOptions& options) {
   auto build_start = Clock::now();
   RenderResult result;
   ResolvedSettings rs = resolve(scene, options, result.warnings);
@@ -217,16 +200,19 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<std::size_t>(threads));
   tbb::task_arena arena(threads);
-  Prepared prep = arena.execute([&] { return prepare(scene, rs, options); });
-  const World& world = *prep.world;
+  std::optional<PreparedScene> own;
+  if (!given) arena.execute([&] { own.emplace(scene, options.specialize, options.max_memory); });
+  const PreparedScene& prep = given ? *given : *own;
+  const FeatureSet features = prep.features(FeatureContext{rs.samples, rs.max_depth, !options.aovs.empty()});
+  const World& world = prep.world();
   Camera camera(scene.has_camera ? scene.camera : CameraDesc{}, rs.width, rs.height);
-  Integrator integrator(world, prep.lights, scene.materials, prep.textures, scene.settings, rs.max_depth,
-                        options.specialize ? trace_flags::for_features(prep.features) : trace_flags::kGeneric | trace_flags::kAll);
+  Integrator integrator(world, prep.lights(), scene.materials, prep.textures(), scene.settings, rs.max_depth,
+                        prep.integrator_flags(features));
   // Path mode: the path tracer takes the camera samples (the Whitted integrator keeps the AOVs).
   const IntegratorKind integrator_kind = options.integrator.value_or(scene.settings.integrator);
   std::optional<path::PathIntegrator> path_tracer;
   if (integrator_kind == IntegratorKind::Path) {
-    path_tracer.emplace(world, scene, prep.lights, prep.textures, rs.max_depth, result.warnings);
+    path_tracer.emplace(world, scene, prep.lights(), prep.textures(), rs.max_depth, result.warnings);
     integrator.use_path_tracer(&*path_tracer);
   }
   const bool adaptive = options.target_error > 0 && rs.samples >= 2;
@@ -247,11 +233,11 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   stats.threads = threads;
   stats.instances = world.instance_count() - world.plane_count() - world.csg_part_count();
   stats.planes = world.plane_count();
-  stats.lights = prep.lights.size();
-  stats.specialized = options.specialize;
+  stats.lights = prep.lights().size();
+  stats.specialized = prep.specialized();
   stats.integrator = integrator_name(integrator_kind);
   if (path_tracer) path_tracer->describe(stats.path_used, stats.path_left_out);
-  describe(prep, frame, result, stats);
+  describe(prep, features, frame, result, stats);
   stats.pixels.width = rs.width;
   stats.pixels.height = rs.height;
   stats.pixels.samples = rs.samples;
@@ -512,6 +498,21 @@ RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
   stats.render_seconds = seconds_since(render_start);
   summarise_error(result.color, stats.pixels, err);
   return result;
+}
+
+}  // namespace
+
+RenderResult render(const SceneDesc& scene, const RenderOptions& options) { return render_scene(scene, nullptr, options); }
+
+RenderResult render(const PreparedScene& prepared, const RenderOptions& options) {
+  return render_scene(prepared.scene(), &prepared, options);
+}
+
+PreparedScene prepare_scene(const SceneDesc& scene, const RenderOptions& options) {
+  const int threads = thread_count(options);
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  tbb::task_arena arena(threads);
+  return arena.execute([&] { return PreparedScene(scene, options.specialize, options.max_memory); });
 }
 
 }  // namespace rts::render

@@ -74,5 +74,10 @@ struct RenderOptions {
 
 // Throws RenderError (located where possible) for unreadable textures, oversize images...
 RenderResult render(const SceneDesc& scene, const RenderOptions& options);
+// The same for a scene prepared beforehand (render/prepared_scene.hpp: built once for many
+// renders); it was prepared with its own --no-specialize and --max-memory, which win over
+// `options`' ones.
+class PreparedScene;
+RenderResult render(const PreparedScene& prepared, const RenderOptions& options);
 
 }  // namespace rts::render

@@ -1,13 +1,19 @@
 // Texture evaluation: each kind at known points, boundary robustness, texture transforms,
-// image mappings with bilinear filtering and wrapping, and compile_textures' error reporting.
+// image mappings with bilinear filtering and wrapping, and compile_textures' error reporting
+// (unreadable images, and --max-memory reaching the decoders).
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/scene/resource_limits.hpp"
 #include "render/shade/texture.hpp"
 #include "tests/images/temp_dir.hpp"
 
@@ -263,5 +269,60 @@ TEST_CASE("compile_textures loads images and reports unreadable ones where decla
     CHECK(e.where.line == 7u);
     CHECK(e.where.col == 14u);
     CHECK_THAT(std::string(e.what()), Catch::Contains("nope.png"));
+  }
+}
+
+namespace {
+// A 24-bit BMP of w x h grey pixels (rows padded to 4 bytes): a texture that goes through
+// stb_image instead of the PNG reader.
+void write_bmp(const std::string& path, int w, int h) {
+  const int row = (3 * w + 3) / 4 * 4;
+  const uint32_t data = static_cast<uint32_t>(row * h), size = 54 + data;
+  std::vector<unsigned char> b(size, 0x80);
+  auto put32 = [&](std::size_t at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) b[at + i] = static_cast<unsigned char>(v >> (8 * i));
+  };
+  std::fill(b.begin(), b.begin() + 54, 0);
+  b[0] = 'B';
+  b[1] = 'M';
+  put32(2, size);
+  put32(10, 54);  // pixel data offset
+  put32(14, 40);  // BITMAPINFOHEADER
+  put32(18, static_cast<uint32_t>(w));
+  put32(22, static_cast<uint32_t>(h));
+  b[26] = 1;   // planes
+  b[28] = 24;  // bits per pixel
+  put32(34, data);
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  REQUIRE(f != nullptr);
+  REQUIRE(std::fwrite(b.data(), 1, b.size(), f) == b.size());
+  std::fclose(f);
+}
+}  // namespace
+
+TEST_CASE("--max-memory reaches image decoding: PNG and stb formats fail located before decoding", "[texture]") {
+  TempDir dir;
+  const int side = 512;  // 512x512 decoded: about 4 MiB (bytes and floats per channel)
+  const std::string png = dir.file("big.png"), bmp = dir.file("big.bmp");
+  write_png(png, Image(side, side));
+  write_bmp(bmp, side, side);
+  for (const std::string& path : {png, bmp}) {
+    SceneDesc scene;
+    TextureDesc image = image_desc("uv");
+    image.image_path = path;
+    image.loc = {"limits.rts", 3, 9};
+    scene.textures.push_back(image);
+    // No limit, and a limit with room to spare: the image loads.
+    REQUIRE(compile_textures(scene, nullptr, 0).size() == 1);
+    REQUIRE(compile_textures(scene, nullptr, resident_bytes() + (std::size_t(64) << 20)).size() == 1);
+    // 1 MiB above what the process holds now: the decoded image does not fit.
+    try {
+      compile_textures(scene, nullptr, resident_bytes() + (std::size_t(1) << 20));
+      FAIL("image decoded past --max-memory: " << path);
+    } catch (const RenderError& e) {
+      CHECK(std::string(e.where.file) == "limits.rts");
+      CHECK(e.where.line == 3u);
+      CHECK_THAT(std::string(e.what()), Catch::Contains("512x512 pixels need") && Catch::Contains("--max-memory"));
+    }
   }
 }

@@ -1,34 +1,32 @@
-// Traces single rays through a SceneDesc without an image: everything the Integrator needs,
-// built from the scene and kept alive together (tests that check one ray's radiance against
-// a closed-form answer).
+// Traces single rays through a SceneDesc without an image: the scene prepared as render()
+// prepares it (render/prepared_scene.hpp: flattening, world, lights, textures and the leave-out
+// analysis that picks the integrator's specialisation), for tests that check one ray's
+// radiance against a closed-form answer.
 #pragma once
 
 #include <memory>
-#include <vector>
 
-#include "render/accel/world.hpp"
-#include "render/accel/flatten.hpp"
+#include "render/prepared_scene.hpp"
 #include "render/shade/integrator.hpp"
-#include "render/shade/lights.hpp"
-#include "render/shade/texture.hpp"
 
 namespace rts::render::test {
 
 struct Tracer {
   SceneDesc scene;
-  FlatScene flat;
-  std::unique_ptr<World> world;
-  std::vector<CompiledLight> lights;
-  std::vector<CompiledTexture> textures;
+  PreparedScene prepared;  // points into `scene`: a Tracer is neither copied nor moved
+  const World* world;
   std::unique_ptr<Integrator> integrator;
 
-  explicit Tracer(SceneDesc s, int max_depth = 5) : scene(std::move(s)) {
-    flat = flatten_scene(scene);
-    world = std::make_unique<World>(scene, flat);
-    lights = compile_lights(flat.lights);
-    textures = compile_textures(scene);
-    integrator = std::make_unique<Integrator>(*world, lights, scene.materials, textures, scene.settings, max_depth);
+  explicit Tracer(SceneDesc s, int max_depth = 5)
+      : scene(std::move(s)), prepared(scene, /*specialize=*/true, /*max_memory=*/0), world(&prepared.world()) {
+    const FeatureSet features = prepared.features(FeatureContext{scene.settings.samples, max_depth, false});
+    integrator = std::make_unique<Integrator>(prepared.world(), prepared.lights(), scene.materials,
+                                              prepared.textures(), scene.settings, max_depth,
+                                              prepared.integrator_flags(features));
   }
+  Tracer(const Tracer&) = delete;
+  Tracer& operator=(const Tracer&) = delete;
+
   Rgb trace(const Ray& r) const {
     Sampler sampler(0, 0, 0, 0);
     RayCounters counters;
