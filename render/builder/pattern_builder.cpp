@@ -68,6 +68,12 @@ bool is_pattern_kind(std::string_view kind) {
   return std::any_of(std::begin(kPatterns), std::end(kPatterns), [&](const PatternKindName& k) { return k.name == kind; });
 }
 
+std::vector<std::string_view> pattern_property_names(std::string_view kind) {
+  for (const PatternKindName& k : kPatterns)
+    if (k.name == kind) return names_for(k.kind);
+  return {};
+}
+
 void build_pattern_texture(std::string_view kind, ParamSet& ps, TextureDesc& t) {
   t.kind = TextureKind::Pattern;
   PatternDesc& d = t.pattern;

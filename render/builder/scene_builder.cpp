@@ -205,6 +205,18 @@ std::vector<std::string> cube_map_faces(const std::string& dir, const std::strin
 
 }  // namespace
 
+std::vector<std::string_view> SceneBuilder::property_names(std::string_view kind) {
+  if (const std::vector<std::string_view>* names = names_of(kind)) return *names;
+  if (is_pattern_kind(kind)) return pattern_property_names(kind);
+  static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
+      {"settings", &kSettingsNames},          {"camera", &kCameraNames},       {"material", &kMaterialNames},
+      {"image_texture", &kImageTextureNames}, {"latlong_map", &kLatLongNames}, {"cube_map", &kCubeMapNames},
+      {"checker", &kCheckerNames},            {"stripes", &kPatternTextureNames}, {"gradient", &kPatternTextureNames}};
+  for (const auto& [name, names] : kTable)
+    if (name == kind) return *names;
+  return {};  // group (no properties) and unknown kinds
+}
+
 BlockCategory SceneBuilder::category(std::string_view kind) {
   if (find_shape(kind)) return BlockCategory::Shape;
   for (const KindInfo& k : kKinds)

@@ -38,6 +38,9 @@ class SceneBuilder {
   static BlockCategory category(std::string_view kind);
   // Every block kind name, for "did you mean" suggestions.
   static std::vector<std::string_view> block_kinds();
+  // The properties a block kind takes (the names its unknown-property check accepts); empty
+  // for group and unknown kinds. Docs and the fuzz dictionary are checked against these.
+  static std::vector<std::string_view> property_names(std::string_view kind);
 
   void settings(ParamSet& params);                            // may be called more than once;
   void camera(ParamSet& params);                              // later values override

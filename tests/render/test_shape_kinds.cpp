@@ -1,7 +1,8 @@
 // The shape kinds' descriptors (render/geometry/shapes/<kind>.hpp, listed by ShapeGeometry) and
 // everything derived from them or checked against them: the builder's kinds and property
 // names, the feature names, docs/shapes.md's property tables, docs/runtime.md's list of shape
-// kinds and the fuzz dictionary. A new kind or property that is not documented, or not in the
+// kinds, and (for every block kind: shapes, lights, materials, textures, settings, camera,
+// CSG) the docs and the fuzz dictionary. A new kind or property that is not documented, or not in the
 // dictionary, fails here with the line to add.
 #include <filesystem>
 #include <fstream>
@@ -95,18 +96,34 @@ TEST_CASE("docs/shapes.md has each shape's property table exactly as its descrip
   CHECK(runtime.find(list) != std::string::npos);
 }
 
-TEST_CASE("every block kind and shape property is documented and in the fuzz dictionary", "[kinds]") {
+TEST_CASE("every block kind and property is documented and in the fuzz dictionary", "[kinds]") {
   const std::string dict = read_text("tests/fuzz/rts.dict");
   std::string docs;
   for (const auto& f : std::filesystem::directory_iterator(std::string(RTS_SOURCE_DIR) + "/docs"))
     if (f.path().extension() == ".md") docs += read_text("docs/" + f.path().filename().string());
   auto in_dict = [&](std::string_view word) { return dict.find(fmt::format("=\"{}\"\n", word)) != std::string::npos; };
+  std::size_t properties = 0;
   for (std::string_view kind : SceneBuilder::block_kinds()) {
     CAPTURE(kind);
     INFO("add to tests/fuzz/rts.dict: prop_" << kind << "=\"" << kind << "\"");
     CHECK(in_dict(kind));
     CHECK(docs.find(fmt::format("`{}", kind)) != std::string::npos);
+    // Lights, materials, textures, settings, camera, CSG blocks and shapes alike: every name
+    // the builder accepts, from the same tables its unknown-property check uses.
+    for (std::string_view name : SceneBuilder::property_names(kind)) {
+      CAPTURE(name);
+      ++properties;
+      INFO("add to tests/fuzz/rts.dict: prop_" << name << "=\"" << name << "\", and document `" << name << "` of "
+                                               << kind << " in docs/");
+      CHECK(in_dict(name));
+      CHECK(docs.find(fmt::format("`{}`", name)) != std::string::npos);
+    }
   }
+  // The tables are not empty: settings, camera, materials, lights and textures all have names.
+  for (std::string_view kind : {"settings", "camera", "material", "point_light", "area_light", "checker", "marble",
+                                "image_texture", "union"})
+    CHECK(!SceneBuilder::property_names(kind).empty());
+  CHECK(properties > 200);
   for (const ShapeInfo& s : kShapeInfos)
     for (const PropertyInfo& p : s.properties) {
       CAPTURE(s.name, p.name);
