@@ -4,19 +4,19 @@
 // interface (Schlick's Fresnel, total internal reflection) and the glossy lobe's direction;
 // the integrator keeps only the recursion, shadow rays and light loops.
 //
-// The `Bsdf` seam at the end is what a physically based integrator (render/shade/path/)
-// implements its scattering functions against; the Whitted functions above it are not BSDFs
+// The `Bsdf` seam (render/shade/bsdf.hpp) is what a physically based integrator
+// (render/shade/path/) implements its scattering functions against; the Whitted functions above it are not BSDFs
 // (Phong is not energy-conserving, and `reflect`/`transmit` are weights, not reflectances).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
-#include <concepts>
 #include <numbers>
 
 #include <glm/glm.hpp>
 
 #include "render/geometry/tolerances.hpp"
+#include "render/shade/bsdf.hpp"
 #include "render/sample/sampler.hpp"
 #include "render/scene/scene.hpp"
 #include "render/shade/lights.hpp"
@@ -128,34 +128,7 @@ inline Vec3 reflected_direction(const MaterialDesc& m, const Vec3& mirror, const
   return mirror;
 }
 
-// ---- the BSDF seam -------------------------------------------------------------------------
-// A physically based integrator (render/shade/path/) scatters with BSDFs: per hit it builds
-// one from the resolved MaterialDesc (shading_material, diffuse_color and detail_normal in
-// shading.hpp give the same per-point values Whitted uses) and a ShadingFrame, and asks it
-//   f(frame, wi)           the BSDF value for light arriving from unit wi (no cosine),
-//   pdf(frame, wi)         the density sample() draws wi with (solid angle; 0 for deltas),
-//   sample(frame, u, s)    a direction from uniforms u in [0,1)^3 into s, false when none.
-// Directions point away from the surface; frame.wo is towards the viewer. The type is a
-// template parameter or a closed std::variant of BSDF types, never a virtual call per ray;
-// the concept below checks a type has the three calls.
-struct ShadingFrame {
-  Vec3 n{0, 1, 0};    // unit shading normal, on the side of wo
-  Vec3 ng{0, 1, 0};   // unit geometric normal, on the side of wo
-  Vec3 wo{0, 1, 0};   // unit, towards the viewer
-};
-
-struct BsdfSample {
-  Vec3 wi{0.0};       // unit, towards the light
-  Rgb f{0.0};         // BSDF value for (wo, wi)
-  double pdf = 0.0;   // solid-angle density; for a delta lobe the discrete probability
-  bool delta = false; // a mirror or refraction lobe: f and pdf are of the delta's weight
-};
-
-template <class B>
-concept Bsdf = requires(const B& b, const ShadingFrame& frame, const Vec3& wi, const Vec3& u, BsdfSample& s) {
-  { b.f(frame, wi) } -> std::same_as<Rgb>;
-  { b.pdf(frame, wi) } -> std::same_as<double>;
-  { b.sample(frame, u, s) } -> std::same_as<bool>;
-};
+// The BSDF seam (Bsdf, BsdfSample) is render/shade/bsdf.hpp, included here: the path
+// tracer's path::Bsdf implements it.
 
 }  // namespace rts::render

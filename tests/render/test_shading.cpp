@@ -236,9 +236,10 @@ namespace {
 // A Lambertian BSDF, to show (and check) the seam's shape.
 struct TestLambert {
   Rgb albedo{0.5};
-  Rgb f(const ShadingFrame&, const Vec3&) const { return albedo / 3.141592653589793; }
-  double pdf(const ShadingFrame& fr, const Vec3& wi) const { return std::max(0.0, glm::dot(fr.n, wi)) / 3.141592653589793; }
-  bool sample(const ShadingFrame&, const Vec3&, BsdfSample&) const { return false; }
+  Vec3 n{0, 1, 0};
+  Rgb f(const Vec3&) const { return albedo / 3.141592653589793; }
+  double pdf(const Vec3& wi) const { return std::max(0.0, glm::dot(n, wi)) / 3.141592653589793; }
+  bool sample(double, glm::dvec2, BsdfSample&) const { return false; }
 };
 }  // namespace
 static_assert(Bsdf<TestLambert>, "the BSDF seam's three calls");

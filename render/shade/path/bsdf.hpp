@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/shade/bsdf.hpp"
 #include "render/shade/path/microfacet.hpp"
 #include "render/shade/path/warp.hpp"
 
@@ -27,13 +28,7 @@ struct Lobes {
   double eta = 1.0;             // transmissive: n_from / n_to across the surface
 };
 
-struct BsdfSample {
-  Vec3 wi{0.0};        // world, unit
-  Rgb weight{0.0};     // f cos / pdf
-  double pdf = 0.0;    // solid angle density of the smooth lobes' mixture (0 for a delta lobe)
-  bool delta = false;
-  bool transmitted = false;
-};
+using render::BsdfSample;  // render/shade/bsdf.hpp
 
 // Exact Fresnel reflectance of an unpolarised dielectric interface; `cos_i` > 0 on the incident
 // side, eta = n_from / n_to. 1 on total internal reflection.
@@ -63,5 +58,7 @@ class Bsdf {
   double eta_ = 1.0;
   double p_diffuse_ = 0, p_glossy_ = 0, p_reflect_ = 0, p_transmit_ = 0, total_ = 0;
 };
+
+static_assert(render::Bsdf<Bsdf>, "the path tracer's BSDF implements the material unit's seam (render/shade/bsdf.hpp)");
 
 }  // namespace rts::render::path
