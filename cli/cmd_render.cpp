@@ -4,10 +4,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <climits>
 #include <utility>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <new>
@@ -30,7 +32,9 @@
 #include "dist/tile_log.hpp"
 #include "cli/stats_report.hpp"
 #include "cli/number_flags.hpp"
+#include "cli/pov_scene.hpp"
 #include "parser/diagnostics.hpp"
+#include "runtime/stdlib_path.hpp"
 #include "render/image/image_output.hpp"
 #include "render/image/video_writer.hpp"
 #include "render/renderer.hpp"
@@ -63,6 +67,7 @@ struct RenderCommand {
   float depth_miss = 0.0f, normal_miss = 0.0f;
   bool no_progress = false;
   bool no_specialize = false;
+  bool strict = false;  // a POV-Ray scene: what rts cannot express is an error
   StatsOptions stats;
   EvalOptions eval;
   // Animation (cli/frames.hpp).
@@ -136,9 +141,59 @@ struct Evaluated {
 };
 
 // Evaluates the scene; on failure reports the located error and returns its exit code.
-int evaluate_scene(const RenderCommand& c, const EvalOptions& eval, DiagnosticSink& sink, Evaluated& out) {
+// A POV-Ray scene (scene.pov) is translated in memory; its own include files go to a
+// temporary folder that the evaluation searches, removed afterwards.
+struct PovScene {
+  std::string rts;
+  fs::path include_dir;
+  ~PovScene() {
+    std::error_code ec;
+    if (!include_dir.empty()) fs::remove_all(include_dir, ec);
+  }
+};
+
+int import_pov_scene(const RenderCommand& c, EvalOptions& eval, PovScene& pov) {
+  import::pov::PovOptions opt;
+  opt.source_path = c.scene;
+  opt.include_dirs = c.eval.include_paths;
+  opt.strict = c.strict;
+  opt.stdlib_dir = c.eval.stdlib_dir.empty() ? runtime::find_standard_library() : c.eval.stdlib_dir;
+  import::pov::PovResult result;
+  std::string why;
+  if (!import_pov_file(c.scene, opt, result, why)) {
+    if (!why.empty()) std::cerr << "rts: " << why << "\n";
+    return kExitLanguageError;
+  }
+  pov.rts = std::move(result.rts);
+  if (!result.includes.empty()) {
+    std::string pattern = (fs::temp_directory_path() / "rts-pov-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) {
+      std::cerr << "rts: cannot make a temporary folder for the scene's include files\n";
+      return kExitRenderError;
+    }
+    pov.include_dir = pattern;
+    for (const import::pov::PovOutputFile& f : result.includes) {
+      std::ofstream o(pov.include_dir / f.name, std::ios::binary);
+      o << f.text;
+    }
+    eval.include_paths.push_back(pov.include_dir.string());
+    eval.allow_read.push_back(pov.include_dir.string());
+  }
+  return kExitOk;
+}
+
+int evaluate_scene(const RenderCommand& c, const EvalOptions& eval_in, DiagnosticSink& sink, Evaluated& out) {
+  EvalOptions eval = eval_in;
+  PovScene pov;
+  std::string path = c.scene;
+  if (is_pov_path(c.scene)) {
+    if (int rc = import_pov_scene(c, eval, pov); rc != kExitOk) return rc;
+    // The translation, in memory beside the scene (its relative paths stay the scene's).
+    path = c.scene + ".rts";
+    out.sources->add(path, std::move(pov.rts));
+  }
   EvalResult evaluated;
-  if (!evaluate_reporting(*out.sources, c.scene, eval, sink, evaluated, SceneWarnings{true, c.integrator}))
+  if (!evaluate_reporting(*out.sources, path, eval, sink, evaluated, SceneWarnings{true, c.integrator}))
     return kExitLanguageError;
   out.eval_seconds = evaluated.seconds;
   out.parse_seconds = evaluated.parse_seconds;
@@ -534,6 +589,9 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
       return rc;
     }
   }
+  // settings { output_gamma = "linear" } (an imported POV-Ray scene without assumed_gamma 1.0)
+  // is --linear written in the scene.
+  if (!video && probe.scene.settings.output_linear) spec.spec->linear = true;
   const int64_t scene_frames = probe.scene.settings.frames;
   if (distributed) {
     if (scene_frames > 1)
@@ -577,7 +635,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
 void add_render_command(CLI::App& app, CommandContext& ctx) {
   auto c = std::make_shared<RenderCommand>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image (PNG, PFM or EXR)");
-  cmd->add_option("scene", c->scene, "The scene file (.rts)")->required();
+  cmd->add_option("scene", c->scene, "The scene file (.rts, or a POV-Ray .pov translated in memory)")->required();
   cmd->add_option("-o,--output", c->output, "Output image: .png, .pfm or .exr, by extension (default: the scene's name with .png, here); "
                   "an animation's frames: a '#' pattern (out/f_####.png) or a video (.mp4, .webm)")
       ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("the file name is empty") : ""; },
@@ -604,6 +662,7 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--bits", c->bits, "Bits per channel: png 8 (default) or 16; exr 32 (default) or 16 (half)")
       ->check(CLI::IsMember({8, 16, 32}));
+  cmd->add_flag("--strict", c->strict, "A POV-Ray scene (.pov): what rts cannot express is an error, not a warning");
   cmd->add_flag("--linear", c->linear, "PNG: store linear values, not sRGB (as the courses do)");
   cmd->add_flag("--aov-files", c->aov_files, "EXR: write AOVs as separate files, not layers");
   cmd->add_option("--depth-range", c->depth_range, "Depth AOV: NEAR,FAR map linearly to black..white")

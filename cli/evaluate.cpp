@@ -12,7 +12,10 @@ namespace rts::cli {
 bool evaluate_reporting(SourceManager& sources, const std::string& path, const EvalOptions& options,
                         DiagnosticSink& sink, EvalResult& out, SceneWarnings warnings) {
   try {
-    out = evaluate_file(sources, path, options, sink);
+    // A file already added in memory (`rts render scene.pov`: the translation) is evaluated as
+    // it is; any other is read from disk.
+    const SourceFile* added = sources.find(path);
+    out = added ? evaluate_source(sources, *added, options, sink) : evaluate_file(sources, path, options, sink);
     // The same warnings as `rts check`, `rts render` and the language server give.
     if (warnings.report)
       for (const Diagnostic& d : scene_warnings(out, sources, sources.find(path), warnings.integrator)) sink.report(d);

@@ -72,6 +72,12 @@ void Writer::close(const std::string& suffix) {
   line("}" + suffix);
 }
 
+void Writer::middle(const std::string& text) {
+  if (depth_ > 0) --depth_;
+  line("} " + text + " {");
+  ++depth_;
+}
+
 std::string SceneText::finish() const {
   std::string out;
   for (const std::string& h : header) out += h.empty() ? "//\n" : "// " + h + "\n";

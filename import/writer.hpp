@@ -30,6 +30,7 @@ class Writer {
   void blank();
   void open(const std::string& text);      // "text {" and indent
   void close(const std::string& suffix = "");  // "}" + suffix and dedent
+  void middle(const std::string& text);          // "} text {" at the outer level: `} else {`
   const std::string& text() const { return out_; }
 
  private:

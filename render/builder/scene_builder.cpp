@@ -61,7 +61,7 @@ const std::vector<std::string_view> kSettingsNames = {"width",         "height",
                                                       "seed",          "sampler",     "environment",
                                                       "environment_ambient", "frames",
                                                       "integrator",    "fog_distance", "fog_color",
-                                                      "fog_offset",    "fog_altitude"};
+                                                      "fog_offset",    "fog_altitude", "output_gamma"};
 const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
                                                     "fov",        "fov_axis",   "handedness", "view_width",
                                                     "aperture",   "focus_distance"};
@@ -73,7 +73,8 @@ const std::vector<std::string_view> kPatternTextureNames = {"color1", "color2", 
 const std::vector<std::string_view> kMaterialNames = {"color",    "texture",  "emission",  "ambient",
                                                       "diffuse",  "specular", "shininess", "reflect",
                                                       "transmit", "ior",      "fresnel",   "roughness",
-                                                      "ior_relative", "bump", "bump_scale", "normal_map"};
+                                                      "ior_relative", "bump", "bump_scale", "normal_map",
+                                                      "highlight"};
 // "material" and each shape kind's own properties, by ShapeGeometry index.
 const std::array<std::vector<std::string_view>, kShapeKindCount>& shape_property_names() {
   static const auto table = [] {
@@ -285,6 +286,13 @@ void SceneBuilder::settings(ParamSet& ps) {
       throw SceneError(loc_of(ps, "integrator"),
                        fmt::format("unknown integrator '{}' (expected whitted or path)", name));
   }
+  if (ps.has("output_gamma")) {
+    std::string name = ps.string("output_gamma", "srgb");
+    if (name != "srgb" && name != "linear")
+      throw SceneError(loc_of(ps, "output_gamma"),
+                       fmt::format("unknown output_gamma '{}' (expected srgb or linear)", name));
+    s.output_linear = name == "linear";
+  }
   s.loc = ps.loc();
   ps.check_unused(kSettingsNames);
 }
@@ -439,6 +447,12 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
     }
   }
   m.shininess = non_negative(ps, "shininess", ps.number("shininess", m.shininess));
+  if (ps.has("highlight")) {
+    std::string lobe = ps.string("highlight", "phong");
+    if (lobe != "phong" && lobe != "blinn")
+      throw SceneError(loc_of(ps, "highlight"), fmt::format("unknown highlight '{}' (expected phong or blinn)", lobe));
+    m.blinn = lobe == "blinn";
+  }
   if (!channel_texture("reflect", m.reflect_texture)) {
     m.reflect = ps.color("reflect", m.reflect);
     non_negative_color(ps, "reflect", m.reflect);

@@ -96,6 +96,9 @@ struct MaterialDesc {
   double specular = 0.0;
   Color specular_color{1.0};   // tints the highlight (`specular = rgb(...)` sets it, specular = 1)
   double shininess = 32.0;
+  // The highlight's lobe: Phong's (r · view)^shininess, or with `blinn` (POV-Ray's `specular`
+  // + `roughness`) the half-vector's (n · h)^shininess, h = normalize(to_light + view).
+  bool blinn = false;
   Color reflect{0.0};          // mirror reflection weight per channel
   Color transmit{0.0};         // transmission weight per channel (also filters shadows)
   double ior = 1.0;            // absolute index of the inside (the medium stack pairs media)
@@ -235,6 +238,9 @@ struct Settings {
   // (1: a still). The renderer itself draws one frame at a time.
   int64_t frames = 1;
   IntegratorKind integrator = IntegratorKind::Whitted;
+  // settings { output_gamma = "linear" }: PNG output stores linear values (as --linear), the
+  // way POV-Ray writes a scene without assumed_gamma 1.0. "srgb" (the default) encodes sRGB.
+  bool output_linear = false;
   SourceRef loc;
 };
 

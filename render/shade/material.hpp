@@ -61,6 +61,14 @@ inline Rgb phong(const MaterialDesc& m, const Rgb& diffuse_color, const Vec3& n,
                  double n_dot_l, const Vec3& view) {
   Rgb shade = m.diffuse * n_dot_l * diffuse_color;
   if (kSpecular && m.specular > 0.0) {
+    if (m.blinn) {
+      // POV-Ray's `specular`: the half-vector between light and eye against the normal.
+      Vec3 h = to_light + view;
+      double len = glm::length(h);
+      double n_dot_h = len > 0.0 ? glm::dot(n, h) / len : 0.0;
+      if (n_dot_h > 0.0) shade += m.specular * std::pow(n_dot_h, m.shininess) * to_rgb(m.specular_color);
+      return shade;
+    }
     Vec3 r = 2.0 * n_dot_l * n - to_light;  // mirror of the light direction
     double r_dot_v = glm::dot(r, view);
     if (r_dot_v > 0.0) shade += m.specular * std::pow(r_dot_v, m.shininess) * to_rgb(m.specular_color);

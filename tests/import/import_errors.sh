@@ -53,5 +53,5 @@ printf 'hello world\n' > mystery.dat
 expect_exit 1 "an unrecognisable format" -- "$RTS" import mystery.dat
 expect_grep "$TMP/err" "cannot tell the format" "says so"
 expect_exit 2 "a missing input" -- "$RTS" import no_such_file.ray
-expect_exit 2 "an unknown --format" -- "$RTS" import short.scene --format pov
+expect_exit 2 "an unknown --format" -- "$RTS" import short.scene --format vrml
 finish

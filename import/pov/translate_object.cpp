@@ -1,0 +1,814 @@
+// POV-Ray objects and textures as rts blocks: positional values become named properties,
+// pigment/finish/normal/interior one material with POV-Ray's default finish written out,
+// transforms postfix operators.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "import/pov/translator.hpp"
+
+namespace rts::import::pov {
+
+void MaterialProps::set(const std::string& name, const std::string& value) {
+  for (auto& p : props)
+    if (p.first == name) {
+      p.second = value;
+      return;
+    }
+  props.emplace_back(name, value);
+}
+
+bool MaterialProps::has(const std::string& name) const {
+  return std::any_of(props.begin(), props.end(), [&](const auto& p) { return p.first == name; });
+}
+
+bool Translator::is_object_kind(const std::string& k) {
+  static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
+                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "union",
+                                              "intersection", "difference", "merge", "object"};
+  return kinds.count(k) > 0 || is_unsupported_shape(k);
+}
+
+bool Translator::is_unsupported_shape(const std::string& k) {
+  static const std::set<std::string> kinds = {"lathe", "sor", "prism", "blob", "height_field", "isosurface", "text",
+                                              "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
+                                              "parametric", "quadric", "poly", "cubic", "quartic", "ovus", "lemon",
+                                              "mesh2", "polynomial"};
+  return kinds.count(k) > 0;
+}
+
+namespace {
+
+// The closest rts alternative for an unsupported shape, and whether it is planned.
+std::pair<std::string, bool> shape_alternative(const std::string& k) {
+  if (k == "lathe" || k == "sor" || k == "prism" || k == "blob" || k == "height_field" || k == "isosurface")
+    return {"a mesh from an OBJ file (issue 20 plans the shape)", true};
+  if (k == "text" || k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
+  if (k == "mesh2") return {"mesh { vertices = [...]  faces = [...] }", true};
+  return {"a mesh from an OBJ file", false};
+}
+
+bool closed_kind(const std::string& k) {
+  return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
+         k == "superellipsoid" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
+}
+
+bool is_texture_part(const std::string& k) {
+  return k == "texture" || k == "pigment" || k == "finish" || k == "normal" || k == "interior" || k == "material";
+}
+
+}  // namespace
+
+bool Translator::has_texture(const Block& b) const {
+  bool children = false, all_children = true;
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Nested && is_texture_part(it.block->kind) && it.block->kind != "interior") return true;
+    if (it.kind == Item::Nested && is_object_kind(it.block->kind)) {
+      children = true;
+      all_children = all_children && has_texture(*it.block);
+    }
+    if (it.kind == Item::Value && b.kind == "object" && it.args[0]->kind == Expr::Name) {
+      auto* self = const_cast<Translator*>(this);
+      if (Symbol* s = self->lookup(it.args[0]->text); s && s->block && has_texture(*s->block)) return true;
+    }
+    if (it.kind != Item::Nested && it.kind != Item::Keyword && b.kind != "object") all_children = false;
+  }
+  return children && all_children;
+}
+
+std::vector<std::string> Translator::transforms(const Item& it) {
+  if (it.kind == Item::Keyword && !it.args.empty()) {
+    if (it.name == "translate" || it.name == "rotate") return {it.name + " " + vector_value(*it.args[0])};
+    if (it.name == "scale") {
+      double k;
+      if (literal_number(*it.args[0], k)) return {"scale " + num(k)};
+      return {"scale " + vector_value(*it.args[0])};
+    }
+    if (it.name == "matrix") {
+      const Expr& m = *it.args[0];
+      if (m.kind == Expr::Vector && m.args.size() == 12) {
+        std::string s = "matrix [";
+        for (std::size_t i = 0; i < 12; ++i) s += (i ? ", " : "") + value(*m.args[i]);
+        return {s + "]"};
+      }
+      error(it.loc, "'matrix' takes 12 values: <a, b, c, d, e, f, g, h, i, j, k, l>");
+    }
+    if (it.name == "transform") {
+      // transform T, a declared transform: its steps inlined.
+      if (it.args[0]->kind == Expr::Name)
+        if (Symbol* s = lookup(it.args[0]->text); s && s->block) {
+          std::vector<std::string> out;
+          for (const Item& step : s->block->items)
+            for (std::string& t : transforms(step)) out.push_back(std::move(t));
+          return out;
+        }
+      unsupported(it.loc, "transform", "translate/rotate/scale/matrix written out", false);
+    }
+  }
+  if (it.kind == Item::Nested && it.block->kind == "transform") {
+    std::vector<std::string> out;
+    for (const Item& step : it.block->items) {
+      if (step.kind == Item::Value && step.args[0]->kind == Expr::Name) {
+        Item ref = step;
+        ref.kind = Item::Keyword;
+        ref.name = "transform";
+        for (std::string& t : transforms(ref)) out.push_back(std::move(t));
+        continue;
+      }
+      if (step.kind == Item::Keyword && step.name == "inverse") {
+        unsupported(step.loc, "inverse", "the inverse transform written out", false);
+        continue;
+      }
+      for (std::string& t : transforms(step)) out.push_back(std::move(t));
+    }
+    return out;
+  }
+  return {};
+}
+
+void Translator::default_finish(MaterialProps& m) const {
+  // POV-Ray's default texture: a black pigment, ambient 0.1, diffuse 0.6 (rts's own default
+  // diffuse is 0.7), changed by #default.
+  if (!m.has("ambient")) m.set("ambient", "0.1");
+  if (!m.has("diffuse")) m.set("diffuse", "0.6");
+  for (const auto& p : default_texture_.props)
+    if (p.first != "color" && p.first != "texture") m.set(p.first, p.second);
+}
+
+std::string Translator::material_text(const MaterialProps& m, bool with_defaults) {
+  MaterialProps full;
+  if (with_defaults && m.base.empty()) {
+    // #default's pigment, else POV-Ray's black; then the finish defaults, then this texture's.
+    bool colored = m.has("color") || m.has("texture");
+    if (!colored) {
+      bool default_color = false;
+      for (const auto& p : default_texture_.props)
+        if (p.first == "color" || p.first == "texture") full.set(p.first, p.second), default_color = true;
+      if (!default_color) full.set("color", "rgb(0)");
+    }
+    for (const auto& p : m.props) full.set(p.first, p.second);
+    default_finish(full);
+    // Keep the order readable: colour first, then the finish in POV-Ray's order.
+    std::stable_sort(full.props.begin(), full.props.end(), [](const auto& a, const auto& b) {
+      auto rank = [](const std::string& n) {
+        static const std::vector<std::string> order = {"color", "texture", "ambient", "diffuse", "specular",
+                                                       "shininess", "reflect", "transmit", "ior", "emission"};
+        auto it = std::find(order.begin(), order.end(), n);
+        return static_cast<int>(it - order.begin());
+      };
+      return rank(a.first) < rank(b.first);
+    });
+  } else {
+    full = m;
+  }
+  std::string s;
+  for (const auto& p : full.props) s += (s.empty() ? "" : "  ") + p.first + " = " + p.second;
+  if (!m.base.empty()) return full.props.empty() ? m.base : m.base + " with { " + s + " }";
+  return "material { " + s + " }";
+}
+
+std::string Translator::pigment_value(const Block& b) {
+  MaterialProps m;
+  pigment(b, m);
+  for (const auto& p : m.props)
+    if (p.first == "color" || p.first == "texture") return p.second;
+  return "rgb(0)";
+}
+
+void Translator::pigment(const Block& b, MaterialProps& m) {
+  std::string pattern;       // a pattern block's name (checker, marble, ...)
+  std::vector<std::string> colors, pattern_props, xforms;
+  std::string map;           // color_map as an rts list
+  std::vector<std::string> map_stops;  // its colours in order
+  double filter = 0, transmit = 0;
+  static const std::set<std::string> patterns = {"bozo", "spotted", "granite", "marble", "wood", "agate", "onion",
+                                                 "leopard", "wrinkles", "crackle", "cells", "bumps", "dents",
+                                                 "ripples", "waves", "gradient"};
+  static const std::set<std::string> unsupported_patterns = {
+      "brick", "hexagon", "spiral1", "spiral2", "quilted", "facets", "average", "slope", "radial", "mandel",
+      "julia", "magnet", "planar", "spherical", "cylindrical", "boxed", "toroidal", "density_file", "object",
+      "pigment_pattern", "image_pattern", "tiling", "function", "cubic", "square", "triangular"};
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Value) {
+      const Expr& e = *it.args[0];
+      if (e.kind == Expr::Name) {
+        if (Symbol* s = lookup(e.text); s && (s->type == Type::Pigment || s->type == Type::Material)) {
+          m.set("color", rename(e.text));
+          continue;
+        }
+        if (missing_name(it.loc, e.text, "pigment or colour")) {
+          m.set("color", "rgb(0.5)");
+          continue;
+        }
+      }
+      double f = 0, t = 0;
+      std::string c = color_value(e, &f, &t);
+      if (pattern.empty()) {
+        m.set("color", c);
+        filter = f, transmit = t;
+      } else {
+        colors.push_back(c);
+      }
+      continue;
+    }
+    if (it.kind == Item::Keyword) {
+      const std::string& k = it.name;
+      if ((k == "color" || k == "colour") && !it.args.empty()) {
+        double f = 0, t = 0;
+        std::string c = color_value(*it.args[0], &f, &t);
+        if (pattern.empty()) {
+          m.set("color", c);
+          filter = f, transmit = t;
+        } else {
+          colors.push_back(c);
+        }
+        continue;
+      }
+      if ((k == "filter" || k == "transmit") && !it.args.empty()) {
+        double v;
+        if (literal_number(*it.args[0], v)) (k == "filter" ? filter : transmit) = v;
+        continue;
+      }
+      if (k == "checker") {
+        pattern = k;
+        for (const ExprPtr& a : it.args) colors.push_back(color_value(*a));
+        continue;
+      }
+      if (patterns.count(k)) {
+        pattern = k;
+        if (k == "gradient" && !it.args.empty()) {
+          std::vector<double> v;
+          std::string axis = "\"y\"";
+          if (literal_vector(*it.args[0], v) && v.size() == 3) {
+            axis = v[0] != 0 ? "\"x\"" : v[2] != 0 ? "\"z\"" : "\"y\"";
+            if ((v[0] != 0) + (v[1] != 0) + (v[2] != 0) != 1)
+              unsupported(it.loc, "gradient", "a gradient along x, y or z (rotate the texture)", false);
+          }
+          pattern_props.push_back("axis = " + axis);
+        }
+        continue;
+      }
+      if (unsupported_patterns.count(k)) {
+        unsupported(it.loc, k, "a pattern { function = ... } macro, or checker/gradient/marble", false);
+        pattern = "unsupported";
+        continue;
+      }
+      if (k == "turbulence" || k == "octaves" || k == "omega" || k == "lambda" || k == "frequency" ||
+          k == "phase" || k == "agate_turb") {
+        if (!it.args.empty()) pattern_props.push_back(k + " = " + value(*it.args[0]));
+        continue;
+      }
+      if (k == "ramp_wave" || k == "triangle_wave" || k == "sine_wave" || k == "scallop_wave" || k == "cubic_wave") {
+        pattern_props.push_back("wave = \"" + k.substr(0, k.find('_')) + "\"");
+        continue;
+      }
+      std::vector<std::string> t = transforms(it);
+      if (!t.empty()) {
+        xforms.insert(xforms.end(), t.begin(), t.end());
+        continue;
+      }
+      if (k == "quick_color" || k == "quick_colour") continue;
+      unsupported(it.loc, k, "see docs/textures.md for rts's pattern properties", false);
+      continue;
+    }
+    if (it.kind == Item::Nested) {
+      const Block& n = *it.block;
+      if (n.kind == "color_map" || n.kind == "colour_map") {
+        std::string list;
+        for (const Item& e : n.items) {
+          if (e.kind == Item::Value && e.args[0]->kind == Expr::Name) {
+            list = rename(e.args[0]->text);  // a declared color map
+            break;
+          }
+          if (e.kind != Item::MapEntry) continue;
+          std::vector<std::string> vals;
+          for (const Item& v : e.block->items) {
+            if (v.kind == Item::Value) vals.push_back(value(*v.args[0]));
+            if (v.kind == Item::Keyword && (v.name == "color" || v.name == "colour") && !v.args.empty())
+              vals.push_back(color_value(*v.args[0]));
+          }
+          if (vals.size() >= 2) map_stops.push_back(vals[1]);
+          if (vals.size() == 4) map_stops.push_back(vals[3]);
+          if (vals.size() >= 2) {
+            bool first = list.empty();
+            list += (first ? "[" : ", ") + ("[" + vals[0] + ", " + (vals.size() >= 2 ? vals[1] : "rgb(0)") + "]");
+            // The old form [a b color A color B]: a second stop.
+            if (vals.size() == 4) list += ", [" + vals[1] + ", " + vals[3] + "]";
+          }
+        }
+        map = list.empty() || list[0] != '[' ? list : list + "]";
+        continue;
+      }
+      if (n.kind == "image_map") {
+        std::string file;
+        for (const Item& v : n.items)
+          if (v.kind == Item::Value && v.args[0]->kind == Expr::String) file = value(*v.args[0]);
+        if (file.empty()) {
+          unsupported(n.loc, "image_map", "image_texture { file = \"...\" }", false);
+        } else {
+          warn(n.loc, "image_map is planar in POV-Ray (the image spans x and y in [0, 1]); rts's image_texture "
+                      "uses the shape's uv mapping");
+          m.set("color", "image_texture { file = " + file + " }");
+        }
+        continue;
+      }
+      if (n.kind == "pigment_map" || n.kind == "warp") {
+        unsupported(n.loc, n.kind, n.kind == "warp" ? "turbulence on the pattern" : "a color_map", false);
+        continue;
+      }
+      if (n.kind == "pigment") {
+        MaterialProps inner;
+        pigment(n, inner);
+        for (const auto& p : inner.props) m.set(p.first, p.second);
+        continue;
+      }
+      std::vector<std::string> t = transforms(it);
+      if (!t.empty()) {
+        xforms.insert(xforms.end(), t.begin(), t.end());
+        continue;
+      }
+      unsupported(n.loc, n.kind, "see docs/textures.md", false);
+    }
+  }
+  std::string suffix;
+  for (const std::string& t : xforms) suffix += " " + t;
+  if (pattern == "checker") {
+    std::string c1 = colors.size() > 0 ? colors[0] : "rgb(0, 0, 1)";  // POV-Ray's default: blue and green
+    std::string c2 = colors.size() > 1 ? colors[1] : "rgb(0, 1, 0)";
+    m.set("color", xforms.empty() ? fmt::format("checker({}, {}, 1)", c1, c2)
+                                  : fmt::format("checker {{ color1 = {}  color2 = {} }}{}", c1, c2, suffix));
+  } else if (pattern == "unsupported") {
+    m.set("color", colors.empty() ? "rgb(0.5)" : colors[0]);
+  } else if (pattern == "gradient") {
+    // rts's gradient runs color1 -> color2 (a color_map's first and last colours).
+    const std::vector<std::string>& stops = map_stops;
+    if (stops.size() > 2) unsupported(b.loc, "gradient color_map", "color1 and color2 (its first and last colours)", false);
+    if (!stops.empty()) colors = {stops.front(), stops.back()};
+    std::string body;
+    for (const std::string& p : pattern_props)
+      if (p.rfind("axis", 0) == 0) body += "  " + p;
+      else unsupported(b.loc, "gradient " + p.substr(0, p.find(' ')), "a plain gradient { axis color1 color2 }", false);
+    if (colors.size() >= 2) body += fmt::format("  color1 = {}  color2 = {}", colors[0], colors[1]);
+    m.set("texture", "gradient {" + body + (body.empty() ? "}" : " }") + suffix);
+    m.props.erase(std::remove_if(m.props.begin(), m.props.end(), [](const auto& p) { return p.first == "color"; }),
+                  m.props.end());
+  } else if (!pattern.empty()) {
+    std::string body;
+    for (const std::string& p : pattern_props) body += "  " + p;
+    if (!map.empty()) body += "  color_map = " + map;
+    else if (colors.size() >= 2) body += fmt::format("  color_map = [[0, {}], [1, {}]]", colors[0], colors[1]);
+    m.set("texture", pattern + " {" + body + (body.empty() ? "}" : " }") + suffix);
+    m.props.erase(std::remove_if(m.props.begin(), m.props.end(), [](const auto& p) { return p.first == "color"; }),
+                  m.props.end());
+  } else if (!xforms.empty() && m.has("color")) {
+    // A transformed plain colour is the same colour.
+  }
+  if (filter > 0 || transmit > 0) {
+    // POV-Ray: filtered light takes the surface's colour, transmitted light passes as it is.
+    std::string c;
+    for (const auto& p : m.props)
+      if (p.first == "color") c = p.second;
+    std::string t = filter > 0 && !c.empty()
+                        ? (transmit > 0 ? fmt::format("{} * {} + rgb({})", c, num(filter), num(transmit))
+                                        : fmt::format("{} * {}", c, num(filter)))
+                        : num(filter + transmit);
+    m.set("transmit", t);
+  }
+}
+
+void Translator::finish(const Block& b, MaterialProps& m) {
+  std::string roughness;  // POV-Ray's default 0.05: a Blinn exponent of 20
+  bool specular = false;
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Value && it.args[0]->kind == Expr::Name) {
+      if (Symbol* s = lookup(it.args[0]->text); s && s->block && s->type == Type::Finish) {
+        finish(*s->block, m);
+        continue;
+      }
+    }
+    if (it.kind == Item::Nested && it.block->kind == "reflection") {
+      // reflection { rmin rmax fresnel metallic }: the largest of the values.
+      std::string r;
+      for (const Item& v : it.block->items)
+        if (v.kind == Item::Value) r = value(*v.args[0]);
+      if (!r.empty()) m.set("reflect", r);
+      for (const Item& v : it.block->items)
+        if (v.kind == Item::Keyword && v.name == "fresnel") m.set("fresnel", "true");
+      continue;
+    }
+    if (it.kind != Item::Keyword) {
+      if (it.kind == Item::Nested) unsupported(it.loc, it.block->kind, "rts's material properties", false);
+      continue;
+    }
+    const std::string& k = it.name;
+    std::string v = it.args.empty() ? "" : value(*it.args[0]);
+    if (k == "ambient" && !v.empty()) {
+      double f;
+      if (!literal_number(*it.args[0], f) && expr(*it.args[0]).type != Type::Float) {
+        std::vector<double> c;
+        if (it.args[0]->kind == Expr::Color && literal_vector(*it.args[0]->args[0], c) && c.size() >= 3) {
+          unsupported(it.loc, "ambient <colour>", "a number (rts's ambient weighs the pigment): the mean is used",
+                      false);
+          v = num((c[0] + c[1] + c[2]) / 3);
+        }
+      }
+      m.set("ambient", v);
+    } else if (k == "diffuse" && !v.empty()) {
+      m.set("diffuse", v);
+    } else if (k == "phong" && !v.empty()) {
+      m.set("specular", v);
+      if (!m.has("shininess")) m.set("shininess", "40");  // POV-Ray's default phong_size
+    } else if (k == "phong_size" && !v.empty()) {
+      m.set("shininess", v);
+    } else if (k == "specular" && !v.empty()) {
+      m.set("specular", v);
+      specular = true;
+    } else if (k == "roughness" && !v.empty()) {
+      double r;
+      roughness = literal_number(*it.args[0], r) && r > 0 ? num(1 / r) : "1 / " + v;
+    } else if (k == "reflection" && !v.empty()) {
+      m.set("reflect", v);
+    } else if (k == "emission" && !v.empty()) {
+      m.set("emission", color_value(*it.args[0]));
+    } else if (k == "conserve_energy" || k == "crand" || k == "reflection_exponent") {
+      // no effect worth a warning in the Whitted image
+    } else if (k == "metallic" || k == "brilliance" || k == "irid" || k == "subsurface") {
+      unsupported(it.loc, k, "not in rts's material model", false);
+    } else {
+      unsupported(it.loc, k, "rts's material properties (docs/rendering.md#materials)", false);
+    }
+  }
+  if (specular) {
+    // POV-Ray's specular is a Blinn highlight, (N.H)^(1/roughness): rts's highlight = "blinn".
+    m.set("highlight", "\"blinn\"");
+    m.set("shininess", roughness.empty() ? "20" : roughness);
+  }
+}
+
+void Translator::interior(const Block& b, MaterialProps& m) {
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Value && it.args[0]->kind == Expr::Name)
+      if (Symbol* s = lookup(it.args[0]->text); s && s->block && s->type == Type::Interior) {
+        interior(*s->block, m);
+        continue;
+      }
+    if (it.kind == Item::Keyword && it.name == "ior" && !it.args.empty()) {
+      m.set("ior", value(*it.args[0]));
+    } else if (it.kind == Item::Keyword && (it.name == "fade_distance" || it.name == "fade_power" ||
+                                            it.name == "dispersion" || it.name == "caustics")) {
+      unsupported(it.loc, it.name, "transmit colour (no absorption along the path in rts)", false);
+    } else if (it.kind == Item::Nested && it.block->kind == "media") {
+      unsupported(it.loc, "media", "emission or fog (settings { fog_distance })", false);
+    }
+  }
+}
+
+void Translator::normal(const Block& b, MaterialProps& m) {
+  static const std::set<std::string> patterns = {"bumps", "dents", "ripples", "waves", "wrinkles", "granite",
+                                                 "marble", "wood", "agate", "bozo", "spotted", "crackle", "cells",
+                                                 "leopard", "onion", "gradient"};
+  std::string pattern, amount = "0.5";
+  std::vector<std::string> props, xforms;
+  for (const Item& it : b.items) {
+    if (it.kind != Item::Keyword) {
+      if (it.kind == Item::Nested) unsupported(it.loc, it.block->kind, "bump = <pattern> { }", false);
+      continue;
+    }
+    if (patterns.count(it.name)) {
+      pattern = it.name;
+      if (!it.args.empty()) amount = value(*it.args[0]);
+      continue;
+    }
+    if (it.name == "turbulence" || it.name == "octaves" || it.name == "frequency" || it.name == "phase" ||
+        it.name == "omega" || it.name == "lambda") {
+      if (!it.args.empty()) props.push_back(it.name + " = " + value(*it.args[0]));
+      continue;
+    }
+    if (it.name == "bump_size" && !it.args.empty()) {
+      amount = value(*it.args[0]);
+      continue;
+    }
+    std::vector<std::string> t = transforms(it);
+    if (!t.empty()) {
+      xforms.insert(xforms.end(), t.begin(), t.end());
+      continue;
+    }
+    unsupported(it.loc, it.name, "bump = <pattern> { }  bump_scale = ...", false);
+  }
+  if (pattern.empty()) return;
+  std::string body, suffix;
+  for (const std::string& p : props) body += "  " + p;
+  for (const std::string& t : xforms) suffix += " " + t;
+  m.set("bump", pattern + " {" + body + (body.empty() ? "}" : " }") + suffix);
+  // rts's strength is the slope's: about POV-Ray's amount times the pattern's scale
+  // (docs/from-povray.md); 0.1 of the amount is the unscaled case.
+  m.set("bump_scale", "0.2 * " + amount);
+}
+
+void Translator::texture_part(const Item& it, MaterialProps& m) {
+  const Block& b = *it.block;
+  if (b.kind == "pigment") return pigment(b, m);
+  if (b.kind == "finish") return finish(b, m);
+  if (b.kind == "interior") return interior(b, m);
+  if (b.kind == "normal") return normal(b, m);
+  if (b.kind == "texture" || b.kind == "material") {
+    for (const Item& part : b.items) {
+      if (part.kind == Item::Value && part.args[0]->kind == Expr::Name) {
+        Symbol* s = lookup(part.args[0]->text);
+        if (s && s->type == Type::Material && s->block) {
+          m.base = rename(part.args[0]->text);
+          continue;
+        }
+        if (!s) {  // a texture from an include (textures.inc): derived from
+          if (!missing_name(part.loc, part.args[0]->text, "texture")) m.base = rename(part.args[0]->text);
+          continue;
+        }
+      }
+      if (part.kind == Item::Value) {
+        m.base = value(*part.args[0]);  // a macro call giving a texture
+        continue;
+      }
+      if (part.kind == Item::Nested && is_texture_part(part.block->kind)) {
+        texture_part(part, m);
+        continue;
+      }
+      if (part.kind == Item::Nested && (part.block->kind == "texture_map" || part.block->kind == "material_map")) {
+        unsupported(part.loc, part.block->kind, "one texture (or a pattern's color_map)", false);
+        continue;
+      }
+      std::vector<std::string> t = transforms(part);
+      if (!t.empty()) {
+        // A transform of a whole texture moves its pattern.
+        std::string suffix;
+        for (const std::string& x : t) suffix += " " + x;
+        for (auto& p : m.props)
+          if (p.first == "texture" || p.first == "bump") p.second = "(" + p.second + ")" + suffix;
+        continue;
+      }
+      if (part.kind == Item::Keyword) unsupported(part.loc, part.name, "rts's material properties", false);
+    }
+  }
+}
+
+void Translator::object(Writer& w, const Block& b, const std::string& prefix, bool place) {
+  const std::string& k = b.kind;
+  if (is_unsupported_shape(k)) {
+    auto [alt, planned] = shape_alternative(k);
+    unsupported(b.loc, k, alt, planned);
+    w.line(fmt::format("{}group {{ }}  // POV-Ray's {} is not translated (rts import warned)", prefix, k));
+    return;
+  }
+  if (k == "object") {
+    // object { sphere { ... } modifiers }: the inner object with the modifiers after its own.
+    const Item* inner = nullptr;
+    bool named = false;
+    for (const Item& it : b.items) {
+      if (it.kind == Item::Value) named = true;
+      if (it.kind == Item::Nested && is_object_kind(it.block->kind) && !inner) inner = &it;
+    }
+    if (!named && inner) {
+      Block merged = *inner->block;
+      for (const Item& it : b.items)
+        if (&it != inner) merged.items.push_back(it);
+      return object(w, merged, prefix, place);
+    }
+  }
+  std::vector<const Item*> values;
+  std::vector<std::string> props, xforms, comments;
+  std::vector<const Item*> children;  // CSG and mesh members, directives among them
+  MaterialProps mat;
+  bool textured = false;
+  std::string base;  // object { X }
+  for (const Item& it : b.items) {
+    switch (it.kind) {
+      case Item::Value:
+        if (k == "object" && base.empty()) {
+          if (it.args[0]->kind == Expr::Name && missing_name(it.loc, it.args[0]->text, "object")) return;
+          base = value(*it.args[0]);
+        } else if (k == "union" || k == "merge" || k == "intersection" || k == "difference" || k == "mesh") {
+          children.push_back(&it);
+        } else {
+          values.push_back(&it);
+        }
+        break;
+      case Item::Nested:
+        if (is_texture_part(it.block->kind)) {
+          texture_part(it, mat);
+          textured = textured || it.block->kind != "interior";
+        } else if (is_object_kind(it.block->kind)) {
+          children.push_back(&it);
+        } else if (it.block->kind == "transform") {
+          for (std::string& t : transforms(it)) xforms.push_back(std::move(t));
+        } else if (it.block->kind == "bounded_by") {
+          // rts bounds every object itself (BVH): nothing to write.
+        } else if (it.block->kind == "clipped_by") {
+          unsupported(it.loc, "clipped_by", "intersection { object  clipping-object }", false);
+        } else if (it.block->kind == "photons" || it.block->kind == "radiosity") {
+          // photon and radiosity hints: no effect on a Whitted render
+        } else {
+          unsupported(it.loc, it.block->kind, "see docs/from-povray.md", false);
+        }
+        break;
+      case Item::Keyword: {
+        std::vector<std::string> t = transforms(it);
+        if (!t.empty()) {
+          xforms.insert(xforms.end(), t.begin(), t.end());
+        } else if (it.name == "open") {
+          props.push_back("capped = false");
+        } else if (it.name == "inverse") {
+          props.push_back("inverse = true");
+        } else if (it.name == "hollow" || it.name == "sturm" || it.name == "smooth" || it.name == "double_illuminate" ||
+                   it.name == "no_reflection" || it.name == "no_radiosity" || it.name == "cutaway_textures" ||
+                   it.name == "split_union") {
+          // no effect on the picture rts makes (or rts's behaviour already)
+        } else if (it.name == "no_shadow") {
+          unsupported(it.loc, "no_shadow", "shadows = false on the lights", true);
+        } else if (it.name == "no_image") {
+          unsupported(it.loc, "no_image", "leave the object out", false);
+        } else {
+          unsupported(it.loc, it.name, "see docs/shapes.md", false);
+        }
+        break;
+      }
+      default:
+        children.push_back(&it);  // directives inside CSG: loops, ifs, declarations
+        break;
+    }
+  }
+  auto v = [&](std::size_t i) -> const Expr* { return i < values.size() ? values[i]->args[0].get() : nullptr; };
+  auto need = [&](std::size_t n, const char* form) {
+    if (values.size() < n) error(b.loc, fmt::format("'{}' needs {}", k, form));
+  };
+  std::string kind = k;
+  if (k == "sphere") {
+    need(2, "a centre and a radius: sphere { <x, y, z>, r }");
+    props.insert(props.begin(), {"center = " + vector_value(*v(0)), "radius = " + value(*v(1))});
+  } else if (k == "box") {
+    need(2, "two corners: box { <x1, y1, z1>, <x2, y2, z2> }");
+    std::vector<double> a, c;
+    if (literal_vector(*v(0), a) && literal_vector(*v(1), c) && a.size() == 3 && c.size() == 3) {
+      glm::dvec3 lo(std::min(a[0], c[0]), std::min(a[1], c[1]), std::min(a[2], c[2]));
+      glm::dvec3 hi(std::max(a[0], c[0]), std::max(a[1], c[1]), std::max(a[2], c[2]));
+      if (lo != glm::dvec3(a[0], a[1], a[2])) comments.push_back("corners sorted: POV-Ray takes them in any order");
+      props.insert(props.begin(), {"min = " + vec(lo), "max = " + vec(hi)});
+    } else {
+      props.insert(props.begin(), {"min = " + vector_value(*v(0)), "max = " + vector_value(*v(1))});
+    }
+  } else if (k == "plane") {
+    need(2, "a normal and a distance: plane { <x, y, z>, d }");
+    props.insert(props.begin(), {"normal = " + vector_value(*v(0)), "offset = " + value(*v(1))});
+  } else if (k == "cylinder") {
+    need(3, "two end points and a radius: cylinder { <a>, <b>, r }");
+    props.insert(props.begin(),
+                 {"from = " + vector_value(*v(0)), "to = " + vector_value(*v(1)), "radius = " + value(*v(2))});
+  } else if (k == "cone") {
+    need(4, "two ends with their radii: cone { <a>, ra, <b>, rb }");
+    props.insert(props.begin(), {"from = " + vector_value(*v(0)), "radius_from = " + value(*v(1)),
+                                 "to = " + vector_value(*v(2)), "radius_to = " + value(*v(3))});
+  } else if (k == "torus") {
+    need(2, "two radii: torus { major, minor }");
+    props.insert(props.begin(), {"major = " + value(*v(0)), "minor = " + value(*v(1))});
+  } else if (k == "disc") {
+    need(3, "a centre, a normal and a radius: disc { <c>, <n>, r }");
+    std::vector<std::string> p = {"center = " + vector_value(*v(0)), "normal = " + vector_value(*v(1)),
+                                  "radius = " + value(*v(2))};
+    if (v(3)) p.push_back("inner_radius = " + value(*v(3)));
+    props.insert(props.begin(), p.begin(), p.end());
+  } else if (k == "triangle") {
+    need(3, "three corners: triangle { <a>, <b>, <c> }");
+    props.insert(props.begin(),
+                 {"v0 = " + vector_value(*v(0)), "v1 = " + vector_value(*v(1)), "v2 = " + vector_value(*v(2))});
+  } else if (k == "smooth_triangle") {
+    need(6, "three corners each with its normal: smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> }");
+    kind = "triangle";
+    props.insert(props.begin(), {"v0 = " + vector_value(*v(0)), "n0 = " + vector_value(*v(1)),
+                                 "v1 = " + vector_value(*v(2)), "n1 = " + vector_value(*v(3)),
+                                 "v2 = " + vector_value(*v(4)), "n2 = " + vector_value(*v(5))});
+  } else if (k == "superellipsoid") {
+    need(1, "its two exponents: superellipsoid { <e, n> }");
+    std::vector<double> en;
+    if (literal_vector(*v(0), en) && en.size() == 2) {
+      props.insert(props.begin(), {"e = " + num(en[0]), "n = " + num(en[1])});
+    } else {
+      std::string p = value(*v(0));
+      props.insert(props.begin(), {"e = " + p + ".x", "n = " + p + ".y"});
+    }
+  } else if (k == "mesh") {
+    kind = "group";
+    comments.push_back("POV-Ray's mesh: its triangles in a group");
+  } else if (k == "union") {
+    // POV-Ray's union of open shapes (triangles, discs) or meshes is a group in rts: rts's
+    // CSG takes closed shapes only, and for opaque objects the picture is the same.
+    bool closed = true;
+    for (const Item* c : children) {
+      if (c->kind == Item::Nested) {
+        const std::string& ck = c->block->kind;
+        if (ck == "object") {
+          for (const Item& r : c->block->items)
+            if (r.kind == Item::Value && r.args[0]->kind == Expr::Name) {
+              Symbol* s = lookup(r.args[0]->text);
+              if (!s || !closed_kind(s->object_kind)) closed = false;
+              break;
+            }
+        } else if (!closed_kind(ck) || (ck == "cylinder" || ck == "cone")) {
+          // open cylinders/cones are open shapes too
+          if (!closed_kind(ck)) closed = false;
+          for (const Item& r : c->block->items)
+            if (r.kind == Item::Keyword && r.name == "open") closed = false;
+        }
+      } else {
+        closed = false;  // loops and macro calls: their members are not known here
+      }
+    }
+    // Outside intersection/difference a union is a group: the same picture for opaque objects,
+    // and rts's CSG blocks combine at most 256 shapes.
+    // A declared union stays CSG when it can (a material given at `object { U texture {...} }`
+    // then reaches its members).
+    if (!closed || (csg_depth_ == 0 && place)) kind = "group";
+  } else if (k == "object") {
+    if (base.empty()) error(b.loc, "'object' needs the object it reuses: object { Name ... }");
+  }
+  last_kind_ = kind;
+  const bool in_group = !group_material_.empty();
+  bool needs_default = (place || in_group) && !textured && !has_texture(b);
+  // In a group (rts's groups take no material) a member without its own texture gets the
+  // group's, as POV-Ray's union gives it.
+  auto material_of = [&](bool own) { return !own && in_group ? group_material_.back() : material_text(mat, true); };
+  if (k == "object") {
+    // object { X modifiers }: X itself, given a material and moved.
+    std::string s = base;
+    if (textured || needs_default) {
+      std::string m = material_of(textured);
+      Symbol* sym = b.items.empty() || b.items[0].kind != Item::Value || b.items[0].args[0]->kind != Expr::Name
+                        ? nullptr
+                        : lookup(b.items[0].args[0]->text);
+      std::string ok = sym ? sym->object_kind : "";
+      // A CSG value takes the material as a one-child union (children without their own
+      // material take the block's); a shape (or a macro's result) is derived with it.
+      if (ok == "intersection" || ok == "difference" || ok == "merge" || ok == "union")
+        s = fmt::format("union {{ {}  material = {} }}", base, m);
+      else if (ok == "mesh" || ok == "group")
+        // Declared as an rts group, which takes no material.
+        unsupported(b.loc, "texture on a reused union or mesh", "the texture inside the union's declaration", false);
+      else
+        s = fmt::format("{} with {{ material = {} }}", base, m);
+    }
+    for (const std::string& p : props) {
+      if (p == "inverse = true") {
+        s = "(" + s + ") with { inverse = true }";
+      } else {
+        warn(b.loc, "'" + p + "' on a reused object is not translated");
+      }
+    }
+    for (const std::string& t : xforms) s += " " + t;
+    for (const std::string& c : comments) w.line("// " + c);
+    w.line(prefix + s);
+    return;
+  }
+  bool pushed = false;
+  if (kind == "group") {
+    if (textured || needs_default) {
+      group_material_.push_back(material_of(textured));
+      pushed = true;
+    }
+  } else if (textured || needs_default) {
+    props.push_back("material = " + material_of(textured));
+  }
+  std::string suffix;
+  for (const std::string& t : xforms) suffix += " " + t;
+  for (const std::string& c : comments) w.line("// " + c);
+  if (children.empty()) {
+    if (pushed) group_material_.pop_back();
+    std::string s;
+    for (const std::string& p : props) s += (s.empty() ? " " : "  ") + p;
+    std::string one = fmt::format("{}{} {{{} }}{}", prefix, kind, s, suffix);
+    if (one.size() <= 110) {
+      w.line(one);
+      return;
+    }
+    w.open(prefix + kind);
+    for (const std::string& p : props) w.line(p);
+    w.close(suffix);
+    return;
+  }
+  w.open(prefix + kind);
+  scopes_.emplace_back();
+  const bool csg = kind == "intersection" || kind == "difference" || kind == "merge" || kind == "union";
+  if (csg) ++csg_depth_;
+  for (const Item* c : children) {
+    if (c->kind == Item::Nested) {
+      w.comments(c->comments);
+      object(w, *c->block, "", false);
+    } else {
+      item(w, *c, false);
+    }
+  }
+  if (csg) --csg_depth_;
+  scopes_.pop_back();
+  if (pushed) group_material_.pop_back();
+  for (const std::string& p : props) w.line(p);
+  w.close(suffix);
+}
+
+}  // namespace rts::import::pov

@@ -1,0 +1,135 @@
+// The writer: a POV-Ray Program (ast.hpp) as rts text. One Translator reads the main file
+// and, recursively, the user's own include files; it keeps what each name holds (a float, a
+// colour, an object, a finish ...) because POV-Ray's meaning of a value depends on it
+// (`pigment { P }`, `object { O }`, float-to-vector promotion).
+//
+// translate_expr.cpp: expressions; translate_object.cpp: objects and materials;
+// translate_scene.cpp: statements, lights, camera, settings, includes.
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "import/pov/ast.hpp"
+#include "import/pov/pov_import.hpp"
+#include "import/writer.hpp"
+
+namespace rts::import::pov {
+
+// What a value is, as far as the translation can tell.
+enum class Type { Unknown, Float, Bool, Vector, Color, String, Object, Material, Pigment, Finish, Interior,
+                  Normal, Camera, Light, Transform, List, Random, Macro };
+
+struct Symbol {
+  Type type = Type::Unknown;
+  std::shared_ptr<Block> block;  // declared blocks: finishes and transforms are inlined from it
+  std::string object_kind;       // Object: the block's kind (sphere, union, ...)
+};
+
+// An expression written as rts text, with its type and how tightly it binds (rts's levels:
+// 2 or, 3 and, 4 not, 5 compare, 7 add, 8 multiply, 9 unary, 11 postfix, 12 primary).
+struct Text {
+  std::string s;
+  Type type = Type::Unknown;
+  int prec = 12;
+  double filter = 0, transmit = 0;  // colours written with rgbf/rgbt/rgbft
+};
+
+// Material properties in the order they are written; set() replaces an earlier value.
+struct MaterialProps {
+  std::string base;  // "" (a new material block) or an expression to derive from (`T with { }`)
+  std::vector<std::pair<std::string, std::string>> props;
+  void set(const std::string& name, const std::string& value);
+  bool has(const std::string& name) const;
+  bool empty() const { return base.empty() && props.empty(); }
+};
+
+class Translator {
+ public:
+  Translator(const PovOptions& options, PovResult& result) : opt_(options), result_(result) {}
+
+  // Translates one file's program into `w`.
+  void file(const Program& p, const std::string& path, Writer& w);
+  void header(Writer& w, const std::string& source_name);
+  void footer(Writer& w);  // settings that depend on the whole scene (the output gamma)
+
+  // ---- expressions (translate_expr.cpp) ----
+  Text expr(const Expr& e);
+  Text call(const Expr& e);
+  std::string value(const Expr& e) { return expr(e).s; }
+  std::string vector_value(const Expr& e);  // promotes a float to <f, f, f>
+  std::string color_value(const Expr& e, double* filter = nullptr, double* transmit = nullptr);
+  std::string condition(const Expr& e);     // a bool: floats compare with 0
+  std::string float_value(const Expr& e) { return expr(e).s; }
+  // Literal values, when the expression is one (after folding x, y, z, unary minus, k * v).
+  static bool literal_vector(const Expr& e, std::vector<double>& out);
+  static bool literal_number(const Expr& e, double& out);
+  std::string rename(const std::string& pov_name) const;  // rts's reserved words get a '_'
+
+  // ---- objects and materials (translate_object.cpp) ----
+  static bool is_object_kind(const std::string& kind);
+  static bool is_unsupported_shape(const std::string& kind);
+  // Writes an object block; `prefix` goes before it on the first line ("let S = "), `place`:
+  // a placement in the world (objects without a texture get POV-Ray's default one).
+  void object(Writer& w, const Block& b, const std::string& prefix, bool place);
+  bool has_texture(const Block& b) const;
+  // The material a POV-Ray texture-like block (texture, pigment, finish, normal, interior,
+  // material) adds to `m`.
+  void texture_part(const Item& it, MaterialProps& m);
+  void pigment(const Block& b, MaterialProps& m);
+  void finish(const Block& b, MaterialProps& m);
+  void interior(const Block& b, MaterialProps& m);
+  void normal(const Block& b, MaterialProps& m);
+  std::string pigment_value(const Block& b);  // a colour or a texture expression
+  std::string material_text(const MaterialProps& m, bool with_defaults);
+  void default_finish(MaterialProps& m) const;
+  std::vector<std::string> transforms(const Item& it);  // "translate <..>" etc. (empty when not one)
+
+  // ---- statements (translate_scene.cpp) ----
+  void items(Writer& w, const std::vector<Item>& items, bool top);
+  void item(Writer& w, const Item& it, bool top);
+  void declare(Writer& w, const Item& it);
+  void place_block(Writer& w, const Block& b);
+  void light(Writer& w, const Block& b, const std::string& prefix);
+  void camera(Writer& w, const Block& b);
+  void global_settings(Writer& w, const Block& b);
+  void include(Writer& w, const Item& it);
+  void hoist(Writer& w, const std::vector<Item>& body);
+
+  // ---- diagnostics ----
+  // "POV-Ray's 'kw' is not supported: <alternative>" at `at`, once per keyword and place.
+  void unsupported(Loc at, const std::string& keyword, const std::string& alternative, bool planned);
+  void warn(Loc at, const std::string& message);
+  [[noreturn]] void error(Loc at, const std::string& message) const;
+
+  // ---- state ----
+  const PovOptions& opt_;
+  PovResult& result_;
+  std::string file_;               // the file being translated, as named
+  std::string dir_;                // its folder
+  std::vector<std::map<std::string, Symbol>> scopes_{1};
+  std::set<std::string> helpers_;  // helper macros the output needs (pov_if, pov_int)
+  std::set<std::string> included_;
+  std::set<std::string> reader_names_;  // declared names, for the reader (reader.hpp)
+  std::set<std::string> library_names_;  // names the included standard library files define
+  bool library_known_ = false;           // options.stdlib_dir was read: an unknown name is missing
+  std::vector<std::string> group_material_;
+  int csg_depth_ = 0;
+  std::string last_kind_;  // the rts kind object() wrote last (a union may become a group)  // inside intersection/difference/merge: a union there stays CSG  // a group's material, written on its members
+  // A name neither declared nor in the included library: warns (once per name) and returns true.
+  bool missing_name(Loc at, const std::string& name, const std::string& what);
+  double version_ = 0;             // #version, 0 when none
+  double assumed_gamma_ = 0;       // 0 when none
+  bool gamma_seen_ = false;
+  MaterialProps default_texture_;  // #default { ... }
+  Writer* pending_comment_ = nullptr;
+  int include_depth_ = 0;
+
+  Symbol* lookup(const std::string& name);
+  void define(const std::string& name, Symbol s) { scopes_.back()[name] = std::move(s); }
+  bool declared(const std::string& name) { return lookup(name) != nullptr; }
+};
+
+}  // namespace rts::import::pov

@@ -1,0 +1,1 @@
+union { sphere { 0 1 } /* unterminated

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# `rts import` and `rts render` of POV-Ray scenes (tests/golden/import/pov):
+#  - each scene translates to exactly its golden NAME.rts (and the user's include files to
+#    their own .rts); update on purpose with scripts/update-golden-import --pov;
+#  - each golden renders (80x60, no antialiasing) within MAX_MAD codes of POV-Ray 3.7's own
+#    render, NAME.pov.png, stored beside it (POV-Ray is not needed to run the test). The
+#    conv_* scenes each hang on one convention (output gamma, default finish, Blinn
+#    highlight) and must come within 0.5 codes; without it their mean difference is 1.6 (Blinn),
+#    4.8 (finish) and 46 (gamma) codes. `scene` (a checker floor to the horizon, aliased
+#    differently without antialiasing) within 3 codes;
+#  - `rts render NAME.pov` gives the same bytes as rendering the translation;
+#  - a POV-Ray syntax error is a located error; what rts cannot express is a located warning,
+#    an error with --strict; an .rts scene never reaches the POV-Ray front end.
+source "$(dirname "$0")/../cli/lib.sh"
+IMGDIFF="$3"
+golden="$SRC/tests/golden/import/pov"
+cp -r "$golden" "$TMP/work"
+count=0
+for input in "$golden"/*.pov; do
+  name="$(basename "${input%.pov}")"
+  count=$((count + 1))
+  rm -f "$TMP/work/$name.rts"
+  expect_exit 0 "import $name" -- "$RTS" import "$TMP/work/$name.pov" -o "$TMP/work/$name.rts"
+  if ! diff -u "$golden/$name.rts" "$TMP/work/$name.rts"; then
+    echo "FAIL: $name.rts differs from the golden (scripts/update-golden-import --pov updates it on purpose)"
+    FAILS=$((FAILS + 1))
+  fi
+  expect_exit 0 "render $name.rts" -- "$RTS" render "$golden/$name.rts" -o "$TMP/$name.png" --width 80 \
+      --height 60 --no-progress
+  MAX_MAD=0.5   # codes of 255; measured 0.07 to 0.15 (docs/from-povray.md)
+  [[ $name == scene ]] && MAX_MAD=3.0   # measured 2.27
+  "$IMGDIFF" "$golden/$name.pov.png" "$TMP/$name.png" > "$TMP/diff.txt"
+  mad="$(sed -n 's#^mean |difference|: \([0-9.]*\)/255.*#\1#p' "$TMP/diff.txt")"
+  if [[ -z "$mad" ]] || ! awk -v m="$mad" -v l="$MAX_MAD" 'BEGIN { exit !(m <= l) }'; then
+    echo "FAIL: $name: mean difference from POV-Ray's render ${mad:-?}/255 > $MAX_MAD"; cat "$TMP/diff.txt"
+    FAILS=$((FAILS + 1))
+  else
+    echo "ok: $name within $mad/255 of POV-Ray"
+  fi
+  expect_exit 0 "render $name.pov" -- "$RTS" render "$TMP/work/$name.pov" -o "$TMP/$name.direct.png" --width 80 \
+      --height 60 --no-progress
+  cmp -s "$TMP/$name.png" "$TMP/$name.direct.png" || { echo "FAIL: rendering $name.pov differs from its translation"; FAILS=$((FAILS + 1)); }
+done
+[[ $count -ge 4 ]] || { echo "FAIL: expected the test scenes, found $count"; FAILS=$((FAILS + 1)); }
+for inc in "$golden"/*.inc; do
+  rts_inc="$(basename "${inc%.inc}").rts"
+  diff -u "$golden/$rts_inc" "$TMP/work/$rts_inc" || { echo "FAIL: $rts_inc differs"; FAILS=$((FAILS + 1)); }
+done
+
+errors="$SRC/tests/golden/import/pov-errors"
+cd "$errors"
+expect_exit 1 "a POV-Ray syntax error" -- "$RTS" import bad_syntax.pov
+expect_grep "$TMP/err" "^bad_syntax.pov:3:34: error: expected '}' to close the 'sphere' block opened at line 2, got the end of the file" "located error"
+expect_grep "$TMP/err" "^ +\^" "caret line"
+expect_exit 1 "render: the same error" -- "$RTS" render bad_syntax.pov -o "$TMP/bad.png"
+expect_grep "$TMP/err" "^bad_syntax.pov:3:34: error:" "located error"
+expect_exit 0 "an unsupported shape is a warning" -- "$RTS" import unsupported.pov
+expect_grep "$TMP/err" "^unsupported.pov:4:1: warning: POV-Ray's 'lathe' is not translated; closest in rts: a mesh" "located warning with the alternative"
+expect_grep "$TMP/err" "\(planned\)" "says whether it is planned"
+expect_grep "$TMP/out" "sphere \{" "the rest is translated"
+expect_exit 0 "render: the rest renders" -- "$RTS" render unsupported.pov -o "$TMP/rest.png" --width 16 --height 12
+expect_grep "$TMP/err" "^unsupported.pov:4:1: warning:" "render prints the warning"
+expect_exit 1 "--strict makes it an error" -- "$RTS" import --strict unsupported.pov
+expect_grep "$TMP/err" "^unsupported.pov:4:1: error: POV-Ray's 'lathe'" "located error"
+expect_exit 1 "render --strict" -- "$RTS" render --strict unsupported.pov -o "$TMP/strict.png"
+
+# Recognised by content under another name, and with --format pov.
+cp "$golden/conv_gamma.pov" "$TMP/scene.txt"
+expect_exit 0 "content: a .txt in POV-Ray's language" -- "$RTS" import "$TMP/scene.txt"
+expect_grep "$TMP/out" "output_gamma = \"linear\"" "imported as POV-Ray"
+expect_exit 0 "--format pov" -- "$RTS" import --format pov "$TMP/scene.txt"
+# Leave-out: an .rts file with POV-Ray text is read by rts's own parser (its POV-Ray hints),
+# never translated.
+cp "$golden/conv_gamma.pov" "$TMP/pov_text.rts"
+expect_exit 1 "an .rts scene is not imported" -- "$RTS" render "$TMP/pov_text.rts" -o "$TMP/x.png"
+expect_grep "$TMP/err" "pov_text.rts:2:1: error: POV-Ray's 'light_source'|pov_text.rts:[0-9]+:[0-9]+: error" "rts's own error"
+finish
