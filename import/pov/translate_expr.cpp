@@ -181,6 +181,7 @@ Text Translator::expr(const Expr& e) {
       if (n == "true" || n == "yes" || n == "on") return Text{"true", Type::Bool};
       if (n == "false" || n == "no" || n == "off") return Text{"false", Type::Bool};
       if (n == "clock") return Text{"clock", Type::Float};
+      if (n == "clock_on") return Text{"false", Type::Bool};
       if (n == "t" || n == "u" || n == "v") {
         unsupported(e.loc, n, "vectors have 3 components in rts; write <..> in full", false);
         return Text{"<0, 0, 0>", Type::Vector};
@@ -297,9 +298,9 @@ Text Translator::expr(const Expr& e) {
       return Text{paren(a, p) + " " + op + " " + rs, t, p};
     }
     case Expr::Ternary: {
-      helpers_.insert("pov_if");
+      // rts's select(c, a, b) evaluates only the chosen value, as POV-Ray's ?: does.
       Text a = expr(*e.args[1]);
-      return Text{fmt::format("pov_if({}, {}, {})", condition(*e.args[0]), a.s, value(*e.args[2])), a.type};
+      return Text{fmt::format("select({}, {}, {})", condition(*e.args[0]), a.s, value(*e.args[2])), a.type, 11};
     }
     case Expr::Member: {
       Text a = expr(*e.args[0]);
@@ -388,9 +389,9 @@ Text Translator::call(const Expr& e) {
     return Text{"pov_int(" + a[0].s + " / " + paren(a[1], 9) + ")", Type::Float, 11};
   }
   if (f == "select" && (a.size() == 3 || a.size() == 4)) {
-    helpers_.insert("pov_if");
-    if (a.size() == 3) return Text{fmt::format("pov_if({} < 0, {}, {})", paren(a[0], 7), a[1].s, a[2].s), a[1].type, 11};
-    return Text{fmt::format("pov_if({0} < 0, {1}, pov_if({0} == 0, {2}, {3}))", paren(a[0], 7), a[1].s, a[2].s, a[3].s),
+    // POV-Ray's select(A, B, C[, D]) tests the sign of A.
+    if (a.size() == 3) return Text{fmt::format("select({} < 0, {}, {})", paren(a[0], 7), a[1].s, a[2].s), a[1].type, 11};
+    return Text{fmt::format("select({0} < 0, {1}, select({0} == 0, {2}, {3}))", paren(a[0], 7), a[1].s, a[2].s, a[3].s),
                 a[1].type, 11};
   }
   if (f == "defined" && !e.args.empty() && e.args[0]->kind == Expr::Name)

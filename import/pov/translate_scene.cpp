@@ -566,7 +566,13 @@ void Translator::camera(Writer& w, const Block& b) {
       props.push_back("view_width = " + num(rl));
       if (angle) unsupported(b.loc, "orthographic angle", "view_width", false);
     } else if (angle) {
-      props.push_back("fov = " + value(*angle));
+      double a;
+      if (literal_number(*angle, a) && a >= 180) {
+        unsupported(b.loc, fmt::format("angle {}", num(a)), "a perspective camera's fov below 180 (179 is used)", false);
+        props.push_back("fov = 179");
+      } else {
+        props.push_back("fov = " + value(*angle));
+      }
     } else if (image_aspect) {
       props.push_back("fov = " + num(2 * std::atan(ul / (2 * dl)) * 180 / M_PI));
       props.push_back("fov_axis = \"vertical\"");
@@ -793,11 +799,6 @@ PovResult import_pov(const std::string& text, const PovOptions& options) {
   t.file(p, options.source_path, body);
   Writer out;
   t.header(out, fs::path(options.source_path).filename().string());
-  if (t.helpers_.count("pov_if")) {
-    out.blank();
-    out.line("// POV-Ray's 'c ? a : b' and select(): both values are computed, one is returned.");
-    out.line("macro pov_if(c, a, b) { if c { return a }  return b }");
-  }
   if (t.helpers_.count("pov_int")) {
     out.blank();
     out.line("// POV-Ray's int(): rounds towards zero.");
