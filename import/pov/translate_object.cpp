@@ -807,6 +807,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   if (csg) --csg_depth_;
   scopes_.pop_back();
   if (pushed) group_material_.pop_back();
+  last_kind_ = kind;  // the members wrote theirs
   for (const std::string& p : props) w.line(p);
   w.close(suffix);
 }
