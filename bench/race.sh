@@ -15,7 +15,9 @@
 # camera + shadow rays), grid90k (90,000 spheres placed by loops), soft (16-sample area light,
 # 4 spp), glass (nested glass, depth 10), loop (a 1M-iteration evaluation loop: `rts check`
 # against POV-Ray parsing), mesh2m (a 2M-triangle height field: memory and BVH build rate),
-# patterns (wood, marble, granite, agate and bumps: procedural texture cost).
+# patterns (wood, marble, granite, agate and bumps: procedural texture cost), csg (36 dice as
+# box-and-sphere intersections minus six pips, lenses, a cut torus), isosurface (three compiled
+# functions: a rippled ball, a gyroid, a torus).
 # Generated meshes are cached in $RTS_BUILD_DIR/bench-race (never in the repository).
 # Fairness choices are explained in docs/performance.md ("The suite").
 set -euo pipefail
@@ -24,7 +26,7 @@ W="${W:-800}"
 H="${H:-600}"
 RUNS="${RUNS:-3}"
 THREADS="${THREADS:-2}"
-SCENES="${SCENES:-spheres terrain grid90k soft glass loop mesh2m patterns}"
+SCENES="${SCENES:-spheres terrain grid90k soft glass loop mesh2m patterns csg isosurface}"
 build="$root/${RTS_BUILD_DIR:-build}"
 
 "$root/scripts/ensure-deps" --bench

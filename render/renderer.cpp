@@ -7,7 +7,9 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
+#include <variant>
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
@@ -497,6 +499,14 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   finish_error(result, frame);
   stats.render_seconds = seconds_since(render_start);
   summarise_error(result.color, stats.pixels, err);
+  // Shapes that learn something while tracing (an isosurface's real gradient) say it now.
+  for (const ShapeDesc& sd : scene.shapes)
+    std::visit(
+        [&](const auto& g) {
+          if constexpr (requires { after_render_warning(g); })
+            if (std::optional<std::string> w = after_render_warning(g)) result.warnings.push_back({sd.loc, *w});
+        },
+        sd.geometry);
   return result;
 }
 

@@ -330,6 +330,32 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
       return render::MaterialRef{realize_material(v)};
     case Type::Macro:
       return render::FunctionRef{compile_function(v, p.loc)};
+    case Type::Object: {
+      // An isosurface's container: an untransformed box or sphere, read from its own block.
+      const ObjectValue* def = object_definition(v);
+      const std::string shape = def ? std::string(*def->kind) : std::string();
+      if (shape != "box" && shape != "sphere")
+        fail(p.loc, fmt::format("property '{}' of {} cannot hold {}; only an isosurface's 'contained_by' takes an "
+                                "object, a box or a sphere",
+                                *p.name, kind, shape.empty() ? std::string("a group") : "a " + shape));
+      if (object_transform(v) != render::Mat4(1.0))
+        fail(p.loc, fmt::format("property '{}' of {} takes an untransformed {}: give its size in its own "
+                                "properties (transform the {} instead)",
+                                *p.name, kind, shape, kind));
+      render::ParamSet inner = to_params(shape, def->loc, def->props);
+      render::ContainerParam c;
+      c.sphere = shape == "sphere";
+      if (c.sphere) {
+        c.center = inner.vec3("center", c.center);
+        c.radius = inner.require_number("radius");
+      } else {
+        c.min = inner.require_vec3("min");
+        c.max = inner.require_vec3("max");
+      }
+      inner.check_unused(c.sphere ? std::vector<std::string_view>{"center", "radius"}
+                                  : std::vector<std::string_view>{"min", "max"});
+      return c;
+    }
     case Type::List: {
       const auto& items = as_list(v);
       if (items.empty()) return std::vector<double>{};
@@ -350,6 +376,30 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
           out.push_back(x.v.x);
         }
         if (out.size() == items.size()) return out;
+      } else if (items.front().type == Type::List && !as_list(items.front()).empty() &&
+                 as_list(items.front()).front().type == Type::Vector) {
+        // Rows of vectors then numbers: a blob's `spheres = [[<0, 0, 0>, 1, 1], ...]`.
+        render::RowsParam rows;
+        for (const Value& x : items) {
+          const auto* row = x.type == Type::List ? &as_list(x) : nullptr;
+          render::RowsParam::Row r;
+          bool ok = row != nullptr;
+          for (std::size_t i = 0; ok && i < row->size(); ++i) {
+            const Value& e = (*row)[i];
+            if (e.type == Type::Vector && r.numbers.empty())
+              r.vectors.push_back(e.v);
+            else if (e.type == Type::Number)
+              r.numbers.push_back(e.v.x);
+            else
+              ok = false;
+          }
+          if (!ok)
+            fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: each entry is a list of vectors "
+                                    "then numbers, e.g. [<0, 0, 0>, 1, 1]",
+                                    *p.name, kind));
+          rows.rows.push_back(std::move(r));
+        }
+        return rows;
       } else if (items.front().type == Type::List) {
         // A color map: [[value, color], ...].
         render::ColorMapParam map;

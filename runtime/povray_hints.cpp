@@ -28,9 +28,7 @@ constexpr Hint kHints[] = {
     {"lathe", "not yet available"},
     {"sor", "not yet available"},
     {"prism", "not yet available"},
-    {"blob", "not yet available"},
     {"height_field", "not yet available"},
-    {"isosurface", "not yet available"},
 };
 
 }  // namespace

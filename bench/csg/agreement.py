@@ -4,6 +4,10 @@ colours (every child emits one of a small palette, the background is black) by t
 palette colour and prints the fraction of pixels where both images agree.
 
     agreement.py rts.pfm pov.ppm     (PFM: rts's float output; PPM: POV-Ray's +FP)
+    agreement.py --lit rts.pfm pov.ppm
+        the diffuse-lit pass (both linear): over the pixels where both show the same child,
+        the mean brightness of each and the mean absolute difference per pixel, which a
+        normal pointing the wrong way would make large
 """
 import struct
 import sys
@@ -58,11 +62,26 @@ def label(c):
     return min(range(len(PALETTE)), key=lambda i: sum((a - b) ** 2 for a, b in zip(c, PALETTE[i])))
 
 
+def lit_label(c):
+    # Lit children are shades of one palette colour: classify by the colour's direction.
+    m = max(c)
+    return 0 if m < 0.02 else label(tuple(x / m for x in c))
+
+
 def main():
-    w1, h1, a = read_pfm(sys.argv[1])
-    w2, h2, b = read_ppm(sys.argv[2])
+    lit = sys.argv[1] == "--lit"
+    args = sys.argv[2:] if lit else sys.argv[1:]
+    w1, h1, a = read_pfm(args[0])
+    w2, h2, b = read_ppm(args[1])
     if (w1, h1) != (w2, h2):
         sys.exit(f"sizes differ: {w1}x{h1} vs {w2}x{h2}")
+    if lit:
+        pairs = [(max(p), max(q)) for p, q in zip(a, b) if lit_label(p) == lit_label(q) != 0]
+        n = max(len(pairs), 1)
+        mean_a, mean_b = sum(p for p, _ in pairs) / n, sum(q for _, q in pairs) / n
+        mad = sum(abs(p - q) for p, q in pairs) / n
+        print(f"{mean_a:.4f} {mean_b:.4f} {mad:.4f} {len(pairs)}")
+        return
     agree = sum(label(p) == label(q) for p, q in zip(a, b))
     print(f"{agree / len(a):.5f} {len(a) - agree}")
 

@@ -18,6 +18,16 @@ inline constexpr int kRayPointOps = 8;
 // smallest normal double: a ray starting exactly on a surface could hit it at t = 0+.
 inline constexpr double kMinRayOffset = 2.2250738585072014e-308;
 
+// Isosurface normals are central differences of f over this fraction of the container's
+// size: far above the doubles' rounding of f (1e-16 relative, so the difference keeps ~10
+// digits) and far below any detail a function resolves at a render's scale.
+inline constexpr double kIsoNormalStep = 1e-6;
+
+// A blob's quartic along a ray loses its leading terms when they vanish against the others
+// by this much (a ray along a cylinder component's axis: the body's distance is then constant):
+// the degree drops so poly_roots never divides by a rounding residue.
+inline constexpr double kBlobLeadingCoefficient = 1e-14;
+
 // A ray parallel to a plane/disc/cap within this cosine is treated as missing it.
 inline constexpr double kParallelCosine = 1e-14;
 

@@ -86,6 +86,10 @@ const char* param_type_name(const ParamValue& v) {
       return "color map";
     case 10:
       return "function";
+    case 11:
+      return "container";
+    case 12:
+      return "list of lists";
   }
   return "value";
 }

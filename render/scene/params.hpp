@@ -20,13 +20,28 @@ struct ColorMapParam { std::vector<ColorMapEntry> entries; };
 // A function of a point, compiled once by the runtime (`pattern { function = f }`, isosurfaces).
 class CompiledFunction;  // render/shade/pattern/compiled_function.hpp
 struct FunctionRef { std::shared_ptr<const CompiledFunction> function; };
+// A list of lists each holding vectors then numbers: a blob's `spheres = [[<0, 0, 0>, 1, 1]]`.
+struct RowsParam {
+  struct Row { std::vector<Vec3> vectors; std::vector<double> numbers; };
+  std::vector<Row> rows;
+};
+// An isosurface's container, `contained_by = box { min max }` or `sphere { center radius }`
+// (the runtime reads the block's own properties; the shape is not placed).
+struct ContainerParam {
+  bool sphere = false;
+  Vec3 min{-1.0}, max{1.0};
+  Vec3 center{0.0};
+  double radius = 1.0;
+};
 
 // The value kinds a block property can hold. The runtime converts its own values:
 // number → double, bool, string, vector → Vec3, color → Color, list of vectors → vector<Vec3>,
 // list of numbers → vector<double>, a texture value → TextureRef, a material → MaterialRef,
-// a list of [number, color] pairs → ColorMapParam, a macro of one point → FunctionRef.
+// a list of [number, color] pairs → ColorMapParam, a macro of one point → FunctionRef, an
+// unplaced box or sphere → ContainerParam.
 using ParamValue = std::variant<double, bool, std::string, Vec3, Color, TextureRef, MaterialRef,
-                                std::vector<Vec3>, std::vector<double>, ColorMapParam, FunctionRef>;
+                                std::vector<Vec3>, std::vector<double>, ColorMapParam, FunctionRef,
+                                ContainerParam, RowsParam>;
 
 // "number", "vector", ... for messages.
 const char* param_type_name(const ParamValue& v);

@@ -145,8 +145,26 @@ struct Quad     { Vec3 corner{-0.5, -0.5, 0}, edge_u{1, 0, 0}, edge_v{0, 1, 0}; 
 struct Torus    { double major = 1.0, minor = 0.25; };
 // (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) <= 1, POV-Ray's superellipsoid { <e, n> }.
 struct Superellipsoid { double e = 1.0, n = 1.0; };
+// f(p) < threshold inside a box or sphere, POV-Ray's isosurface (render/geometry/shapes/isosurface.hpp).
+struct IsoGradientMonitor;
+struct Isosurface {
+  std::shared_ptr<const CompiledFunction> function;
+  double threshold = 0.0, max_gradient = 1.1, accuracy = 0.001;
+  int max_trace = 1;
+  bool container_sphere = false;
+  Vec3 box_min{-1.0}, box_max{1.0}, center{0.0};
+  double radius = 1.0;
+  std::shared_ptr<IsoGradientMonitor> monitor;  // the largest slope seen while tracing (shared by copies)
+};
 
-using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid>;
+// POV-Ray's blob: components adding s (1 - d^2/r^2)^2 within r of a centre or of an axis
+// segment (a cylinder with hemispherical ends); the solid is where the sum exceeds threshold.
+struct BlobComponent { Vec3 a{0.0}, b{0.0}; double radius = 1.0, strength = 1.0; bool cylinder = false; };
+inline constexpr std::size_t kMaxBlobComponents = 256;  // bounds the per-ray stack arrays
+struct Blob { double threshold = 1.0; std::vector<BlobComponent> components; };
+
+using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,
+                                   Isosurface, Blob>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;

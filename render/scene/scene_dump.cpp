@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "render/scene/compiled_function.hpp"
 #include "render/scene/scene.hpp"
 
 namespace rts::render {
@@ -94,6 +95,21 @@ std::string shape_text(const ShapeDesc& s) {
     std::string operator()(const Torus& g) { return fmt::format("torus major {} minor {}", num(g.major), num(g.minor)); }
     std::string operator()(const Superellipsoid& g) {
       return fmt::format("superellipsoid e {} n {}", num(g.e), num(g.n));
+    }
+    std::string operator()(const Blob& g) {
+      std::string out = fmt::format("blob threshold {}", num(g.threshold));
+      for (const BlobComponent& c : g.components)
+        out += c.cylinder ? fmt::format(" cylinder {} {} {} {}", vec(c.a), vec(c.b), num(c.radius), num(c.strength))
+                          : fmt::format(" sphere {} {} {}", vec(c.a), num(c.radius), num(c.strength));
+      return out;
+    }
+    std::string operator()(const Isosurface& g) {
+      std::string box = g.container_sphere ? fmt::format("sphere {} {}", vec(g.center), num(g.radius))
+                                           : fmt::format("box {} {}", vec(g.box_min), vec(g.box_max));
+      return fmt::format("isosurface function {} instructions threshold {} max_gradient {} accuracy {} max_trace {} "
+                         "contained_by {}",
+                         g.function ? g.function->instructions() : 0, num(g.threshold), num(g.max_gradient),
+                         num(g.accuracy), g.max_trace, box);
     }
   };
   return std::visit(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material)) +

@@ -19,7 +19,7 @@ namespace rts::render {
 enum class Feature : uint8_t {
   // primitive kinds, in ShapeGeometry's order (a shape's feature is its variant index; its
   // name is its block kind's): checked below
-  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad, Torus, Superellipsoid,
+  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad, Torus, Superellipsoid, Isosurface, Blob,
   // material channels
   Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Pattern, Emission, Specular, Ambient,
   // lights
@@ -51,7 +51,9 @@ static_assert(Feature::Sphere == shape_feature(shape_index<Sphere>()) &&
                   Feature::Mesh == shape_feature(shape_index<MeshRef>()) &&
                   Feature::Quad == shape_feature(shape_index<Quad>()) &&
                   Feature::Torus == shape_feature(shape_index<Torus>()) &&
-                  Feature::Superellipsoid == shape_feature(shape_index<Superellipsoid>()),
+                  Feature::Superellipsoid == shape_feature(shape_index<Superellipsoid>()) &&
+                  Feature::Isosurface == shape_feature(shape_index<Isosurface>()) &&
+                  Feature::Blob == shape_feature(shape_index<Blob>()),
               "the shape Features follow ShapeGeometry's order");
 
 // "sphere", "reflection", "area_light"... (the names --stats and the JSON report use).

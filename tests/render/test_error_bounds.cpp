@@ -10,6 +10,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "render/scene/compiled_function.hpp"
+
 #include "render/accel/world.hpp"
 #include "render/geometry/ray.hpp"
 #include "render/accel/flatten.hpp"
@@ -51,6 +53,37 @@ T sample(SceneDesc& s) {
     return Torus{0.8, 0.3};
   } else if constexpr (std::is_same_v<T, Superellipsoid>) {
     return Superellipsoid{0.3, 0.6};
+  } else if constexpr (std::is_same_v<T, Blob>) {
+    Blob g;
+    g.threshold = 0.6;
+    g.components = {BlobComponent{Vec3(-0.4, 0, 0), Vec3(-0.4, 0, 0), 0.9, 1.0, false},
+                    BlobComponent{Vec3(0.2, -0.5, 0.1), Vec3(0.4, 0.6, -0.1), 0.5, 1.2, true},
+                    BlobComponent{Vec3(0.1, 0.3, -0.3), Vec3(0.1, 0.3, -0.3), 0.3, -0.5, false}};
+    return g;
+  } else if constexpr (std::is_same_v<T, Isosurface>) {
+    // x^2 + y^2 + z^2 + 0.3 sin(3x) < 0.64, in a box that cuts it at the top.
+    auto f = std::make_shared<CompiledFunction>();
+    using Op = CompiledFunction::Op;
+    uint16_t xx, yy, zz, s1, s2, three, k, x3, sn, w, r;
+    f->constant(3.0, three);
+    f->constant(0.3, k);
+    f->emit(Op::Mul, {CompiledFunction::kX, CompiledFunction::kX}, xx);
+    f->emit(Op::Mul, {CompiledFunction::kY, CompiledFunction::kY}, yy);
+    f->emit(Op::Mul, {CompiledFunction::kZ, CompiledFunction::kZ}, zz);
+    f->emit(Op::Add, {xx, yy}, s1);
+    f->emit(Op::Add, {s1, zz}, s2);
+    f->emit(Op::Mul, {CompiledFunction::kX, three}, x3);
+    f->emit(Op::Sin, {x3}, sn);
+    f->emit(Op::Mul, {sn, k}, w);
+    f->emit(Op::Add, {s2, w}, r);
+    f->set_result(r);
+    Isosurface g;
+    g.function = f;
+    g.threshold = 0.64;
+    g.max_gradient = 3.0;
+    g.box_min = Vec3(-1.2, -1.2, -1.2);
+    g.box_max = Vec3(1.2, 0.6, 1.2);
+    return g;
   } else {
     static_assert(kNoSample<T>, "a new shape kind needs a sample in test_error_bounds.cpp");
   }

@@ -8,9 +8,11 @@
 #pragma once
 
 #include "render/geometry/csg/csg_tree.hpp"
+#include "render/geometry/shapes/blob.hpp"
 #include "render/geometry/shapes/box.hpp"
 #include "render/geometry/shapes/cone.hpp"
 #include "render/geometry/shapes/cylinder.hpp"
+#include "render/geometry/shapes/isosurface.hpp"
 #include "render/geometry/shapes/plane.hpp"
 #include "render/geometry/shapes/sphere.hpp"
 #include "render/geometry/shapes/superellipsoid.hpp"
@@ -65,6 +67,36 @@ inline void leaf_crossings(const Superellipsoid& s, const Ray& ray, CsgLeafCross
 
 inline bool leaf_hit(const Superellipsoid& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
   superellipsoid_hit_at(s, ray, c.t[k], hit);
+  return true;
+}
+
+inline void leaf_crossings(const Blob& b, const Ray& ray, CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  out.count = blob_crossings(b, ray, out.t, kMaxLeafCrossings);
+  if (out.count % 2 == 1) --out.count;  // more crossings than kept, or a tangent: drop the unpaired one
+}
+
+inline bool leaf_hit(const Blob& b, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  blob_hit_at(b, ray, c.t[k], hit);
+  return true;
+}
+
+// The whole span inside the container; the crossing kinds (function or container) are found
+// again at the chosen one (a container crossing is exactly t0 or t1).
+inline void leaf_crossings(const Isosurface& s, const Ray& ray, CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  out.count = 0;
+  double t0, t1;
+  if (!iso_container_span(s, ray, t0, t1)) return;
+  bool on[kMaxLeafCrossings];
+  out.count = iso_crossings(s, ray, t0, t1, t0, t1, out.t, on, kMaxLeafCrossings);
+  if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
+}
+
+inline bool leaf_hit(const Isosurface& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  double t0, t1;
+  bool on_container = iso_container_span(s, ray, t0, t1) && (c.t[k] == t0 || c.t[k] == t1);
+  iso_hit_at(s, ray, c.t[k], on_container, hit);
   return true;
 }
 

@@ -10,10 +10,12 @@
 #include <utility>
 #include <variant>
 
+#include "render/geometry/shapes/blob.hpp"
 #include "render/geometry/shapes/box.hpp"
 #include "render/geometry/shapes/cone.hpp"
 #include "render/geometry/shapes/cylinder.hpp"
 #include "render/geometry/shapes/disc.hpp"
+#include "render/geometry/shapes/isosurface.hpp"
 #include "render/geometry/shapes/mesh.hpp"
 #include "render/geometry/shapes/plane.hpp"
 #include "render/geometry/shapes/quad.hpp"

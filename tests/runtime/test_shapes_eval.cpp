@@ -1,0 +1,169 @@
+// The POV-Ray shape families from the language: an isosurface's macro is compiled and traced,
+// its container read from a box or sphere block, and bad parameters are located errors.
+#include <catch2/catch.hpp>
+
+#include "eval_helpers.hpp"
+#include "render/geometry/shapes/blob.hpp"
+#include "render/geometry/shapes/isosurface.hpp"
+
+using namespace rts;
+using rts::test::eval_diagnostic;
+using rts::test::eval_text;
+
+namespace {
+const render::Isosurface& only_isosurface(const render::SceneDesc& s) {
+  for (const render::ShapeDesc& d : s.shapes)
+    if (const auto* g = std::get_if<render::Isosurface>(&d.geometry)) return *g;
+  FAIL("no isosurface in the scene");
+  throw 0;
+}
+}  // namespace
+
+TEST_CASE("an isosurface traces its compiled macro inside a sphere container", "[shapes]") {
+  render::SceneDesc s = eval_text(
+      "macro ball(p, r = 0.5) { return length(p) - r }\n"
+      "isosurface { function = ball  threshold = 0.25  max_gradient = 1.1  accuracy = 1e-4\n"
+      "             contained_by = sphere { center = <0, 0, 0>  radius = 2 } }\n");
+  const render::Isosurface& iso = only_isosurface(s);
+  CHECK(iso.container_sphere);
+  CHECK(iso.radius == 2.0);
+  render::SurfaceHit h;
+  // length(p) < 0.75: the crossing along -z is at 0.75 within the accuracy.
+  REQUIRE(intersect(iso, render::Ray{render::Vec3(0, 0, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(5.0 - 0.75).margin(1e-4));
+  CHECK(h.normal.z == Approx(-1.0).margin(1e-6));
+  // A ray that passes beside the solid but through the container misses.
+  CHECK_FALSE(intersect(iso, render::Ray{render::Vec3(0.9, 0, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
+}
+
+TEST_CASE("an isosurface's box container closes the solid where the function is inside", "[shapes]") {
+  render::SceneDesc s = eval_text(
+      "macro slab(p) { return p.y }\n"
+      "isosurface { function = slab  contained_by = box { min = <-1, -1, -1>  max = <1, 1, 1> } }\n");
+  const render::Isosurface& iso = only_isosurface(s);
+  render::SurfaceHit h;
+  // From below, the box's bottom face (y < 0 is inside); from above, the plane y = 0.
+  REQUIRE(intersect(iso, render::Ray{render::Vec3(0.2, -5, 0.1), render::Vec3(0, 1, 0)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(4.0));
+  CHECK(h.normal.y == Approx(-1.0));
+  REQUIRE(intersect(iso, render::Ray{render::Vec3(0.2, 5, 0.1), render::Vec3(0, -1, 0)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(5.0).margin(1e-3));
+  CHECK(h.normal.y == Approx(1.0).margin(1e-6));
+  // The whole line crosses the solid (y in [-1, 0]) twice: the box face, then the plane.
+  double t[4];
+  bool on[4];
+  double t0 = 0, t1 = 0;
+  render::Ray up{render::Vec3(0.2, -5, 0.1), render::Vec3(0, 1, 0)};
+  REQUIRE(render::iso_container_span(iso, up, t0, t1));
+  REQUIRE(render::iso_crossings(iso, up, t0, t1, t0, t1, t, on, 4) == 2);
+  CHECK(on[0]);
+  CHECK_FALSE(on[1]);
+  CHECK(t[1] == Approx(5.0).margin(1e-3));
+}
+
+TEST_CASE("an isosurface warns when max_gradient is below the slopes it met", "[shapes]") {
+  render::SceneDesc s = eval_text(
+      "macro steep(p) { return 4 * (length(p) - 0.5) }\n"
+      "isosurface { function = steep  max_gradient = 1 }\n");
+  const render::Isosurface& iso = only_isosurface(s);
+  CHECK_FALSE(render::after_render_warning(iso));
+  render::SurfaceHit h;
+  for (int i = 0; i < 20; ++i)
+    (void)intersect(iso, render::Ray{render::Vec3(0.05 * i - 0.5, 0.1, -5), render::Vec3(0, 0, 1)},
+                    render::Interval::positive(), h);
+  auto w = render::after_render_warning(iso);
+  REQUIRE(w);
+  CHECK(w->find("above max_gradient 1") != std::string::npos);
+  CHECK(iso.monitor->max_seen.load() <= 4.0 + 1e-9);
+  CHECK(iso.monitor->max_seen.load() > 3.0);
+}
+
+TEST_CASE("bad isosurface parameters are located errors", "[shapes]") {
+  Diagnostic d = eval_diagnostic("isosurface { threshold = 1 }");
+  CHECK(d.message.find("isosurface needs property 'function'") == 0);
+  d = eval_diagnostic("isosurface {\n  function = 3 }");
+  CHECK(d.message == "property 'function' of isosurface expects a macro of one point, got a number");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
+  d = eval_diagnostic("macro f(p) { return p.x }\nisosurface { function = f  max_gradient = 0 }");
+  CHECK(d.message == "property 'max_gradient' of isosurface must be > 0, got 0");
+  d = eval_diagnostic("macro f(p) { return p.x }\nisosurface { function = f  contained_by = cylinder { from = <0,0,0> to = <0,1,0> radius = 1 } }");
+  CHECK(d.message.find("only an isosurface's 'contained_by' takes an object, a box or a sphere") != std::string::npos);
+  d = eval_diagnostic("macro f(p) { return p.x }\nisosurface { function = f  contained_by = sphere { radius = 1 } scale 2 }");
+  CHECK(d.message.find("takes an untransformed sphere") != std::string::npos);
+  d = eval_diagnostic("macro f(p) { return p.x }\nisosurface { function = f  max_trace = 0 }");
+  CHECK(d.message == "property 'max_trace' of isosurface must be >= 1, got 0");
+}
+
+namespace {
+const render::Blob& only_blob(const render::SceneDesc& s) {
+  for (const render::ShapeDesc& d : s.shapes)
+    if (const auto* g = std::get_if<render::Blob>(&d.geometry)) return *g;
+  FAIL("no blob in the scene");
+  throw 0;
+}
+}  // namespace
+
+TEST_CASE("a one-sphere blob is a sphere of POV-Ray's radius r sqrt(1 - sqrt(threshold / strength))", "[shapes]") {
+  render::SceneDesc s = eval_text("blob { threshold = 0.25  spheres = [[<0, 0, 0>, 2, 1]] }\n");
+  const render::Blob& b = only_blob(s);
+  // s (1 - d^2/r^2)^2 = t  <=>  d = r sqrt(1 - sqrt(t / s)) = 2 sqrt(0.5).
+  const double radius = 2.0 * std::sqrt(0.5);
+  for (render::Vec3 dir : {render::Vec3(0, 0, 1), glm::normalize(render::Vec3(0.3, -0.2, 1))}) {
+    render::SurfaceHit h;
+    REQUIRE(intersect(b, render::Ray{-5.0 * dir, dir}, render::Interval::positive(), h));
+    CHECK(h.t == Approx(5.0 - radius).epsilon(1e-12));
+    CHECK(glm::dot(h.normal, -dir) == Approx(1.0).epsilon(1e-9));
+    double t[4];
+    REQUIRE(render::blob_crossings(b, render::Ray{-5.0 * dir, dir}, t, 4) == 2);
+    CHECK(t[1] == Approx(5.0 + radius).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("blob components add: two spheres fuse, a cylinder is a capsule, a negative strength carves", "[shapes]") {
+  // Two spheres of radius 1, strength 1, 1.2 apart, threshold 0.5: alone each reaches
+  // sqrt(1 - sqrt(0.5)) = 0.541 from its centre, so only the sum bridges the gap at x = 0.
+  render::SceneDesc s = eval_text("blob { threshold = 0.5  spheres = [[<-0.6, 0, 0>, 1, 1], [<0.6, 0, 0>, 1, 1]] }\n");
+  const render::Blob& two = only_blob(s);
+  render::SurfaceHit h;
+  REQUIRE(intersect(two, render::Ray{render::Vec3(0, 0, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
+  // At x = 0 the field is 2 (1 - (0.36 + z^2))^2 = 0.5: z^2 = 0.64 - 0.5.
+  CHECK(h.t == Approx(5.0 - std::sqrt(0.14)).epsilon(1e-12));
+  CHECK(render::blob_field(two, h.point) == Approx(0.5).epsilon(1e-9));
+  // A cylinder along y from 0 to 2, radius 1: beside its body at the body's radius; above
+  // its end, a hemisphere.
+  s = eval_text("blob { threshold = 0.25  cylinders = [[<0, 0, 0>, <0, 2, 0>, 1, 1]] }\n");
+  const render::Blob& cap = only_blob(s);
+  const double reach = std::sqrt(0.5);
+  REQUIRE(intersect(cap, render::Ray{render::Vec3(0, 1.3, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(5.0 - reach).epsilon(1e-12));
+  REQUIRE(intersect(cap, render::Ray{render::Vec3(0, 7, 0), render::Vec3(0, -1, 0)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(5.0 - reach).epsilon(1e-12));
+  CHECK(h.normal.y == Approx(1.0).epsilon(1e-9));
+  // Along the axis from below: into the bottom hemisphere at -reach.
+  REQUIRE(intersect(cap, render::Ray{render::Vec3(0, -5, 0), render::Vec3(0, 1, 0)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(5.0 - reach).epsilon(1e-12));
+  // A negative sphere at the centre of a positive one hollows it: four crossings through it.
+  s = eval_text("blob { threshold = 0.25  spheres = [[<0, 0, 0>, 2, 1], [<0, 0, 0>, 1, -1]] }\n");
+  double t[8];
+  CHECK(render::blob_crossings(only_blob(s), render::Ray{render::Vec3(0, 0, -5), render::Vec3(0, 0, 1)}, t, 8) == 4);
+}
+
+TEST_CASE("bad blob parameters are located errors", "[shapes]") {
+  Diagnostic d = eval_diagnostic("blob { threshold = 0.5 }");
+  CHECK(d.message == "blob needs at least one component: 'spheres' or 'cylinders'");
+  d = eval_diagnostic("blob { threshold = 0  spheres = [[<0, 0, 0>, 1, 1]] }");
+  CHECK(d.message == "property 'threshold' of blob must be > 0, got 0");
+  d = eval_diagnostic("blob {\n  spheres = [[<0, 0, 0>, -1, 1]] }");
+  CHECK(d.message == "blob spheres entry 1: the radius must be > 0, got -1");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
+  d = eval_diagnostic("blob { spheres = [[<0, 0, 0>, 1, 0]] }");
+  CHECK(d.message == "blob spheres entry 1: the strength must be a non-zero number, got 0");
+  d = eval_diagnostic("blob { spheres = [[<0, 0, 0>, 1]] }");
+  CHECK(d.message == "blob spheres entry 1 must be [center, radius, strength]");
+  d = eval_diagnostic("blob { cylinders = [[<0, 0, 0>, <0, 0, 0>, 1, 1]] }");
+  CHECK(d.message == "blob cylinders entry 1: 'from' and 'to' must differ (use a sphere)");
+  d = eval_diagnostic("blob { spheres = [[<0, 0, 0>, \"big\", 1]] }");
+  CHECK(d.message.find("each entry is a list of vectors then numbers") != std::string::npos);
+}
