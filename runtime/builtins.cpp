@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "render/shade/pattern/noise.hpp"
+#include "render/geometry/function/noise.hpp"
 #include "runtime/interpreter.hpp"
 #include "runtime/builtin_args.hpp"
 #include "runtime/ops.hpp"
@@ -216,7 +216,7 @@ Value stripes(BuiltinCall& c) { return texture(c, "stripes", {"color1", "color2"
 Value gradient(BuiltinCall& c) { return texture(c, "gradient", {"color1", "color2", "scale", "axis"}); }
 Value image_texture(BuiltinCall& c) { return texture(c, "image_texture", {"file", "mapping"}); }
 
-// The noise family (render/shade/pattern/noise.hpp, the same functions the renderer and
+// The noise family (render/geometry/function/noise.hpp, the same functions the renderer and
 // compiled pattern functions call): noise(p) in [0, 1], fbm(p, octaves, lambda, omega) in
 // [-1, 1], turbulence(p, octaves, lambda, omega) in [0, 1], cells(p) in [0, 1), worley(p).
 Value noise(BuiltinCall& c) { return finite(c, render::pattern::noise01(vec(c, 0))); }

@@ -24,7 +24,7 @@
 
 #include <fmt/format.h>
 
-#include "render/shade/pattern/compiled_function.hpp"
+#include "render/geometry/function/compiled_function.hpp"
 #include "runtime/interpreter.hpp"
 
 namespace rts::runtime {

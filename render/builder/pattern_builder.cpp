@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "render/shade/pattern/noise.hpp"
+#include "render/geometry/function/noise.hpp"
 
 namespace rts::render {
 

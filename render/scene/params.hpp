@@ -18,7 +18,7 @@ struct MaterialRef { MaterialId id = kNoId; };
 // A pattern's color map: `color_map = [[0, rgb(1)], [0.5, rgb(0.2)], ...]` (value, color) pairs.
 struct ColorMapParam { std::vector<ColorMapEntry> entries; };
 // A function of a point, compiled once by the runtime (`pattern { function = f }`, isosurfaces).
-class CompiledFunction;  // render/shade/pattern/compiled_function.hpp
+class CompiledFunction;  // render/geometry/function/compiled_function.hpp
 struct FunctionRef { std::shared_ptr<const CompiledFunction> function; };
 // A list of lists each holding vectors then numbers: a blob's `spheres = [[<0, 0, 0>, 1, 1]]`.
 struct RowsParam {

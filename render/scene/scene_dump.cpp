@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "render/scene/compiled_function.hpp"
 #include "render/scene/scene.hpp"
 
 namespace rts::render {
@@ -106,9 +105,9 @@ std::string shape_text(const ShapeDesc& s) {
     std::string operator()(const Isosurface& g) {
       std::string box = g.container_sphere ? fmt::format("sphere {} {}", vec(g.center), num(g.radius))
                                            : fmt::format("box {} {}", vec(g.box_min), vec(g.box_max));
-      return fmt::format("isosurface function {} instructions threshold {} max_gradient {} accuracy {} max_trace {} "
+      return fmt::format("isosurface function {} threshold {} max_gradient {} accuracy {} max_trace {} "
                          "contained_by {}",
-                         g.function ? g.function->instructions() : 0, num(g.threshold), num(g.max_gradient),
+                         g.function ? "compiled" : "none", num(g.threshold), num(g.max_gradient),
                          num(g.accuracy), g.max_trace, box);
     }
   };

@@ -10,7 +10,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/scene/compiled_function.hpp"
+#include "render/geometry/function/compiled_function.hpp"
 
 #include "render/accel/world.hpp"
 #include "render/geometry/ray.hpp"

@@ -9,8 +9,8 @@
 #include <catch2/catch.hpp>
 
 #include "render/renderer.hpp"
-#include "render/shade/pattern/compiled_function.hpp"
-#include "render/shade/pattern/noise.hpp"
+#include "render/geometry/function/compiled_function.hpp"
+#include "render/geometry/function/noise.hpp"
 #include "render/shade/pattern/patterns.hpp"
 #include "render/shade/texture.hpp"
 #include "scene_fixture.hpp"

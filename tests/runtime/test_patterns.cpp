@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "eval_helpers.hpp"
-#include "render/shade/pattern/compiled_function.hpp"
-#include "render/shade/pattern/noise.hpp"
+#include "render/geometry/function/compiled_function.hpp"
+#include "render/geometry/function/noise.hpp"
 
 using namespace rts;
 using rts::test::eval_diagnostic;

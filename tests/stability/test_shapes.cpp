@@ -7,7 +7,7 @@
 
 #include "render/geometry/shapes/blob.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
-#include "render/scene/compiled_function.hpp"
+#include "render/geometry/function/compiled_function.hpp"
 #include "stability_support.hpp"
 
 using namespace rts::render;

@@ -1,6 +1,6 @@
 // Isosurface (POV-Ray's `isosurface { function { ... } threshold max_gradient contained_by }`):
 // the solid f(p) < threshold inside a container (a box or a sphere), f a macro of the point
-// compiled once into register code (render/scene/compiled_function.hpp).
+// compiled once into register code (render/geometry/function/compiled_function.hpp).
 //
 // Root finding follows POV-Ray's contract: `max_gradient` G is a bound on |grad f|, so at a
 // point where |f - threshold| = v no surface lies nearer than v / G, and the ray may step that
@@ -27,7 +27,7 @@
 #include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/surface_hit.hpp"
 #include "render/geometry/tolerances.hpp"
-#include "render/scene/compiled_function.hpp"
+#include "render/geometry/function/compiled_function.hpp"
 #include "render/scene/params.hpp"
 
 namespace rts::render {

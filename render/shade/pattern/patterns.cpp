@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "render/shade/pattern/compiled_function.hpp"
-#include "render/shade/pattern/noise.hpp"
+#include "render/geometry/function/compiled_function.hpp"
+#include "render/geometry/function/noise.hpp"
 
 namespace rts::render::pattern {
 

@@ -1,6 +1,6 @@
 // POV-Ray's patterns as functions of a texture-space point: each gives a value (mostly in
 // [0, 1]) that the wave function and the color map turn into a color. The meanings follow
-// POV-Ray 3.7 (its pattern.cpp), with rts's own noise (render/shade/pattern/noise.hpp), so the
+// POV-Ray 3.7 (its pattern.cpp), with rts's own noise (render/geometry/function/noise.hpp), so the
 // look matches POV-Ray's by eye, not bit for bit:
 //  - bozo, spotted, bumps: noise01(p).                      dents: noise01(p)^3.
 //  - granite: sum over 6 octaves of |gradient_noise(4 * 2^i * p)| / 2^i (POV-Ray's
@@ -14,7 +14,7 @@
 //  - crackle: F2 - F1 of Worley noise (0 on the cell borders).   cells: one value per unit cube.
 //  - ripples, waves: concentric sine waves from ten fixed centres near the origin, `frequency`
 //            rings per unit and `phase` (waves fade with the distance, as POV-Ray's).
-//  - function: a user function f(x, y, z) (render/shade/pattern/compiled_function.hpp).
+//  - function: a user function f(x, y, z) (render/geometry/function/compiled_function.hpp).
 // Every pattern but marble, wood and agate applies a non-zero `turbulence` as a warp
 // p += turbulence * vector_turbulence(p) first (POV-Ray's classic turbulence).
 #pragma once

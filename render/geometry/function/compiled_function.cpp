@@ -1,5 +1,5 @@
 // Straight-line register code for user functions: see compiled_function.hpp.
-#include "render/shade/pattern/compiled_function.hpp"
+#include "render/geometry/function/compiled_function.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "render/shade/pattern/noise.hpp"
+#include "render/geometry/function/noise.hpp"
 
 namespace rts::render {
 

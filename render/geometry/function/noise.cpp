@@ -1,7 +1,7 @@
 // Perlin's improved noise ("Improving Noise", SIGGRAPH 2002): a quintic fade, twelve edge
 // gradients picked by a permutation of 0..255. The permutation is built at compile time by a
 // Fisher-Yates shuffle driven by a fixed integer hash, so it is the same on every platform.
-#include "render/shade/pattern/noise.hpp"
+#include "render/geometry/function/noise.hpp"
 
 #include <algorithm>
 #include <array>

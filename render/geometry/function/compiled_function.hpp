@@ -8,7 +8,7 @@
 // instruction too, `Const`, shared by every use of the same value). Vectors of the language are three registers each (the compiler scalarises them), so
 // the renderer only ever sees numbers. Comparisons give 0 or 1; `Select` picks without a
 // branch (both sides are computed: they are pure and cheap). The noise family calls the same
-// functions as the pattern textures (render/shade/pattern/noise.hpp).
+// functions as the pattern textures (render/geometry/function/noise.hpp).
 //
 // Evaluation allocates nothing: the registers live in a fixed array on the stack
 // (kMaxRegisters bounds a function's size; the compiler reports a located error past it).
