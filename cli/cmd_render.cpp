@@ -3,11 +3,14 @@
 // written atomically, so a failure never truncates an existing image.
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
 #include <chrono>
-#include <cstdlib>
 #include <climits>
 #include <utility>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -66,6 +69,7 @@ struct RenderCommand {
   std::vector<double> depth_range;
   float depth_miss = 0.0f, normal_miss = 0.0f;
   bool no_progress = false;
+  std::string progress = "auto";  // --progress: auto, bar, lines, none
   bool no_specialize = false;
   bool strict = false;  // a POV-Ray scene: what rts cannot express is an error
   StatsOptions stats;
@@ -97,7 +101,9 @@ void print_warnings(const std::vector<render::Warning>& warnings) {
   }
 }
 
-// Fails early (before spending time rendering) when the output folder cannot take the file.
+// Fails early (before evaluating or rendering) when the output folder cannot take the file.
+// A directory can look writable (root, W_OK) and still refuse new files (/proc, a read-only
+// mount): the only sure test is to create a file there, so one is created and removed.
 void check_output_writable(const std::string& out) {
   std::error_code ec;
   fs::file_status st = fs::status(out, ec);
@@ -111,10 +117,22 @@ void check_output_writable(const std::string& out) {
   if (dir.empty()) dir = ".";
   if (!fs::is_directory(dir, ec))
     throw render::RenderError({}, fmt::format("cannot write '{}': directory '{}' does not exist", out, dir.string()));
-  if (access(dir.c_str(), W_OK) != 0)
-    throw render::RenderError({}, fmt::format("cannot write '{}': directory '{}' is not writable", out, dir.string()));
   if (fs::is_directory(out, ec))
     throw render::RenderError({}, fmt::format("cannot write '{}': it is a directory", out));
+  std::string probe = (dir / ".rts-write-probe-XXXXXX").string();
+  int fd = mkstemp(probe.data());
+  if (fd < 0) {
+    const int err = errno;
+    // ENOENT on an existing directory: a virtual file system (/proc, /sys) that makes no files.
+    std::string why = err == ENOENT  ? "it does not accept new files"
+                      : err == EROFS ? "it is on a read-only file system"
+                      : err == EACCES || err == EPERM ? "it is not writable (permission denied)"
+                      : err == ENOSPC || err == EDQUOT ? "it is full"
+                                       : std::string("a file cannot be created there: ") + std::strerror(err);
+    throw render::RenderError({}, fmt::format("cannot write '{}': directory '{}': {}", out, dir.string(), why));
+  }
+  close(fd);
+  unlink(probe.c_str());
 }
 
 // The time limit or the sample cap cut an adaptive or time-limited render short.
@@ -139,6 +157,14 @@ struct Evaluated {
   double eval_seconds = 0, parse_seconds = 0;
   bool uses_clock = false;
 };
+
+// How long work shows itself on stderr: --progress (auto: a bar on a terminal, else nothing).
+render::ProgressMode progress_mode(const RenderCommand& c) {
+  if (c.no_progress || c.progress == "none") return render::ProgressMode::None;
+  if (c.progress == "lines") return render::ProgressMode::Lines;
+  if (c.progress == "bar") return render::ProgressMode::Bar;
+  return isatty(STDERR_FILENO) ? render::ProgressMode::Bar : render::ProgressMode::None;
+}
 
 // Evaluates the scene; on failure reports the located error and returns its exit code.
 // A POV-Ray scene (scene.pov) is translated in memory; its own include files go to a
@@ -182,7 +208,8 @@ int import_pov_scene(const RenderCommand& c, EvalOptions& eval, PovScene& pov) {
   return kExitOk;
 }
 
-int evaluate_scene(const RenderCommand& c, const EvalOptions& eval_in, DiagnosticSink& sink, Evaluated& out) {
+int evaluate_scene(const RenderCommand& c, const EvalOptions& eval_in, DiagnosticSink& sink, Evaluated& out,
+                   render::ProgressMode progress = render::ProgressMode::None) {
   EvalOptions eval = eval_in;
   PovScene pov;
   std::string path = c.scene;
@@ -192,8 +219,15 @@ int evaluate_scene(const RenderCommand& c, const EvalOptions& eval_in, Diagnosti
     path = c.scene + ".rts";
     out.sources->add(path, std::move(pov.rts));
   }
+  // Evaluation (and the OBJ files it loads) can take a while: its time and the objects placed
+  // so far are shown, from another thread, once it has run half a second.
+  std::atomic<uint64_t> placed{0};
+  if (progress != render::ProgressMode::None) eval.placed = &placed;
+  render::PhaseProgress phase(progress, "evaluating " + c.scene, &placed, "objects placed");
   EvalResult evaluated;
-  if (!evaluate_reporting(*out.sources, path, eval, sink, evaluated, SceneWarnings{true, c.integrator}))
+  const bool ok = evaluate_reporting(*out.sources, path, eval, sink, evaluated, SceneWarnings{true, c.integrator});
+  phase.done();
+  if (!ok)
     return kExitLanguageError;
   out.eval_seconds = evaluated.seconds;
   out.parse_seconds = evaluated.parse_seconds;
@@ -231,11 +265,11 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
   if (!c.depth_range.empty()) opts.depth_range = std::make_pair(c.depth_range[0], c.depth_range[1]);
   opts.depth_miss = c.depth_miss;
   opts.normal_miss = c.normal_miss;
-  opts.progress = !c.no_progress && isatty(STDERR_FILENO);
+  opts.progress = progress_mode(c);
   opts.specialize = !c.no_specialize;
   if (dist) {
     opts.exchange = dist->exchange;
-    opts.progress = false;
+    opts.progress = render::ProgressMode::None;
   }
   const bool several = dist && dist->mpi->size() > 1;
   // A rank that fails while the others wait for it ends the job, naming itself.
@@ -303,8 +337,8 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
 // The options that change pixels, for a checkpoint's key: the command line without the ones
 // that do not (threads, output name, progress and statistics flags, the checkpoint itself).
 std::string pixel_options(const std::vector<std::string>& args) {
-  static const std::vector<std::string> kWithValue = {"--threads", "-o",         "--output",
-                                                      "--checkpoint", "--stats-json", "--tile-log"};
+  static const std::vector<std::string> kWithValue = {"--threads",    "-o",         "--output",  "--checkpoint",
+                                                      "--stats-json", "--tile-log", "--progress"};
   static const std::vector<std::string> kFlags = {"--no-progress", "--stats"};
   std::string out;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -560,6 +594,17 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   const dist::MpiSession& mpi = *ctx.mpi;
   // --tile-log alone runs a still through the same tile queue, on one process.
   const bool distributed = mpi.active() || !c.checkpoint.empty() || !c.tile_log.empty();
+  // An output that cannot be written fails now, not after the evaluation and the render (the
+  // first frame's folder stands for the others; a video's file is written whole at the end).
+  if (!distributed) {
+    try {
+      check_output_writable(video || !has_frame_pattern(out) ? out
+                                                             : frame_path(out, frames_flag ? flag_range.first : 0));
+    } catch (const render::RenderError& e) {
+      std::cerr << "rts: error: " << e.what() << "\n";
+      return kExitRenderError;
+    }
+  }
   if (c.watch) {
     if (frames_flag || video || task.count > 1 || distributed)
       throw CLI::ValidationError("--watch", "re-renders a still: not with --frames, a video, --task-*, --checkpoint, --tile-log or mpirun");
@@ -577,7 +622,7 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   {
     EvalOptions eval = c.eval;
     eval.animation = probe_clock;
-    int rc = evaluate_scene(c, eval, sink, probe);
+    int rc = evaluate_scene(c, eval, sink, probe, mpi.active() ? render::ProgressMode::None : progress_mode(c));
     if (mpi.active()) {
       const int root_rc = mpi.from_root(rc);
       if (int all = mpi.agree(rc); all != kExitOk) {
@@ -671,7 +716,11 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::Number);
   cmd->add_option("--depth-miss", c->depth_miss, "Depth AOV value where nothing is hit (default 0)");
   cmd->add_option("--normal-miss", c->normal_miss, "Normal AOV value where nothing is hit (default 0)");
-  cmd->add_flag("--no-progress", c->no_progress, "Never draw the progress bar");
+  cmd->add_flag("--no-progress", c->no_progress, "Never show progress (as --progress=none)");
+  cmd->add_option("--progress", c->progress,
+                  "Progress of evaluation, build and render on stderr: auto (a bar when stderr is a terminal, "
+                  "else nothing), bar, lines (plain lines, for logs), none")
+      ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
   cmd->add_flag("--stats", c->stats.print, "Print features used and left out, rays, memory and time per phase");
   cmd->add_option("--stats-json", c->stats.json_path, "Write the same figures as JSON to FILE ('-': stdout)");
   cmd->add_flag("--no-specialize", c->no_specialize, "Render through the generic path (for benchmarks)");

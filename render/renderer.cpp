@@ -202,19 +202,25 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism,
                                   static_cast<std::size_t>(threads));
   tbb::task_arena arena(threads);
+  PhaseProgress building(options.progress, "building the scene (flattening, BVH)");
   std::optional<PreparedScene> own;
   if (!given) arena.execute([&] { own.emplace(scene, options.specialize, options.max_memory); });
+  building.done();
   const PreparedScene& prep = given ? *given : *own;
   const FeatureSet features = prep.features(FeatureContext{rs.samples, rs.max_depth, !options.aovs.empty()});
   const World& world = prep.world();
+  // The lights for this render's samples per pixel: area lights written without `samples`
+  // spread 16 samples per pixel over them (compile_lights); a few lights, compiled per render
+  // because the prepared scene may be rendered at several sample counts (rts converge).
+  const std::vector<CompiledLight> lights = compile_lights(prep.flat().lights, rs.samples);
   Camera camera(scene.has_camera ? scene.camera : CameraDesc{}, rs.width, rs.height);
-  Integrator integrator(world, prep.lights(), scene.materials, prep.textures(), scene.settings, rs.max_depth,
+  Integrator integrator(world, lights, scene.materials, prep.textures(), scene.settings, rs.max_depth,
                         prep.integrator_flags(features));
   // Path mode: the path tracer takes the camera samples (the Whitted integrator keeps the AOVs).
   const IntegratorKind integrator_kind = options.integrator.value_or(scene.settings.integrator);
   std::optional<path::PathIntegrator> path_tracer;
   if (integrator_kind == IntegratorKind::Path) {
-    path_tracer.emplace(world, scene, prep.lights(), prep.textures(), rs.max_depth, result.warnings);
+    path_tracer.emplace(world, scene, lights, prep.textures(), rs.max_depth, result.warnings);
     integrator.use_path_tracer(&*path_tracer);
   }
   const bool adaptive = options.target_error > 0 && rs.samples >= 2;
@@ -235,7 +241,12 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   stats.threads = threads;
   stats.instances = world.instance_count() - world.plane_count() - world.csg_part_count();
   stats.planes = world.plane_count();
-  stats.lights = prep.lights().size();
+  stats.lights = lights.size();
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    if (lights[i].kind != LightKind::Area) continue;
+    stats.area_light_samples = std::max(stats.area_light_samples, lights[i].samples);
+    if (prep.flat().lights[i].auto_samples) stats.area_samples_auto = true;
+  }
   stats.specialized = prep.specialized();
   stats.integrator = integrator_name(integrator_kind);
   if (path_tracer) path_tracer->describe(stats.path_used, stats.path_left_out);

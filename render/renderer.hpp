@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/image/render_result.hpp"
+#include "render/progress.hpp"
 #include "render/scene/scene.hpp"
 
 namespace rts::render {
@@ -64,7 +65,7 @@ struct RenderOptions {
   std::optional<std::pair<double, double>> depth_range;
   float depth_miss = 0.0f;                // depth AOV value where the camera ray hits nothing
   float normal_miss = 0.0f;               // normal AOV value (every channel) where nothing is hit
-  bool progress = false;                  // progress bar with ETA on stderr
+  ProgressMode progress = ProgressMode::None;  // feedback on stderr: a bar or plain lines
   bool specialize = true;                 // false: the generic path (--no-specialize)
   std::size_t max_pixels = 100'000'000;   // larger images are a RenderError
   std::size_t max_memory = 0;             // bytes (--max-memory): the image and AOVs must fit; 0: no limit

@@ -11,6 +11,8 @@
 // go to `warnings`.
 #pragma once
 
+#include <atomic>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -64,6 +66,9 @@ struct EvalOptions {
   std::vector<std::string> allow_read;
   bool restrict_reads = false;
   AnimationClock animation;                // `rts render --frames`
+  // Non-null: the objects placed in the world so far are stored here after each placement,
+  // for a progress display on another thread.
+  std::atomic<uint64_t>* placed = nullptr;
 };
 
 struct EvalResult {

@@ -21,7 +21,7 @@ Interpreter::Interpreter(SourceManager& sources, const EvalOptions& options, Dia
       warnings_(warnings),
       budget_(options.limits),
       includes_(sources, options),
-      placement_(options.limits, budget_),
+      placement_(options.limits, budget_, options.placed),
       builder_(render::BuilderLimits{options.limits.max_mesh_triangles, options.limits.max_memory}) {
   const auto& table = builtin_table();
   for (uint32_t i = 0; i < table.size(); ++i) builtins_[ast::intern(table[i].name)] = i;

@@ -181,6 +181,9 @@ class Interpreter {
   std::vector<std::size_t> scopes_;
   std::size_t frame_base_ = 0;  // first binding of the current macro frame (0 at top level)
   std::vector<Context> contexts_;
+  // Macro arguments between their evaluation and their binding (call_macro), all calls' in one.
+  std::vector<Value> arg_stack_;
+  std::vector<const ast::Argument*> arg_given_;
   unsigned macro_depth_ = 0;
   unsigned loop_depth_ = 0;  // loops enclosing the current code in this frame
   bool in_macro_ = false;    // `return` allowed

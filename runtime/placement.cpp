@@ -32,6 +32,7 @@ bool Placement::to_world(const render::Child& c, SourceLoc loc) {
   ObjectCount n = count(c.node);
   world_.shapes = std::min(world_.shapes + n.shapes, kSaturatedCount);
   world_.lights = std::min(world_.lights + n.lights, kSaturatedCount);
+  if (published_) published_->store(world_.total(), std::memory_order_relaxed);
   if (world_.total() > limits_.max_objects)
     throw LanguageError(loc, fmt::format("the scene holds more than {} objects once its groups are expanded (raise the "
                                          "limit with --max-objects)",

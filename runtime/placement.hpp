@@ -4,6 +4,7 @@
 // runtime/: the interpreter asks it before handing an object to the scene builder.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -24,7 +25,10 @@ class Placement {
   // Object counts stop growing here (no overflow however groups multiply).
   static constexpr uint64_t kSaturatedCount = uint64_t(1) << 62;
 
-  Placement(const EvalLimits& limits, const Budget& budget) : limits_(limits), budget_(budget) {}
+  // `published` (EvalOptions::placed, may be null) receives the world's object count after
+  // each placement, for a progress display on another thread.
+  Placement(const EvalLimits& limits, const Budget& budget, std::atomic<uint64_t>* published = nullptr)
+      : limits_(limits), budget_(budget), published_(published) {}
 
   // While one lives, objects placed go into `children` (the body of a group or CSG block).
   class Into {
@@ -72,6 +76,7 @@ class Placement {
   std::size_t placements_ = 0;
   std::vector<ObjectCount> node_counts_;  // by NodeId
   ObjectCount world_;                     // placed in the world, groups expanded
+  std::atomic<uint64_t>* published_ = nullptr;  // EvalOptions::placed
 };
 
 }  // namespace rts::runtime

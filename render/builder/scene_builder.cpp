@@ -762,6 +762,7 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     l.position = ps.require_vec3("position");
     l.u = direction(ps, "u", ps.require_vec3("u"));
     l.v = direction(ps, "v", ps.require_vec3("v"));
+    l.auto_samples = !ps.has("samples");
     l.samples = ps.integer("samples", l.samples);
     require(ps, "samples", l.samples >= 1, ">= 1", l.samples);
     if (l.samples > kMaxAreaSamples) {

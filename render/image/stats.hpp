@@ -65,6 +65,10 @@ struct RenderStats {
   int width = 0, height = 0, samples = 0, max_depth = 0, threads = 0;
   std::size_t instances = 0, planes = 0, lights = 0;
   RayCounters rays;
+  // Area lights: shadow samples per shading point (the largest over the area lights; 0: none),
+  // and whether one of them was written without `samples` (kAutoAreaSamplesPerPixel per pixel).
+  int area_light_samples = 0;
+  bool area_samples_auto = false;
   // What the scene uses and what rendering left out (render/shade/features.hpp names).
   bool specialized = true;     // false under --no-specialize
   std::string integrator = "whitted";  // "whitted" or "path"
@@ -82,6 +86,14 @@ struct RenderStats {
   PixelStatistics pixels;
   ErrorEstimate error;
 
+  // What the shadow rays cost: per pixel, and their share of every ray traced.
+  double shadow_rays_per_pixel() const {
+    double pixels = static_cast<double>(width) * height;
+    return pixels > 0 ? static_cast<double>(rays.shadow) / pixels : 0.0;
+  }
+  double shadow_ray_share() const {
+    return rays.total() > 0 ? static_cast<double>(rays.shadow) / static_cast<double>(rays.total()) : 0.0;
+  }
   double rays_per_second() const {
     return render_seconds > 0 ? static_cast<double>(rays.total()) / render_seconds : 0.0;
   }
@@ -104,6 +116,8 @@ struct RenderStats {
     f("scene.instances", instances);
     f("scene.planes", planes);
     f("scene.lights", lights);
+    f("scene.area_light_samples", area_light_samples);
+    f("scene.area_samples_auto", area_samples_auto);
     f("scene.triangles", triangles);
     f("scene.bvh_nodes", bvh_nodes);
     f("scene.primitives", primitives);
@@ -118,6 +132,8 @@ struct RenderStats {
     f("rays.reflection", rays.reflection);
     f("rays.refraction", rays.refraction);
     f("rays.total", rays.total());
+    f("rays.shadow_per_pixel", shadow_rays_per_pixel());
+    f("rays.shadow_share", shadow_ray_share());
     f("rays.per_second", rays_per_second());
     f("samples.nan", rays.nan_samples);
     f("memory_bytes", memory);

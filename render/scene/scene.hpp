@@ -194,6 +194,10 @@ struct LightDesc {
   Vec3 u{1, 0, 0}, v{0, 0, 1};     // area: edge vectors (rectangle centred on position)
   bool disc = false;               // area: an ellipse inscribed in the u,v rectangle
   int samples = 16;                // area: shadow samples per shading point
+  // area: `samples` was not written. Then the light gets kAutoAreaSamplesPerPixel samples per
+  // *pixel*, spread over the pixel samples (compile_lights), instead of 16 per shading point
+  // times the pixel samples (a 16 spp still life cast 531M shadow rays that way).
+  bool auto_samples = false;       // the scene builder sets it
   bool shadows = true;
   SourceRef loc;
 };

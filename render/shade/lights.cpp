@@ -16,7 +16,7 @@ double attenuation_factor(const Vec3& k, double d, bool clamp) {
   return denom > tol::kTinyLength ? 1.0 / denom : 0.0;
 }
 
-std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_lights) {
+std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_lights, int pixel_samples) {
   std::vector<CompiledLight> out;
   for (const LightDesc& d : world_lights) {
     CompiledLight l;
@@ -39,7 +39,8 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     l.u = d.u;
     l.v = d.v;
     l.disc = d.disc;
-    l.samples = d.kind == LightKind::Area ? std::clamp(d.samples, 1, kMaxAreaSamples) : 1;
+    int asked = d.auto_samples ? auto_area_samples(pixel_samples) : d.samples;
+    l.samples = d.kind == LightKind::Area ? std::clamp(asked, 1, kMaxAreaSamples) : 1;
     l.strata_side = square_side(static_cast<uint32_t>(l.samples));
     l.inv_strata = 1.0 / (l.strata_side > 0 ? l.strata_side : l.samples);
     l.constant_attenuation = d.attenuation.y == 0.0 && d.attenuation.z == 0.0;

@@ -42,7 +42,21 @@ struct LightSample {
 // Area lights' sample count is clamped to [1, kMaxAreaSamples].
 inline constexpr int kMaxAreaSamples = 4096;
 
-std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_lights);
+// An area light without `samples` gets this many shadow samples per pixel, spread over the
+// pixel samples: ceil(16 / spp) per shading point (16 at 1 spp, as before; 4 at 4 spp; 1 from
+// 16 spp). Each pixel sample draws its light samples from its own sampler dimensions, so the
+// pixel's samples together cover the light (a scrambled Sobol sequence stratifies them).
+inline constexpr int kAutoAreaSamplesPerPixel = 16;
+
+// Light samples per shading point for an area light written without `samples`.
+inline int auto_area_samples(int pixel_samples) {
+  int spp = pixel_samples < 1 ? 1 : pixel_samples;
+  return (kAutoAreaSamplesPerPixel + spp - 1) / spp;
+}
+
+// `pixel_samples` (the scene's samples per pixel, the cap under adaptive sampling) resolves
+// the area lights written without `samples` (LightDesc::auto_samples).
+std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_lights, int pixel_samples = 1);
 
 // The light seen from `point` through the light position `on_light` in [0,1)^2 (area lights:
 // across u and v; ignored by the others).
