@@ -1,8 +1,11 @@
-// `rts import FILE [-o OUT.rts] [--format mit|csci420|uw|pov]`: translates a POV-Ray scene
-// (import/pov/) or a course scene file (MIT 6.837, USC CSCI 420, UW CSE 457) into a readable
-// .rts scene; meshes and a POV-Ray scene's own include files go beside OUT. Without -o the scene
-// goes to standard output (meshes beside the input's name in the current folder). Files are
-// written whole or not at all.
+// `rts import FILE [-o OUT.rts] [--format mit|csci420|uw|pov] [course flags]`: translates a
+// POV-Ray scene (import/pov/) or a course scene file (MIT 6.837, USC CSCI 420, UW CSE 457) into
+// a readable .rts scene; meshes and a POV-Ray scene's own include files go beside OUT. The
+// course programs' flags (MIT a2's --size --bounces --shadows, CSCI 420's --reflection
+// --antialias --soft-shadows, --aov/--depth-range) become the scene's settings. Without -o the
+// scene goes to standard output (meshes beside the input's name in the current folder). Files
+// are written whole or not at all.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +13,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -30,7 +34,35 @@ struct ImportCommandOptions {
   std::string format;
   std::vector<std::string> include_dirs;  // -I: POV-Ray's Library_Path
   bool strict = false;
+  std::vector<int> size;           // MIT a2 -size W H
+  int bounces = 0;                 // MIT a2 -bounces N
+  bool shadows = false;            // MIT a2 -shadows
+  int reflection = 0;              // CSCI 420 maxReflection
+  int antialias = 1;               // CSCI 420 sampleRate
+  int soft_shadows = 0;            // CSCI 420 subLightPerPointLight
+  double soft_shadow_radius = 0.1;
+  std::vector<std::string> aovs;   // normal, depth
+  std::vector<double> depth_range; // NEAR,FAR
 };
+
+// Flags that belong to one course's program: given with another format's file, a usage error
+// (the flag would silently do nothing).
+std::string misplaced_flag(const CLI::App& cmd, import::Format format) {
+  const char* mit[] = {"--size", "--bounces", "--shadows"};
+  const char* csci[] = {"--reflection", "--antialias", "--soft-shadows", "--soft-shadow-radius"};
+  if (format != import::Format::Mit)
+    for (const char* f : mit)
+      if (cmd.count(f)) return fmt::format("{} is MIT 6.837 a2's flag; this is a {}", f, import::format_name(format));
+  if (format != import::Format::Csci420)
+    for (const char* f : csci)
+      if (cmd.count(f)) return fmt::format("{} is a CSCI 420 switch; this is a {}", f, import::format_name(format));
+  if (format == import::Format::UwRay)
+    for (const char* f : {"--aov", "--depth-range"})
+      if (cmd.count(f))
+        return fmt::format("{} applies to MIT and CSCI 420 scenes; for a {} give it to rts render", f,
+                           import::format_name(format));
+  return "";
+}
 
 // Writes `text` to `path` through a temporary file renamed over it.
 bool write_whole(const fs::path& path, const std::string& text, std::string& why) {
@@ -123,7 +155,7 @@ bool is_pov_input(const ImportCommandOptions& o, const std::string& text) {
   }
 }
 
-int run_import(const ImportCommandOptions& o) {
+int run_import(const ImportCommandOptions& o, const CLI::App& cmd) {
   std::ifstream in(o.file, std::ios::binary);
   if (!in) {
     std::cerr << fmt::format("rts: cannot open '{}'\n", o.file);
@@ -132,13 +164,25 @@ int run_import(const ImportCommandOptions& o) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string text = buffer.str();
-  if (is_pov_input(o, text)) return run_pov_import(o);
+  if (is_pov_input(o, text)) {
+    for (const char* f : {"--size", "--bounces", "--shadows", "--reflection", "--antialias", "--soft-shadows",
+                          "--soft-shadow-radius", "--aov", "--depth-range"})
+      if (cmd.count(f)) {
+        std::cerr << fmt::format("rts: import: {} is a course program's flag; this is a POV-Ray scene\n", f);
+        return kExitUsage;
+      }
+    return run_pov_import(o);
+  }
   try {
     import::Format format;
     if (o.format == "mit") format = import::Format::Mit;
     else if (o.format == "csci420") format = import::Format::Csci420;
     else if (o.format == "uw") format = import::Format::UwRay;
     else format = import::detect_format(text, o.file);
+    if (std::string why = misplaced_flag(cmd, format); !why.empty()) {
+      std::cerr << "rts: import: " << why << '\n';
+      return kExitUsage;
+    }
 
     import::ImportOptions opt;
     opt.source_name = fs::path(o.file).filename().string();
@@ -147,6 +191,19 @@ int run_import(const ImportCommandOptions& o) {
     opt.output_dir = o.output.empty() ? std::string(".") : out_path.parent_path().string();
     if (opt.output_dir.empty()) opt.output_dir = ".";
     opt.mesh_prefix = (o.output.empty() ? fs::path(o.file) : out_path).stem().string();
+    if (o.size.size() == 2) opt.width = o.size[0], opt.height = o.size[1];
+    opt.bounces = o.bounces;
+    opt.shadows = o.shadows;
+    opt.reflection = o.reflection;
+    opt.antialias = o.antialias;
+    opt.soft_shadows = o.soft_shadows;
+    opt.soft_shadow_radius = o.soft_shadow_radius;
+    for (const std::string& a : o.aovs) opt.aovs += (opt.aovs.empty() ? "" : ",") + a;
+    if (o.depth_range.size() == 2) {
+      opt.has_depth_range = true;
+      opt.depth_near = o.depth_range[0];
+      opt.depth_far = o.depth_range[1];
+    }
     import::ImportResult result = import::import_scene(text, format, opt);
 
     std::string why;
@@ -185,7 +242,35 @@ void add_import_command(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::IsMember({"mit", "csci420", "uw", "pov"}));
   cmd->add_option("-I", opts->include_dirs, "POV-Ray: a folder searched for #include files (Library_Path)");
   cmd->add_flag("--strict", opts->strict, "POV-Ray: what rts cannot express is an error, not a warning");
-  cmd->callback([opts, &ctx] { ctx.exit_code = run_import(*opts); });
+  // The course programs' flags, written into the scene as settings (docs/from-courses.md).
+  cmd->add_option("--size", opts->size, "MIT a2 -size: the image's width and height")
+      ->expected(2)
+      ->check(CLI::Range(1, 65536));
+  cmd->add_option("--bounces", opts->bounces, "MIT a2 -bounces: mirror reflection (ks · I_reflected), N bounces")
+      ->check(CLI::Range(0, 1000));
+  cmd->add_flag("--shadows", opts->shadows, "MIT a2 -shadows: cast shadow rays (none without it)");
+  cmd->add_option("--reflection", opts->reflection,
+                  "CSCI 420: recursive reflection (1 - ks)·local + ks·reflected, up to depth N")
+      ->check(CLI::Range(0, 1000));
+  cmd->add_option("--antialias", opts->antialias, "CSCI 420: N x N samples per pixel")->check(CLI::Range(1, 256));
+  cmd->add_option("--soft-shadows", opts->soft_shadows, "CSCI 420: split each point light into N jittered sub-lights")
+      ->check(CLI::Range(0, 4096));
+  cmd->add_option("--soft-shadow-radius", opts->soft_shadow_radius,
+                  "CSCI 420: the sub-lights lie within this distance of their light (default 0.1)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--aov", opts->aovs, "Extra images the scene asks for: normal,depth (MIT -normals, -depth)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"normal", "depth"}));
+  cmd->add_option("--depth-range", opts->depth_range, "Depth image: NEAR,FAR map to black..white (MIT -depth)")
+      ->delimiter(',')
+      ->expected(2);
+  cmd->callback([opts, cmd, &ctx] {
+    if (opts->depth_range.size() == 2 &&
+        !(std::isfinite(opts->depth_range[0]) && std::isfinite(opts->depth_range[1]) &&
+          opts->depth_range[0] <= opts->depth_range[1]))
+      throw CLI::ValidationError("--depth-range", "expects two finite numbers NEAR,FAR with NEAR <= FAR");
+    ctx.exit_code = run_import(*opts, *cmd);
+  });
 }
 
 }  // namespace rts::cli

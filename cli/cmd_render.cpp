@@ -248,7 +248,9 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
   if (cmd.count("--height")) opts.height = c.height;
   if (cmd.count("--samples")) opts.samples = c.samples;
   if (cmd.count("--max-depth")) opts.max_depth = c.max_depth;
-  opts.aovs = c.aovs;
+  // The scene's settings say which images a plain render writes; the command line overrides.
+  const render::Settings& st = ev.scene.settings;
+  opts.aovs = !c.aovs.empty() || video ? c.aovs : st.aovs;
   if (!c.sampler.empty()) {
     render::SamplerKind kind = render::SamplerKind::Sobol;
     render::parse_sampler(c.sampler, kind);  // CLI11 checked the name
@@ -263,8 +265,9 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
   opts.time_limit = c.time_limit;
   opts.max_memory = c.eval.limits.max_memory;
   if (!c.depth_range.empty()) opts.depth_range = std::make_pair(c.depth_range[0], c.depth_range[1]);
-  opts.depth_miss = c.depth_miss;
-  opts.normal_miss = c.normal_miss;
+  else if (st.has_depth_range) opts.depth_range = std::make_pair(st.depth_near, st.depth_far);
+  opts.depth_miss = cmd.count("--depth-miss") ? c.depth_miss : static_cast<float>(st.depth_miss);
+  opts.normal_miss = cmd.count("--normal-miss") ? c.normal_miss : static_cast<float>(st.normal_miss);
   opts.progress = progress_mode(c);
   opts.specialize = !c.no_specialize;
   if (dist) {

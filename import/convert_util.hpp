@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "import/import.hpp"
+#include "import/writer.hpp"
 
 namespace rts::import {
 
@@ -20,6 +21,17 @@ inline std::string relocate(const std::string& path, const ImportOptions& o) {
   std::error_code ec;
   fs::path rel = fs::relative(fs::absolute(full, ec), fs::absolute(out_dir, ec), ec);
   return ec || rel.empty() ? full.generic_string() : rel.generic_string();
+}
+
+// The extra images the options ask for, as settings properties ("  aov = ..." or empty):
+// depth mapped NEAR..FAR to black..white (misses black), normals as (n + 1) / 2 with
+// `normal_miss` where nothing is hit.
+inline std::string aov_settings(const ImportOptions& o, double normal_miss) {
+  std::string out;
+  if (!o.aovs.empty()) out += "  aov = " + rts_string(o.aovs);
+  if (o.has_depth_range) out += "  depth_range = [" + num(o.depth_near) + ", " + num(o.depth_far) + "]";
+  if (o.aovs.find("normal") != std::string::npos && normal_miss != 0) out += "  normal_miss = " + num(normal_miss);
+  return out;
 }
 
 // Rotation by `radians` about `axis` (right-handed), as a column-vector matrix m[row][col].

@@ -6,6 +6,13 @@
 //   Group { numObjects 1  MaterialIndex 0  Sphere { center 0 0 0  radius 1 } }
 // Shading: ambientLight * diffuse + Σ light * (diffuse (N·L) + specular (R·V)^exponent), so a
 // material becomes color = diffuseColor, ambient = 1, diffuse = 1.
+// The a2 starter's conventions (MIT 6.837, as reused by Fudan COMP130018): a PointLight's
+// `falloff` divides by falloff·d²; shadow rays only with -shadows; -bounces N adds
+// ks · I_reflected (the cube map is what reflected rays see); TriangleMesh vertex normals are
+// the mean of the faces' unit normals; the camera's image plane is built from the raw `up`;
+// no Background means a gray one and no ambient light; no lights means ambient white.
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include <fmt/format.h>
@@ -23,7 +30,14 @@ struct Mit {
   const ImportOptions& opt;
   SceneText& out;
   int materials = 0;
-  bool has_background = false;
+  int lights_seen = 0;
+  // The Background block's parts (a2's defaults: gray, no ambient light), written with the
+  // options as one settings line at the end.
+  glm::dvec3 background_color{0.5}, ambient{0.0};
+  std::string environment;
+
+  int width() const { return opt.width > 0 ? opt.width : 256; }     // MIT renders square images
+  int height() const { return opt.height > 0 ? opt.height : 256; }
 
   void camera(const std::string& kind) {
     tk.expect("{");
@@ -39,8 +53,7 @@ struct Mit {
       else tk.fail(key, fmt::format("unknown {} field '{}'", kind, key.text));
     }
     if (kind == "PerspectiveCamera") {
-      write_camera(out.top, center, center + direction, up, angle, FovAxis::Vertical,
-                   "MIT's angle spans the (square) image from top to bottom");
+      perspective(center, direction, up, angle);
     } else {
       out.top.line(fmt::format("camera {{ projection = \"orthographic\"  position = {}  look_at = {}  up = {}  "
                                "view_width = {}  handedness = \"right\" }}",
@@ -48,20 +61,51 @@ struct Mit {
     }
   }
 
+  // a2's camera: the ray through (x, y) in [-1, 1]² points along
+  //   ŵ / tan(angle/2) + x·normalize(direction × up) + y·up
+  // with `up` as written, so an up not perpendicular to the direction (or not of length 1)
+  // shears (or stretches) the image, and a non-square image is stretched. The same view as a
+  // look_at camera when none of that happens; else direction, right and up as given.
+  void perspective(const glm::dvec3& center, const glm::dvec3& direction, const glm::dvec3& up, double angle) {
+    const glm::dvec3 w = glm::normalize(direction);
+    const bool plain = std::abs(glm::dot(w, up)) <= 1e-12 * glm::length(up) &&
+                       std::abs(glm::length(up) - 1.0) <= 1e-12 && width() == height();
+    if (plain) {
+      write_camera(out.top, center, center + direction, up, angle, FovAxis::Vertical,
+                   "MIT's angle spans the (square) image from top to bottom");
+      return;
+    }
+    const double t = 2.0 * std::tan(angle * std::numbers::pi / 360.0);
+    const glm::dvec3 right = t * glm::normalize(glm::cross(direction, up));
+    out.top.line("// MIT a2's image plane from the raw up (not made perpendicular to the direction) and");
+    out.top.line(fmt::format("// [-1, 1] across each side of the {}x{} image: direction, right and up as given", width(),
+                             height()));
+    out.top.line(fmt::format("camera {{ position = {}  direction = {}  right = {}  up = {} }}", vec(center), vec(w),
+                             vec(right), vec(t * up)));
+  }
+
   void background() {
     tk.expect("{");
-    std::vector<std::string> parts;
     while (!tk.accept("}")) {
       Token key = tk.next();
-      if (key.text == "color") parts.push_back("background = " + rgb(tk.vec3()));
-      else if (key.text == "ambientLight") parts.push_back("ambient_light = " + rgb(tk.vec3()));
+      if (key.text == "color") background_color = tk.vec3();
+      else if (key.text == "ambientLight") ambient = tk.vec3();
       else if (key.text == "cubeMap")
-        parts.push_back("environment = cube_map { directory = " + rts_string(relocate(tk.word(), opt)) + " }");
+        // a2 reads the faces' bytes / 255, as the rest of its images.
+        environment = "environment = cube_map { directory = " + rts_string(relocate(tk.word(), opt)) +
+                      "  color_space = \"linear\" }";
       else tk.fail(key, fmt::format("unknown Background field '{}'", key.text));
     }
-    std::string line = "settings { width = 256  height = 256";   // MIT renders square images
-    for (const std::string& p : parts) line += "  " + p;
-    out.top.line(line + " }");
+  }
+
+  // One settings line: the image size, the Background block and what the options imply.
+  void settings() {
+    std::string line = fmt::format("settings {{ width = {}  height = {}  background = {}  ambient_light = {}", width(),
+                                   height(), rgb(background_color), rgb(lights_seen == 0 ? glm::dvec3(1) : ambient));
+    if (!environment.empty()) line += "  " + environment;
+    line += fmt::format("  max_depth = {}", opt.bounces);
+    line += aov_settings(opt, 127.0 / 255.0);   // a2's normal image: background gray 127
+    out.top.line(line + "  output_gamma = \"linear\" }");
   }
 
   void lights() {
@@ -79,15 +123,27 @@ struct Mit {
         else if (key.text == "position" && kind.text == "PointLight") position = tk.vec3();
         else if (key.text == "direction" && kind.text == "DirectionalLight") direction = tk.vec3();
         else if (key.text == "attenuation" && kind.text == "PointLight") attenuation = tk.vec3(), has_attenuation = true;
-        else tk.fail(key, fmt::format("unknown {} field '{}'", kind.text, key.text));
+        else if (key.text == "falloff" && kind.text == "PointLight") {
+          // a2: intensity = color / (falloff · d²).
+          const Token at = tk.peek();
+          const double falloff = tk.number();
+          if (!(falloff > 0)) tk.fail(at, fmt::format("PointLight falloff must be > 0 (intensity = color / (falloff "
+                                                      "· d²)), got {}", num(falloff)));
+          attenuation = glm::dvec3(0, 0, falloff);
+          has_attenuation = true;
+        } else tk.fail(key, fmt::format("unknown {} field '{}'", kind.text, key.text));
       }
+      // a2 casts shadow rays only with -shadows (--shadows).
+      const std::string shadows = opt.shadows ? "" : "  shadows = false";
       if (kind.text == "DirectionalLight")
-        out.world.line(fmt::format("directional_light {{ direction = {}  color = {} }}", vec(direction), rgb(color)));
+        out.world.line(fmt::format("directional_light {{ direction = {}  color = {}{} }}", vec(direction), rgb(color),
+                                   shadows));
       else if (kind.text == "PointLight")
-        out.world.line(fmt::format("point_light {{ position = {}  color = {}{} }}", vec(position), rgb(color),
-                                   has_attenuation ? "  attenuation = " + vec(attenuation) : ""));
+        out.world.line(fmt::format("point_light {{ position = {}  color = {}{}{} }}", vec(position), rgb(color),
+                                   has_attenuation ? "  attenuation = " + vec(attenuation) : "", shadows));
       else
         tk.fail(kind, fmt::format("unknown light '{}' (expected DirectionalLight or PointLight)", kind.text));
+      ++lights_seen;
     }
   }
 
@@ -95,15 +151,17 @@ struct Mit {
     tk.expect("{");
     std::vector<std::string> parts = {"ambient = 1", "diffuse = 1"};
     std::string color = "color = rgb(1)";
+    glm::dvec3 specular(0);
+    bool reflective = false;
     while (!tk.accept("}")) {
       Token key = tk.next();
       if (key.text == "diffuseColor") color = "color = " + rgb(tk.vec3());
       else if (key.text == "specularColor") {
-        const glm::dvec3 s = tk.vec3();
+        specular = tk.vec3();
         // A gray specularColor is a plain weight; a tinted one becomes a colored highlight.
-        parts.push_back("specular = " + specular_value(s));
+        parts.push_back("specular = " + specular_value(specular));
       } else if (key.text == "exponent" || key.text == "shininess") parts.push_back("shininess = " + num(tk.number()));
-      else if (key.text == "reflectiveColor") parts.push_back("reflect = " + rgb(tk.vec3()));
+      else if (key.text == "reflectiveColor") parts.push_back("reflect = " + rgb(tk.vec3())), reflective = true;
       else if (key.text == "transparentColor") parts.push_back("transmit = " + rgb(tk.vec3()));
       else if (key.text == "indexOfRefraction") parts.push_back("ior = " + num(tk.number()));
       else if (key.text == "texture")
@@ -113,6 +171,8 @@ struct Mit {
         parts.push_back("bump = image_texture { file = " + rts_string(relocate(tk.word(), opt)) + "  color_space = \"linear\" }");
       else tk.fail(key, fmt::format("unknown {} field '{}'", kind.text, key.text));
     }
+    // a2's -bounces: the mirror term is ks · I_reflected, ks the specular color.
+    if (opt.bounces > 0 && !reflective && specular != glm::dvec3(0)) parts.push_back("reflect = " + rgb(specular));
     out.top.comments(kind.comments);
     std::string line = fmt::format("let material{} = material {{ {}", materials++, color);
     std::string trailing;
@@ -174,7 +234,26 @@ struct Mit {
         else if (key.text == "XRotate") tk.next(), ops.push_back("rotate <" + num(tk.number()) + ", 0, 0>");
         else if (key.text == "YRotate") tk.next(), ops.push_back("rotate <0, " + num(tk.number()) + ", 0>");
         else if (key.text == "ZRotate") tk.next(), ops.push_back("rotate <0, 0, " + num(tk.number()) + ">");
-        else if (key.text == "Matrix") {
+        else if (key.text == "Rotate") {  // Rotate { axis degrees }
+          tk.next();
+          tk.expect("{");
+          const glm::dvec3 axis = tk.vec3();
+          const double degrees = tk.number();
+          tk.expect("}");
+          double m[4][4];
+          axis_angle(axis, degrees * std::numbers::pi / 180.0, m);
+          ops.push_back("matrix " + matrix_list(m));
+        } else if (key.text == "Matrix4f") {  // column by column (a2's parser fills m(i, j) with i fastest)
+          tk.next();
+          tk.expect("{");
+          double m[4][4];
+          for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i) m[i][j] = tk.number();
+          tk.expect("}");
+          // a2 multiplies it on the left of what came before (the others go on the right), so
+          // it applies after them: it goes before them in `ops`, which is reversed below.
+          ops.insert(ops.begin(), "matrix " + matrix_list(m));
+        } else if (key.text == "Matrix") {
           tk.next();
           tk.expect("{");
           double m[4][4];
@@ -232,7 +311,9 @@ struct Mit {
         else tk.fail(key, fmt::format("unknown TriangleMesh field '{}'", key.text));
       }
       if (file.empty()) tk.fail(kind, "TriangleMesh needs obj_file");
-      w.line(fmt::format("mesh {{ file = {}  smooth = false{} }}{}", rts_string(relocate(file, opt)), mat, suffix));
+      // a2 shades meshes smoothly with vertex normals averaged from the faces' unit normals.
+      w.line(fmt::format("mesh {{ file = {}  smooth_weights = \"equal\"{} }}{}", rts_string(relocate(file, opt)), mat,
+                         suffix));
     } else {
       tk.fail(kind, fmt::format("unknown object '{}' (expected Group, Transform, Sphere, Plane, Triangle or "
                                 "TriangleMesh)", kind.text));
@@ -250,7 +331,6 @@ struct Mit {
         tk.next();
         out.top.comments(kind.comments);
         background();
-        has_background = true;
       } else if (kind.text == "Lights") {
         tk.next();
         out.world.comments(kind.comments);
@@ -266,7 +346,7 @@ struct Mit {
                                   "Background, Materials or Group)", kind.text));
       }
     }
-    if (!has_background) out.top.line("settings { width = 256  height = 256 }   // MIT renders square images");
+    settings();
     out.world.comments(tk.trailing_comments());
   }
 };

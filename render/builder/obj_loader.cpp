@@ -395,12 +395,17 @@ void load_with_tinyobj(const std::string& path, const std::string& shown, Source
 
 }  // namespace
 
-void compute_smooth_normals(MeshData& mesh) {
+void compute_smooth_normals(MeshData& mesh, bool equal_weights) {
   mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f));
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
     // The cross product's length is twice the area: larger triangles weigh more.
     glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    if (equal_weights) {
+      const float len = glm::length(n);
+      if (!(len > kMinNormalLength)) continue;  // a degenerate face has no normal to give
+      n /= len;
+    }
     mesh.normals[a] += n;
     mesh.normals[b] += n;
     mesh.normals[c] += n;

@@ -25,7 +25,8 @@ struct ObjLimits {
 std::shared_ptr<MeshData> load_obj(const std::string& path, const std::string& shown, bool smooth, SourceRef where,
                                    const ObjLimits& limits = {});
 
-// Computes area-weighted per-vertex normals from the triangles (for smooth shading).
-void compute_smooth_normals(MeshData& mesh);
+// Computes per-vertex normals from the triangles (for smooth shading): each face weighted by
+// its area, or with `equal_weights` each face's unit normal counted once (MIT 6.837 a2's).
+void compute_smooth_normals(MeshData& mesh, bool equal_weights = false);
 
 }  // namespace rts::render

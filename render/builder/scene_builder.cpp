@@ -61,10 +61,12 @@ const std::vector<std::string_view> kSettingsNames = {"width",         "height",
                                                       "seed",          "sampler",     "environment",
                                                       "environment_ambient", "frames",
                                                       "integrator",    "fog_distance", "fog_color",
-                                                      "fog_offset",    "fog_altitude", "output_gamma"};
+                                                      "fog_offset",    "fog_altitude", "output_gamma",
+                                                      "aov",           "depth_range", "depth_miss",
+                                                      "normal_miss"};
 const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
                                                     "fov",        "fov_axis",   "handedness", "view_width",
-                                                    "aperture",   "focus_distance"};
+                                                    "aperture",   "focus_distance", "direction", "right"};
 const std::vector<std::string_view> kImageTextureNames = {"file", "mapping", "color_space", "filter"};
 const std::vector<std::string_view> kLatLongNames = {"file", "color_space", "filter"};
 const std::vector<std::string_view> kCubeMapNames = {"directory", "color_space", "filter"};
@@ -236,6 +238,39 @@ std::vector<std::string_view> SceneBuilder::block_kinds() {
   return out;
 }
 
+// The extra images `rts render` writes by default (its flags override them): AOVs, the depth
+// mapping, the miss values.
+void SceneBuilder::output_settings(ParamSet& ps, Settings& s) {
+  if (ps.has("aov")) {
+    const std::string list = ps.string("aov", "");
+    s.aovs.clear();
+    std::size_t start = 0;
+    while (start <= list.size()) {
+      std::size_t comma = list.find(',', start);
+      if (comma == std::string::npos) comma = list.size();
+      std::string name = list.substr(start, comma - start);
+      if (name != "normal" && name != "depth" && name != "albedo" && name != "error")
+        throw SceneError(loc_of(ps, "aov"), fmt::format("unknown AOV '{}' in property 'aov' of settings (expected a "
+                                                        "comma-separated list of normal, depth, albedo, error)",
+                                                        name));
+      s.aovs.push_back(name);
+      start = comma + 1;
+    }
+  }
+  if (const ParamValue* v = ps.value("depth_range")) {
+    const auto* range = std::get_if<std::vector<double>>(v);
+    if (!range || range->size() != 2 || !std::isfinite((*range)[0]) || !std::isfinite((*range)[1]) ||
+        (*range)[0] > (*range)[1])
+      throw SceneError(loc_of(ps, "depth_range"),
+                       "property 'depth_range' of settings expects [NEAR, FAR]: two finite numbers, NEAR <= FAR");
+    s.has_depth_range = true;
+    s.depth_near = (*range)[0];
+    s.depth_far = (*range)[1];
+  }
+  s.depth_miss = ps.number("depth_miss", s.depth_miss);
+  s.normal_miss = ps.number("normal_miss", s.normal_miss);
+}
+
 void SceneBuilder::settings(ParamSet& ps) {
   Settings& s = scene_.settings;
   s.width = ps.integer("width", s.width);
@@ -280,6 +315,7 @@ void SceneBuilder::settings(ParamSet& ps) {
             fmt::format("a whole number from 1 to {}", kMaxFrames), frames);
     s.frames = static_cast<int64_t>(frames);
   }
+  output_settings(ps, s);
   if (ps.has("integrator")) {
     std::string name = ps.string("integrator", "whitted");
     if (!parse_integrator(name, s.integrator))
@@ -309,6 +345,15 @@ void SceneBuilder::camera(ParamSet& ps) {
         loc_of(ps, "projection"),
         fmt::format("property 'projection' of camera must be \"perspective\" or \"orthographic\", got \"{}\"", proj));
   c.position = ps.vec3("position", c.position);
+  if (ps.has("direction")) {
+    given_vectors_camera(ps, c);
+    return;
+  }
+  if (ps.has("right"))
+    throw SceneError(loc_of(ps, "right"),
+                     "property 'right' of camera applies only with 'direction' (POV-Ray's camera: the image plane "
+                     "is direction + x·right + y·up); add 'direction' or remove 'right'");
+  c.given_vectors = false;
   c.look_at = ps.vec3("look_at", c.look_at);
   c.up = direction(ps, "up", ps.vec3("up", c.up));
   c.fov = ps.number("fov", c.fov);
@@ -330,6 +375,33 @@ void SceneBuilder::camera(ParamSet& ps) {
     ps.fail_block("camera position and look_at must differ");
   if (glm::length(glm::cross(glm::normalize(c.look_at - c.position), glm::normalize(c.up))) < kMinDirectionLength)
     ps.fail_block("camera up must not be parallel to the viewing direction");
+  c.loc = ps.loc();
+  scene_.has_camera = true;
+  ps.check_unused(kCameraNames);
+}
+
+// POV-Ray's camera: direction, right and up as given (not orthogonalised; their lengths set
+// the field of view and the aspect ratio). What only the look_at camera uses is an error here,
+// so a scene says one thing.
+void SceneBuilder::given_vectors_camera(ParamSet& ps, CameraDesc& c) {
+  for (std::string_view name : {"look_at", "fov", "fov_axis", "handedness", "view_width"})
+    if (ps.has(name))
+      throw SceneError(loc_of(ps, name),
+                       fmt::format("property '{}' of camera does not apply with 'direction': the image plane is "
+                                   "direction + x·right + y·up as given (their lengths set the view); "
+                                   "remove '{}' or 'direction'",
+                                   name, name));
+  c.given_vectors = true;
+  c.direction = direction(ps, "direction", ps.require_vec3("direction"));
+  c.right = direction(ps, "right", ps.vec3("right", c.right));
+  c.up = direction(ps, "up", ps.vec3("up", c.up));
+  c.aperture = non_negative(ps, "aperture", ps.number("aperture", c.aperture));
+  c.focus_distance = non_negative(ps, "focus_distance", ps.number("focus_distance", c.focus_distance));
+  const Vec3 r = glm::normalize(c.right), u = glm::normalize(c.up), d = glm::normalize(c.direction);
+  if (glm::length(glm::cross(r, u)) < kMinDirectionLength)
+    ps.fail_block("camera right and up must not be parallel: they span the image plane");
+  if (std::abs(glm::dot(d, glm::cross(r, u))) < kMinDirectionLength)
+    ps.fail_block("camera direction must not lie in the plane of right and up: the rays would not leave it");
   c.loc = ps.loc();
   scene_.has_camera = true;
   ps.check_unused(kCameraNames);
@@ -652,8 +724,14 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   } else if (kind == "mesh") {
     MeshRef g;
     g.smooth = ps.boolean("smooth", g.smooth);
+    const std::string weights = ps.string("smooth_weights", "area");
+    if (weights != "area" && weights != "equal")
+      throw SceneError(loc_of(ps, "smooth_weights"),
+                       fmt::format("property 'smooth_weights' of mesh must be \"area\" or \"equal\", got \"{}\"",
+                                   weights));
+    const bool equal_weights = weights == "equal";
     std::shared_ptr<MeshData> mesh;
-    std::optional<std::pair<std::string, bool>> obj_key;
+    std::optional<std::pair<std::string, int>> obj_key;
     if (ps.has("file")) {
       if (ps.has("vertices") || ps.has("faces"))
         ps.fail_block("mesh takes either 'file' or 'vertices' and 'faces', not both");
@@ -661,7 +739,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       std::string file = ps.string("file", "");
       std::string path = resolve_path(file, where);
       check_readable(path, file, "mesh file", where);
-      obj_key = std::make_pair(cache_key(path), g.smooth);
+      obj_key = std::make_pair(cache_key(path), g.smooth ? (equal_weights ? 2 : 1) : 0);
       // Errors quote lines of a malformed OBJ, so no other kind of file is read as one
       // (`file = "/etc/shadow"` must not show its lines). Checked after links are resolved.
       if (!is_obj_name(obj_key->first))
@@ -674,7 +752,8 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
         ObjLimits limits;
         limits.max_triangles = limits_.max_mesh_triangles - std::min(mesh_triangles_, limits_.max_mesh_triangles);
         limits.max_memory = limits_.max_memory;
-        mesh = load_obj(path, file, g.smooth, where, limits);
+        mesh = load_obj(path, file, g.smooth && !equal_weights, where, limits);
+        if (g.smooth && equal_weights && mesh->normals.empty()) compute_smooth_normals(*mesh, true);
       }
       for (std::string_view name : {"vertex_colors", "vertex_diffuse", "vertex_specular", "vertex_shininess"})
         if (ps.has(name))
@@ -699,7 +778,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       for (const Vec3& n : normals) mesh->normals.emplace_back(glm::normalize(n));
       for (const Vec3& f : faces)
         for (int k = 0; k < 3; ++k) mesh->indices.push_back(mesh_index(ps, f[k], vertices.size()));
-      if (normals.empty() && g.smooth) compute_smooth_normals(*mesh);
+      if (normals.empty() && g.smooth) compute_smooth_normals(*mesh, equal_weights);
       vertex_material(ps, vertices.size(), *mesh);
     }
     if (mesh) warn_degenerate(*mesh, ps.loc(), scene_.warnings);

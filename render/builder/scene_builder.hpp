@@ -44,6 +44,8 @@ class SceneBuilder {
 
   void settings(ParamSet& params);                            // may be called more than once;
   void camera(ParamSet& params);                              // later values override
+  void given_vectors_camera(ParamSet& params, CameraDesc& c);  // camera { direction right up }
+  void output_settings(ParamSet& params, Settings& s);         // settings { aov depth_range ... }
   TextureId texture(std::string_view kind, ParamSet& params, const Mat4& transform = Mat4(1.0));
   MaterialId material(ParamSet& params);
   NodeId shape(std::string_view kind, ParamSet& params);      // not placed yet
@@ -76,7 +78,8 @@ class SceneBuilder {
   std::size_t mesh_triangles_ = 0;
   // OBJ files already loaded, by (absolute resolved path, smooth): every `mesh { file }` naming
   // the same file shares one MeshId, so the file is read once and one BVH is built for it.
-  std::map<std::pair<std::string, bool>, MeshId> obj_meshes_;
+  // (file, shading): 0 flat, 1 smooth by area, 2 smooth by equal weights.
+  std::map<std::pair<std::string, int>, MeshId> obj_meshes_;
 };
 
 }  // namespace rts::render

@@ -157,11 +157,16 @@ void print_summary(std::ostream& out, const SceneDesc& scene, const SceneSummary
   else
     out << fmt::format("bounds:     none{}\n", s.unbounded ? " (only unbounded planes)" : "");
   const CameraDesc& c = scene.camera;
-  out << fmt::format("camera:     {}{} at {} looking at {}, {}\n",
-                     c.projection == Projection::Perspective ? "perspective" : "orthographic",
-                     scene.has_camera ? "" : " (default)", vec(c.position), vec(c.look_at),
-                     c.projection == Projection::Perspective ? fmt::format("fov {}", num(c.fov))
-                                                                     : fmt::format("view width {}", num(c.view_width)));
+  if (c.given_vectors)
+    out << fmt::format("camera:     {} at {}, direction {} right {} up {} (as given)\n",
+                       c.projection == Projection::Perspective ? "perspective" : "orthographic", vec(c.position),
+                       vec(c.direction), vec(c.right), vec(c.up));
+  else
+    out << fmt::format("camera:     {}{} at {} looking at {}, {}\n",
+                       c.projection == Projection::Perspective ? "perspective" : "orthographic",
+                       scene.has_camera ? "" : " (default)", vec(c.position), vec(c.look_at),
+                       c.projection == Projection::Perspective ? fmt::format("fov {}", num(c.fov))
+                                                               : fmt::format("view width {}", num(c.view_width)));
   const Settings& st = scene.settings;
   out << fmt::format("image:      {}x{}, {} sample{} per pixel, max depth {}\n", st.width, st.height, st.samples,
                      st.samples == 1 ? "" : "s", st.max_depth);

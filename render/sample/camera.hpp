@@ -1,6 +1,7 @@
 // Pinhole / thin-lens perspective and orthographic cameras (left-handed view, POV-Ray's):
 // right = normalize(cross(up, forward)), or its opposite for a right-handed camera (OpenGL's,
 // the courses'). Image aspect comes from width/height; fov spans the width, or the height.
+// Or POV-Ray's camera: direction, right and up as given (CameraDesc::given_vectors).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -21,8 +22,11 @@ class Camera {
   Vec3 forward() const { return forward_; }
 
  private:
+  void given_vectors(const CameraDesc& desc);  // POV-Ray's direction/right/up, as given
+
   Projection projection_;
   Vec3 position_, forward_, right_, up_;
+  Vec3 lens_right_, lens_up_;        // unit vectors spanning the lens (depth of field)
   double half_width_, half_height_;  // perspective: at distance 1; orthographic: scene units
   double inv_width_, inv_height_;
   double lens_radius_ = 0.0;

@@ -215,6 +215,13 @@ struct CameraDesc {
   double view_width = 4.0;         // orthographic: width of the view in scene units
   double aperture = 0.0;           // > 0: depth of field (lens diameter)
   double focus_distance = 0.0;     // 0: distance to look_at
+  // POV-Ray's camera: with `direction` given, the image plane is direction + x·right + y·up
+  // (x, y from -1/2 to 1/2 across the image), the three vectors taken as given: not
+  // orthogonalised, their lengths setting the field of view and the aspect ratio; look_at,
+  // fov, fov_axis and handedness do not apply. Orthographic: right and up span the view.
+  bool given_vectors = false;
+  Vec3 direction{0, 0, 1};
+  Vec3 right{4.0 / 3.0, 0, 0};
   SourceRef loc;
 };
 
@@ -263,6 +270,12 @@ struct Settings {
   // settings { output_gamma = "linear" }: PNG output stores linear values (as --linear), the
   // way POV-Ray writes a scene without assumed_gamma 1.0. "srgb" (the default) encodes sRGB.
   bool output_linear = false;
+  // Which extra images `rts render` writes unless its command line says otherwise (--aov,
+  // --depth-range, --depth-miss, --normal-miss): a course scene's images from a plain render.
+  std::vector<std::string> aovs;   // "normal", "depth", "albedo", "error"
+  bool has_depth_range = false;
+  double depth_near = 0.0, depth_far = 1.0;
+  double depth_miss = 0.0, normal_miss = 0.0;
   SourceRef loc;
 };
 

@@ -142,6 +142,13 @@ void SceneDesc::dump(std::ostream& out) const {
   if (s.environment != kNoId)
     out << fmt::format(" environment texture {} environment_ambient {}", s.environment, yes(s.environment_ambient));
   if (s.integrator != IntegratorKind::Whitted) out << " integrator " << integrator_name(s.integrator);
+  if (!s.aovs.empty()) {
+    out << " aov";
+    for (const std::string& a : s.aovs) out << ' ' << a;
+  }
+  if (s.has_depth_range) out << fmt::format(" depth_range {} {}", num(s.depth_near), num(s.depth_far));
+  if (s.depth_miss != 0 || s.normal_miss != 0)
+    out << fmt::format(" depth_miss {} normal_miss {}", num(s.depth_miss), num(s.normal_miss));
   if (s.fog_distance > 0)
     out << fmt::format(" fog distance {} color {} offset {} altitude {}", num(s.fog_distance), col(s.fog_color),
                        num(s.fog_offset), num(s.fog_altitude));
@@ -152,6 +159,8 @@ void SceneDesc::dump(std::ostream& out) const {
                      c.projection == Projection::Perspective ? "perspective" : "orthographic", vec(c.position),
                      vec(c.look_at), vec(c.up), num(c.fov), num(c.view_width), num(c.aperture), num(c.focus_distance),
                      c.fov_vertical ? " fov_axis vertical" : "", c.right_handed ? " handedness right" : "");
+  if (c.given_vectors)  // appended, so the dumps of look_at cameras stay as they were
+    out << fmt::format("  as given: direction {} right {} up {}\n", vec(c.direction), vec(c.right), vec(c.up));
   out << fmt::format("textures {}\n", textures.size());
   for (std::size_t i = 0; i < textures.size(); ++i) {
     const TextureDesc& t = textures[i];

@@ -2,6 +2,7 @@
 // relative indices and located errors, checked against hand-computed meshes.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -74,4 +75,25 @@ TEST_CASE("OBJ errors name the file's own line", "[obj]") {
   // The last line may lack its newline; a leading '+' is a number as in C++ streams.
   auto m = load_obj(write_obj("ok", "v +1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3"), "m.obj", false, SourceRef{});
   CHECK(m->positions[0].x == 1.0f);
+}
+
+TEST_CASE("smooth normals: by area, or each face's unit normal once (MIT a2)", "[obj]") {
+  // Two faces meet at vertex 0: a big one in the xy-plane (normal +z, area 8) and a small one in
+  // the xz-plane (normal -y, area 0.5).
+  MeshData mesh;
+  mesh.positions = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, -1}, {1, 0, 0}};
+  mesh.indices = {0, 1, 2, 0, 3, 4};
+  compute_smooth_normals(mesh);
+  const glm::vec3 area = mesh.normals[0];
+  // Area-weighted: (0, -1·2·0.5, 1·2·8) normalised = (0, -1, 16) / |..|.
+  CHECK(area.y == Approx(-1.0 / std::sqrt(257.0)));
+  CHECK(area.z == Approx(16.0 / std::sqrt(257.0)));
+  compute_smooth_normals(mesh, true);
+  const glm::vec3 equal = mesh.normals[0];
+  // Equal weights: (0, -1, 1) / sqrt(2), whatever the areas.
+  CHECK(equal.y == Approx(-1.0 / std::sqrt(2.0)));
+  CHECK(equal.z == Approx(1.0 / std::sqrt(2.0)));
+  CHECK(equal.x == Approx(0.0).margin(1e-7));
+  // A vertex of one face only keeps that face's normal either way.
+  CHECK(mesh.normals[2].z == Approx(1.0));
 }

@@ -15,6 +15,8 @@ struct ShapeTraits<MeshRef> {
        "A Wavefront OBJ file (relative to the scene file); faces are triangulated, `vn` normals and `vt` uvs kept. Give `file` or `vertices` + `faces`, not both."},
       {"smooth", "bool", "`true`",
        "Smooth shading: the file's or given normals, or normals averaged from the faces when there are none. `false`: flat faces."},
+      {"smooth_weights", "string", "`\"area\"`",
+       "How faces are averaged into vertex normals when the mesh has none: `\"area\"` weighs each face by its area; `\"equal\"` averages the faces' unit normals (MIT 6.837 a2's)."},
       {"vertices", "list of vectors", "—", "Inline positions."},
       {"faces", "list of vectors", "—",
        "Inline triangles, each `<i, j, k>`: indices into `vertices`, from 0."},
