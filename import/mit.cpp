@@ -91,9 +91,9 @@ struct Mit {
       if (key.text == "color") background_color = tk.vec3();
       else if (key.text == "ambientLight") ambient = tk.vec3();
       else if (key.text == "cubeMap")
-        // a2 reads the faces' bytes / 255, as the rest of its images.
+        // a2 reads the faces' bytes / 255, as the rest of its images, and orients them its own way.
         environment = "environment = cube_map { directory = " + rts_string(relocate(tk.word(), opt)) +
-                      "  color_space = \"linear\" }";
+                      "  color_space = \"linear\"  orientation = \"mit\" }";
       else tk.fail(key, fmt::format("unknown Background field '{}'", key.text));
     }
   }

@@ -69,7 +69,7 @@ const std::vector<std::string_view> kCameraNames = {"projection", "position",   
                                                     "aperture",   "focus_distance", "direction", "right"};
 const std::vector<std::string_view> kImageTextureNames = {"file", "mapping", "color_space", "filter"};
 const std::vector<std::string_view> kLatLongNames = {"file", "color_space", "filter"};
-const std::vector<std::string_view> kCubeMapNames = {"directory", "color_space", "filter"};
+const std::vector<std::string_view> kCubeMapNames = {"directory", "color_space", "filter", "orientation"};
 const std::vector<std::string_view> kCheckerNames = {"color1", "color2", "scale"};
 const std::vector<std::string_view> kPatternTextureNames = {"color1", "color2", "scale", "axis"};
 const std::vector<std::string_view> kMaterialNames = {"color",    "texture",  "emission",  "ambient",
@@ -439,6 +439,12 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
     t.face_paths = cube_map_faces(dir, shown, loc_of(ps, "directory"));
     for (const std::string& face : t.face_paths) check_readable(face, face, "cube_map face", loc_of(ps, "directory"));
     image_options();
+    const std::string orientation = ps.string("orientation", "rts");
+    if (orientation != "rts" && orientation != "mit")
+      throw SceneError(loc_of(ps, "orientation"),
+                       fmt::format("property 'orientation' of cube_map must be \"rts\" or \"mit\", got \"{}\"",
+                                   orientation));
+    t.cube_mit = orientation == "mit";
     ps.check_unused(kCubeMapNames);
   } else if (kind == "image_texture") {
     t.kind = TextureKind::Image;

@@ -65,6 +65,9 @@ struct TextureDesc {
   TextureFilter filter = TextureFilter::Bilinear;
   // CubeMap: the faces' files in the order +x, -x, +y, -y, +z, -z, resolved like image_path.
   std::vector<std::string> face_paths;
+  // CubeMap: the faces as MIT 6.837 a2's CubeMap reads them (the +x, -x and +z faces mirrored
+  // left-right, +y top-bottom) instead of rts's upright, unmirrored faces.
+  bool cube_mit = false;
   PatternDesc pattern;       // Pattern: which one, its turbulence, wave and color map
   Mat4 transform{1.0};       // object space → texture space is inverse(transform)
   SourceRef loc;

@@ -169,9 +169,10 @@ void SceneDesc::dump(std::ostream& out) const {
       out << fmt::format(" file {} mapping {}", base(t.image_path), t.mapping);
     else if (t.kind == TextureKind::LatLong)
       out << fmt::format(" file {}", base(t.image_path));
-    else if (t.kind == TextureKind::CubeMap)
+    else if (t.kind == TextureKind::CubeMap) {
       for (const std::string& f : t.face_paths) out << ' ' << base(f);
-    else if (t.kind == TextureKind::Pattern)
+      if (t.cube_mit) out << " orientation mit";
+    } else if (t.kind == TextureKind::Pattern)
       out << fmt::format(" {} color_map {} turbulence {}{}", static_cast<int>(t.pattern.kind), t.pattern.color_map.size(),
                          vec(t.pattern.turbulence), t.pattern.function ? " function" : "");
     else

@@ -14,6 +14,7 @@
 //  - cube_map: six faces, each seen upright and unmirrored from inside the cube (rts's
 //              left-handed view: +z front, +x right, +y up); the +y face's bottom edge meets
 //              the +z face's top edge, the -y face's top edge meets its bottom edge.
+//              orientation = "mit" reads the faces as MIT 6.837 a2 does (see cube_face).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -101,7 +102,9 @@ Color sample_nearest(const Image& image, double u, double v) {
 }
 
 // The face (0..5 = +x, -x, +y, -y, +z, -z) a direction points at and its (u, v) on that face.
-int cube_face(const Vec3& d, glm::dvec2& uv) {
+// `mit`: MIT 6.837 a2's reading of the faces, which mirrors +x, -x and +z left-right and +y
+// top-bottom against rts's (its course scenes were made with it).
+int cube_face(const Vec3& d, glm::dvec2& uv, bool mit) {
   const Vec3 a = glm::abs(d);
   int face;
   double s, t, m;
@@ -120,6 +123,10 @@ int cube_face(const Vec3& d, glm::dvec2& uv) {
     face = d.z > 0 ? 4 : 5;
     s = d.z > 0 ? d.x : -d.x;
     t = d.y;
+  }
+  if (mit) {
+    if (face == 0 || face == 1 || face == 4) s = -s;
+    if (face == 2) t = -t;
   }
   if (!(m > 0.0)) m = 1.0;   // the zero vector: the face centre
   // Clamped inside the face: bilinear filtering wraps, so keep half a texel... away by
@@ -182,7 +189,7 @@ double CompiledTexture::texel_size() const {
 Color CompiledTexture::lookup_direction(const Vec3& d) const {
   if (desc_.kind == TextureKind::CubeMap) {
     glm::dvec2 uv;
-    const int face = cube_face(d, uv);
+    const int face = cube_face(d, uv, desc_.cube_mit);
     const Image& image = *images_[face];
     // Keep bilinear filtering from wrapping to the opposite edge of the face.
     const double hu = 0.5 / image.width, hv = 0.5 / image.height;

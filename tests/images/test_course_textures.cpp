@@ -126,6 +126,27 @@ TEST_CASE("a cube map shows each face along its axis, upright and unmirrored", "
   }
 }
 
+TEST_CASE("a cube map with orientation mit reads the faces as MIT 6.837 a2 does", "[texture][environment]") {
+  TextureDesc d = cube("cube_mit", kMitNames, ".bmp");
+  d.cube_mit = true;
+  const CompiledTexture env = compile_one(d);
+  // The same face along each axis...
+  check_color(env.eval_direction({1, 0, 0}), kRed, 1e-6);
+  check_color(env.eval_direction({0, 1, 0}), kGreen, 1e-6);
+  check_color(env.eval_direction({0, 0, 1}), kBlue, 1e-6);
+  // ...but a2's texel lookup: u = (z/x + 1)/2 on right, (z/x + 1)/2 on left (x < 0), v = (z/y + 1)/2
+  // on up, u = 1 - (x/z + 1)/2 on front; back and down as rts's. The white marker is each
+  // image's top-left corner (u = 0, v = 1).
+  const Color white(1.0);
+  check_color(env.eval_direction({0.8, 0.8, 1}), white, 1e-6);     // front: mirrored left-right
+  check_color(env.eval_direction({0.8, 0.8, -1}), white, 1e-6);    // back: as rts's
+  check_color(env.eval_direction({1, 0.8, -0.8}), white, 1e-6);    // right: mirrored
+  check_color(env.eval_direction({-1, 0.8, 0.8}), white, 1e-6);    // left: mirrored
+  check_color(env.eval_direction({-0.8, 1, 0.8}), white, 1e-6);    // up: mirrored top-bottom
+  check_color(env.eval_direction({-0.8, -1, 0.8}), white, 1e-6);   // down: as rts's
+  check_color(env.eval_direction({-0.8, 0.8, 1}), kBlue, 1e-6);    // rts's front corner is not
+}
+
 TEST_CASE("a latitude-longitude map: +z at the centre column, +x to its right, +y at the top",
           "[texture][environment]") {
   const CompiledTexture env = compile_one(file_texture(TextureKind::LatLong, "bands.png"));
