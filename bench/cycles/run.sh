@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# rts's path tracer against Blender's Cycles (issue 19): the same four scenes rendered by both,
+# compared block by block with a z-test, then the CPU time each needs to reach the same error on
+# the Cornell box. Needs `scripts/ensure-deps --bench` (blender, python3-numpy) and a built rts.
+#
+#   bench/cycles/run.sh [OUTDIR] [SAMPLES] [SEEDS]      (defaults: build/cycles 256 4)
+#
+# Everything runs on one thread under `nice` (the comparison is per CPU second, and the build
+# machine is shared). Outputs: OUTDIR/<scene>.sbs.png (rts | Cycles | 4x |difference|), the
+# comparison lines, and OUTDIR/timing.txt.
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+OUT=${1:-$ROOT/build/cycles}
+SPP=${2:-256}
+SEEDS=${3:-4}
+RTS=${RTS:-$ROOT/build/cli/rts}
+PY=/usr/bin/python3   # Debian's, with numpy (a pyenv python may lack it)
+mkdir -p "$OUT"
+cd "$OUT"
+$PY "$ROOT/bench/cycles/scenes.py" "$OUT"
+
+cycles() {  # scene out.pfm samples seed -> prints "wall cpu" of the render call
+  nice blender -b --factory-startup -P "$ROOT/bench/cycles/scenes.py" -- "$1" "$2" "$3" "$4" 1 2>&1 |
+    awk '/^cycles_render_seconds/ { print $2, $3 }'
+}
+rts_cpu() {  # scene out.pfm samples seed -> prints the process's CPU seconds
+  /usr/bin/time -f '%U %S' -o rts_time.txt nice "$RTS" render "$1.rts" -o "$2" --samples "$3" --seed "$4" \
+    --threads 1 --no-progress 2>/dev/null
+  awk '{ print $1 + $2 }' rts_time.txt
+}
+
+for scene in cornell caustic rough_metal env_lit; do
+  a=(); b=()
+  for ((s = 0; s < SEEDS; s++)); do
+    rts_cpu "$scene" "$scene.rts.$s.pfm" "$SPP" "$((s + 1))" > /dev/null
+    cycles "$scene" "$scene.cy.$s.pfm" "$SPP" "$((s + 1))" > /dev/null
+    a+=("$scene.rts.$s.pfm"); b+=("$scene.cy.$s.pfm")
+  done
+  $PY "$ROOT/bench/cycles/compare.py" --name "$scene" --a "${a[@]}" --b "${b[@]}" --png "$scene.sbs.png"
+done | tee compare.txt
+
+# Equal error on the Cornell box: the reference is the mean of every render above (rts's and
+# Cycles', which agree); each engine renders with fresh seeds at 16, 64 and 256 spp.
+{
+  echo "spp engine cpu_s rmse"
+  for spp in 16 64 256; do
+    echo "$spp rts $(rts_cpu cornell t.rts.$spp.pfm $spp 101) $($PY "$ROOT/bench/cycles/rmse.py" t.rts.$spp.pfm cornell.rts.*.pfm cornell.cy.*.pfm)"
+    echo "$spp cycles $(cycles cornell t.cy.$spp.pfm $spp 101 | cut -d' ' -f2) $($PY "$ROOT/bench/cycles/rmse.py" t.cy.$spp.pfm cornell.rts.*.pfm cornell.cy.*.pfm)"
+  done
+} | tee timing.txt
