@@ -16,7 +16,7 @@ void store_rgb(float* px, const Vec3& v) {
 
 }  // namespace
 
-PixelEstimate estimate_pixel(const PixelAccum& acc, int batches) {
+PixelEstimate estimate_pixel_batches(const PixelAccum& acc, int batches, int first, int count) {
   PixelEstimate e;
   if (acc.taken == 0) return e;
   const double n = acc.taken;
@@ -24,16 +24,30 @@ PixelEstimate estimate_pixel(const PixelAccum& acc, int batches) {
   for (int k = 0; k < batches; ++k) total += Rgb(acc.sum[k][0], acc.sum[k][1], acc.sum[k][2]);
   e.value = total / n;
   int filled = 0;
-  Rgb spread(0.0);
-  for (int k = 0; k < batches; ++k) {
+  double subset_n = 0;
+  Rgb subset_sum(0.0);
+  for (int k = first; k < first + count; ++k) {
     if (acc.count[k] == 0) continue;
     ++filled;
+    subset_n += acc.count[k];
+    subset_sum += Rgb(acc.sum[k][0], acc.sum[k][1], acc.sum[k][2]);
+  }
+  if (filled < 2) return e;
+  const Rgb subset_mean = subset_sum / subset_n;
+  Rgb spread(0.0);
+  for (int k = first; k < first + count; ++k) {
+    if (acc.count[k] == 0) continue;
     Rgb m = Rgb(acc.sum[k][0], acc.sum[k][1], acc.sum[k][2]) / static_cast<double>(acc.count[k]);
-    Rgb d = m - e.value;
+    Rgb d = m - subset_mean;
     spread += static_cast<double>(acc.count[k]) * d * d;
   }
-  if (filled >= 2) e.variance = spread / (n * (filled - 1));
+  // Variance of the subset's mean, times n_subset / N for the mean of all samples.
+  e.variance = spread / (subset_n * (filled - 1)) * (subset_n / n);
   return e;
+}
+
+PixelEstimate estimate_pixel(const PixelAccum& acc, int batches) {
+  return estimate_pixel_batches(acc, batches, 0, batches);
 }
 
 void PixelRenderer::add_samples(int x, int y, uint32_t count, PixelAccum& acc, RayCounters& counters) const {
@@ -65,7 +79,8 @@ void PixelRenderer::add_samples(int x, int y, uint32_t count, PixelAccum& acc, R
 }
 
 void PixelRenderer::store(int x, int y, const PixelAccum& acc, Frame& frame, RayCounters& counters) const {
-  PixelEstimate e = estimate_pixel(acc, static_cast<int>(batches_));
+  PixelEstimate e = estimate_pixel_batches(acc, static_cast<int>(batches_), report_first_,
+                                           static_cast<int>(batches_) - report_first_);
   store_rgb(frame.color->at(x, y), e.value);
   std::size_t i = frame.index(x, y);
   for (int c = 0; c < 3; ++c) (*frame.variance)[i * 3 + c] = static_cast<float>(e.variance[c]);

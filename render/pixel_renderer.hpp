@@ -35,13 +35,22 @@ struct PixelEstimate {
 // variance falls as 1/n_k.
 PixelEstimate estimate_pixel(const PixelAccum& acc, int batches);
 
+// The same from the spread of batches [first, first + count) alone, scaled to the variance of
+// the mean of all samples (n_subset / N: every batch draws the same distribution). Adaptive
+// sampling plans from batches 0 and 1 and reports from 2 and 3, so the pixels it stops because
+// their planning estimate happened to be low do not report that low estimate: the reported
+// one comes from samples the stopping rule never saw.
+PixelEstimate estimate_pixel_batches(const PixelAccum& acc, int batches, int first, int count);
+
 class PixelRenderer {
  public:
   // `centre_single`: a pixel's only sample goes through its centre (1 spp, no error estimate).
+  // `report_first`: the first batch whose spread the stored error estimate uses (0: all;
+  // adaptive sampling reports from the batches its planner does not see).
   PixelRenderer(const Camera& camera, const Integrator& integrator, SamplePattern pattern, int batches,
-                bool centre_single)
+                bool centre_single, int report_first = 0)
       : camera_(camera), integrator_(integrator), pattern_(pattern),
-        batches_(static_cast<uint32_t>(batches)), centre_single_(centre_single) {}
+        batches_(static_cast<uint32_t>(batches)), centre_single_(centre_single), report_first_(report_first) {}
 
   // Adds `count` more samples of pixel (x, y) to `acc`.
   void add_samples(int x, int y, uint32_t count, PixelAccum& acc, RayCounters& counters) const;
@@ -57,6 +66,7 @@ class PixelRenderer {
   SamplePattern pattern_;
   uint32_t batches_;
   bool centre_single_;
+  int report_first_;
 };
 
 }  // namespace rts::render

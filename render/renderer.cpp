@@ -129,18 +129,36 @@ void describe(const PreparedScene& prep, const FeatureSet& features, const Frame
 // Independent interleaved batches per pixel (see PixelRenderer): two halves (as Dammertz et
 // al. 2010 and Cycles) keep each batch's stratification as fine as possible; four from 32 spp
 // give steadier per-pixel estimates (3 degrees of freedom instead of 1). Adaptive sampling
-// keeps two: splitting a Sobol sequence into more batches costs more error than the steadier
-// estimate saves (its planner smooths the estimates over 3x3 pixels instead).
+// takes four when it may reach 16 spp: its planner sees batches 0 and 1, the reported error
+// comes from 2 and 3 (kAdaptiveReportFirst), so stopping a pixel whose planning estimate was
+// low by chance does not make the reported error low too.
+constexpr int kAdaptiveReportFirst = 2;
 int batch_count(int samples, bool adaptive) {
   if (samples < 2) return 1;
-  if (adaptive) return 2;
+  if (adaptive) return samples >= 16 ? 4 : 2;
   return samples >= 32 && samples % 4 == 0 ? 4 : 2;
 }
 
-// Samples per pixel at the end of each progressive pass: one per batch, then doubling.
-std::vector<uint32_t> pass_schedule(uint32_t samples, uint32_t batches) {
+// The adaptive loop's estimates: per pixel the planner's (batches 0 and 1, or all when there
+// are only two), and the image MSE that the stopping rule and the report use (batches 2 and 3).
+double adaptive_estimates(const std::vector<PixelAccum>& accs, int batches, std::vector<PixelEstimate>& plan,
+                          std::vector<uint32_t>& taken) {
+  const bool split = batches == 4;
+  double mse = 0;
+  for (std::size_t i = 0; i < accs.size(); ++i) {
+    plan[i] = estimate_pixel_batches(accs[i], batches, 0, split ? kAdaptiveReportFirst : batches);
+    const PixelEstimate reported =
+        split ? estimate_pixel_batches(accs[i], batches, kAdaptiveReportFirst, batches - kAdaptiveReportFirst) : plan[i];
+    taken[i] = accs[i].taken;
+    mse += (reported.variance.x + reported.variance.y + reported.variance.z) / 3.0;
+  }
+  return mse / static_cast<double>(std::max<std::size_t>(accs.size(), 1));
+}
+
+// Samples per pixel at the end of each progressive pass: `first`, then doubling.
+std::vector<uint32_t> pass_schedule(uint32_t samples, uint32_t first) {
   std::vector<uint32_t> goals;
-  for (uint32_t g = batches; g < samples; g *= 2) goals.push_back(g);
+  for (uint32_t g = first; g < samples; g *= 2) goals.push_back(g);
   goals.push_back(samples);
   return goals;
 }
@@ -227,11 +245,24 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   const bool progressive = adaptive || (options.time_limit > 0 && rs.samples >= 2);
   const int batches = batch_count(rs.samples, adaptive);
   const uint32_t spp = static_cast<uint32_t>(rs.samples);
-  // Adaptive rendering starts with 4 samples per batch everywhere.
-  const uint32_t first_goal = adaptive ? std::min<uint32_t>(spp, 4u * batches) : spp;
+  // Adaptive rendering starts with 8 samples per pixel everywhere (4 per batch of 2, or 2 per
+  // batch of 4: each batch's Sobol sequence goes on where it stopped, so the first pass may be
+  // small without cutting the stratification of later rounds).
+  const uint32_t first_goal = adaptive ? std::min<uint32_t>(spp, 8u) : spp;
   SamplePattern pattern{rs.sampler, rs.seed,
                         (first_goal + static_cast<uint32_t>(batches) - 1) / static_cast<uint32_t>(batches)};
-  PixelRenderer pixels(camera, integrator, pattern, batches, rs.samples == 1);
+  // The uniform passes before any adaptive round: one per batch, then doubling. Under a time
+  // limit they start at two samples per pixel (the fewest that give an error estimate), since
+  // the first pass always completes (every pixel needs a value) and a first pass of 4 spp
+  // overran short limits by a quarter. Each pixel takes the same samples in the same order
+  // whatever the passes, so the image does not depend on them.
+  const uint32_t first_pass = options.time_limit > 0 ? std::min(2u, static_cast<uint32_t>(batches))
+                                                     : static_cast<uint32_t>(batches);
+  const std::vector<uint32_t> first_passes =
+      adaptive && !(options.time_limit > 0) ? std::vector<uint32_t>{first_goal}
+                                            : pass_schedule(adaptive ? first_goal : spp, first_pass);
+  PixelRenderer pixels(camera, integrator, pattern, batches, rs.samples == 1,
+                       adaptive && batches == 4 ? kAdaptiveReportFirst : 0);
 
   RenderStats& stats = result.stats;
   stats.width = rs.width;
@@ -261,8 +292,10 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   err.batches = batches;
   err.target_error = options.target_error;
   err.time_limit = options.time_limit;
-  err.method = batches >= 2 ? fmt::format("spread of {} independent interleaved batch means per pixel", batches)
-                            : "none (1 sample per pixel)";
+  err.method = batches < 2 ? "none (1 sample per pixel)"
+               : adaptive && batches == 4
+                   ? "spread of 2 of 4 independent interleaved batch means per pixel (the adaptive planner sees the other 2)"
+                   : fmt::format("spread of {} independent interleaved batch means per pixel", batches);
 
   // Square tiles, handed out dynamically: each pixel's result depends only on its own
   // coordinates (and, when adaptive, on the plan made between rounds from the whole image),
@@ -392,7 +425,7 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
       while (ex.another_round(false)) run_round();
     } else {
       // The same passes and stopping rules as one process (the last branch below).
-      const std::vector<uint32_t> goals = adaptive ? std::vector<uint32_t>{first_goal} : pass_schedule(spp, batches);
+      const std::vector<uint32_t> goals = first_passes;
       for (std::size_t p = 0; p < goals.size(); ++p) {
         if (p > 0 && check_time()) break;
         for (std::size_t i = 0; i < count; ++i) add[i] = goals[p] - accs[i].taken;
@@ -404,13 +437,7 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
         std::vector<PixelEstimate> est(count);
         std::vector<uint32_t> taken(count);
         while (!check_time()) {
-          double mse = 0;
-          for (std::size_t i = 0; i < count; ++i) {
-            est[i] = estimate_pixel(accs[i], batches);
-            taken[i] = accs[i].taken;
-            mse += (est[i].variance.x + est[i].variance.y + est[i].variance.z) / 3.0;
-          }
-          if (mse / static_cast<double>(count) <= target_mse) {
+          if (adaptive_estimates(accs, batches, est, taken) <= target_mse) {
             err.target_reached = true;
             break;
           }
@@ -455,7 +482,7 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
       return out_of_time.load();
     };
     // Uniform passes; the first always completes so every pixel has a value.
-    std::vector<uint32_t> goals = adaptive ? std::vector<uint32_t>{first_goal} : pass_schedule(spp, batches);
+    const std::vector<uint32_t> goals = first_passes;
     Progress progress(static_cast<std::size_t>(tile_count) * goals.size(), options.progress);
     for (std::size_t p = 0; p < goals.size(); ++p) {
       if (p > 0 && check_time()) break;
@@ -477,13 +504,7 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
       std::vector<PixelEstimate> est(count);
       std::vector<uint32_t> taken(count);
       while (!check_time()) {
-        double mse = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-          est[i] = estimate_pixel(accs[i], batches);
-          taken[i] = accs[i].taken;
-          mse += (est[i].variance.x + est[i].variance.y + est[i].variance.z) / 3.0;
-        }
-        if (mse / static_cast<double>(count) <= target_mse) {
+        if (adaptive_estimates(accs, batches, est, taken) <= target_mse) {
           err.target_reached = true;
           break;
         }

@@ -50,7 +50,7 @@ PY
 # samples each pixel takes), the image, the error AOV and the error estimate are one process's
 # for any rank count.
 errline() { grep -o '[0-9.]* spp on average.*' "$1" | head -1; }
-ADAPT=(--samples 64 --target-error 0.004 --aov error --no-progress)
+ADAPT=(--samples 64 --target-error 0.006 --aov error --no-progress)
 "$RTS" render "$TMP/s.rts" -o "$TMP/ad.png" "${ADAPT[@]}" --threads 1 --stats-json "$TMP/ad.json" 2>"$TMP/ad.err" ||
   { echo "FAIL: the single-process adaptive render"; cat "$TMP/ad.err"; exit 1; }
 for n in 1 3; do
