@@ -695,9 +695,11 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   add_whole_option(*cmd, "--height", c->height, 1, kMaxImageSide, "Image height in pixels", false);
   add_whole_option(*cmd, "--samples", c->samples, 1, render::kMaxSamplesPerPixel, "Samples per pixel", false);
   add_whole_option(*cmd, "--max-depth", c->max_depth, 0, INT_MAX, "Reflection/refraction depth", false);
-  cmd->add_option("--aov", c->aovs, "Extra images: normal,depth,albedo,error (written as OUT.<name>.<ext>)")
+  cmd->add_option("--aov", c->aovs,
+                  "Extra images: normal,depth,albedo,error,error_map (written as OUT.<name>.<ext>; error_map: "
+                  "relative error in false colour)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"normal", "depth", "albedo", "error"}));
+      ->check(CLI::IsMember({"normal", "depth", "albedo", "error", "error_map"}));
   cmd->add_option("--sampler", c->sampler, "Sample placement: random, stratified or sobol")
       ->check(CLI::IsMember({"random", "stratified", "sobol"}));
   cmd->add_option("--integrator", c->integrator,

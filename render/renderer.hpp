@@ -51,7 +51,7 @@ struct RenderOptions {
   int threads = 0;                        // 0: all hardware threads
   std::optional<uint64_t> seed;           // overrides settings.seed
   std::optional<int> width, height, samples, max_depth;  // override settings
-  std::vector<std::string> aovs;          // any of "normal", "depth", "albedo", "error"
+  std::vector<std::string> aovs;          // any of "normal", "depth", "albedo", "error", "error_map"
   std::optional<SamplerKind> sampler;     // overrides settings.sampler
   std::optional<IntegratorKind> integrator;  // overrides settings.integrator
   // Adaptive sampling: add samples where the estimated error is highest until the image's

@@ -1,6 +1,7 @@
 #include "render/image/frame.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -18,7 +19,8 @@ AovFlags parse_aovs(const std::vector<std::string>& names) {
     else if (n == "depth") f.depth = true;
     else if (n == "albedo") f.albedo = true;
     else if (n == "error") f.error = true;
-    else throw RenderError({}, fmt::format("unknown AOV '{}' (expected normal, depth, albedo or error)", n));
+    else if (n == "error_map") f.error_map = true;
+    else throw RenderError({}, fmt::format("unknown AOV '{}' (expected normal, depth, albedo, error or error_map)", n));
   }
   return f;
 }
@@ -37,6 +39,7 @@ void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, 
     if (aovs.normal) frame.normal = &(result.aovs["normal"] = Image(width, height));
     if (aovs.albedo) frame.albedo = &(result.aovs["albedo"] = Image(width, height));
     if (aovs.error) result.aovs["error"] = Image(width, height);
+    if (aovs.error_map) result.aovs["error_map"] = Image(width, height);
     if (aovs.depth) {
       result.aovs["depth"] = Image(width, height);
       frame.depth.assign(pixels, -1.0f);
@@ -98,11 +101,43 @@ void finish_depth(RenderResult& result, const Frame& frame, std::optional<std::p
 
 namespace rts::render {
 
+Vec3 error_map_colour(double relative_error) {
+  // Stops of the ramp, evenly spaced in log10 of the relative error from 1e-3 to 1.
+  static constexpr std::array<std::array<double, 3>, 5> kStops{{{0.0, 0.0, 0.0},
+                                                               {0.1, 0.15, 0.85},
+                                                               {0.1, 0.75, 0.3},
+                                                               {0.95, 0.85, 0.1},
+                                                               {0.9, 0.1, 0.1}}};
+  const double t = std::clamp((std::log10(std::max(relative_error, 1e-12)) + 3.0) / 3.0, 0.0, 1.0) * 4.0;
+  const int k = std::min(3, static_cast<int>(t));
+  const double f = t - k;
+  Vec3 c;
+  for (int i = 0; i < 3; ++i) c[i] = kStops[k][i] + f * (kStops[k + 1][i] - kStops[k][i]);
+  return c;
+}
+
 void finish_error(RenderResult& result, const Frame& frame) {
-  if (!frame.aovs.error) return;
-  Image& img = result.aovs["error"];
   const std::vector<float>& var = *frame.variance;
-  for (std::size_t i = 0; i < var.size(); ++i) img.rgb[i] = var[i] > 0.0f ? std::sqrt(var[i]) : 0.0f;
+  if (frame.aovs.error) {
+    Image& img = result.aovs["error"];
+    for (std::size_t i = 0; i < var.size(); ++i) img.rgb[i] = var[i] > 0.0f ? std::sqrt(var[i]) : 0.0f;
+  }
+  if (frame.aovs.error_map) {
+    Image& img = result.aovs["error_map"];
+    const std::vector<float>& value = result.color.rgb;
+    for (std::size_t p = 0; p * 3 < var.size(); ++p) {
+      Vec3 c(0.5);
+      if (var[p * 3] >= 0.0f) {
+        double v = 0, m = 0;
+        for (int k = 0; k < 3; ++k) {
+          v += std::max(0.0f, var[p * 3 + k]);
+          m += std::abs(value[p * 3 + k]);
+        }
+        c = error_map_colour(std::sqrt(v / 3.0) / (m / 3.0 + 0.01));
+      }
+      for (int k = 0; k < 3; ++k) img.rgb[p * 3 + k] = static_cast<float>(c[k]);
+    }
+  }
 }
 
 }  // namespace rts::render

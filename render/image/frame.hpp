@@ -16,10 +16,11 @@ namespace rts::render {
 struct AovFlags {
   bool normal = false, depth = false, albedo = false;
   bool error = false;  // the per-pixel standard error, from the statistics after rendering
+  bool error_map = false;  // the same as a false-colour picture of the relative error
   bool any() const { return normal || depth || albedo; }  // needs a first-hit ray per pixel
 };
 
-// "normal", "depth", "albedo", "error"; anything else is a RenderError.
+// "normal", "depth", "albedo", "error", "error_map"; anything else is a RenderError.
 AovFlags parse_aovs(const std::vector<std::string>& names);
 
 struct Frame {
@@ -51,7 +52,15 @@ void finish_depth(RenderResult& result, const Frame& frame,
                   std::optional<std::pair<double, double>> range = std::nullopt, float miss = 0.0f);
 
 // Fills result.aovs["error"] (when requested) with each pixel's standard error per channel,
-// linear; 0 where it is unknown.
+// linear; 0 where it is unknown. Fills result.aovs["error_map"] (when requested) with a picture
+// of each pixel's relative standard error, sigma / (value + 0.01) over the channels' means, on a
+// log scale from 0.1% (black) through blue, green and yellow to 100% and above (red): a view
+// of where the noise is, stored as display colours (written without the sRGB curve, as AOVs
+// are). Unknown errors (1 spp) are mid grey.
+void finish_error(RenderResult& result, const Frame& frame);
+
+// The error map's colour for a relative error (exposed for its test).
+Vec3 error_map_colour(double relative_error);
 void finish_error(RenderResult& result, const Frame& frame);
 
 }  // namespace rts::render

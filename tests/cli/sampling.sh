@@ -26,6 +26,8 @@ expect_grep "$TMP/err" "bad.rts:1:[0-9]+: error: unknown sampler 'halton'" "loca
 
 expect_exit 0 "--aov error" -- "$RTS" render "$TMP/soft.rts" -o "$TMP/e.png" --aov error --bits 16
 [[ -s "$TMP/e.error.png" ]] || { echo "FAIL: no e.error.png"; FAILS=$((FAILS + 1)); }
+expect_exit 0 "--aov error_map" -- "$RTS" render "$TMP/soft.rts" -o "$TMP/m.png" --aov error_map
+[[ -s "$TMP/m.error_map.png" ]] || { echo "FAIL: no m.error_map.png"; FAILS=$((FAILS + 1)); }
 
 expect_exit 0 "adaptive" -- "$RTS" render "$TMP/soft.rts" -o "$TMP/a.png" --samples 256 --target-error 0.002
 expect_grep "$TMP/err" "spp on average" "an adaptive render reports its sample counts"

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "render/image/frame.hpp"
 #include "render/sample/adaptive.hpp"
 #include "render/image/image_metrics.hpp"
 #include "render/renderer.hpp"
@@ -263,7 +264,11 @@ TEST_CASE("adaptive sampling spends its samples on the penumbra", "[convergence]
   RenderResult adaptive = render(s, o);
   CHECK(adaptive.stats.error.target_reached);
   CHECK(adaptive.stats.error.rmse <= uniform.stats.error.rmse);
-  CHECK(adaptive.stats.error.mean_spp < 0.6 * 256);
+  // The estimates compared are both honest (adaptive reports from batches its planner does not
+  // see); splitting the pixel's Sobol samples into the 4 batches that needs costs adaptive some
+  // of its gain on this smooth integrand (0.68 of uniform's samples, where the old estimate,
+  // low under adaptive stopping, flattered it to below 0.6).
+  CHECK(adaptive.stats.error.mean_spp < 0.75 * 256);
 }
 
 TEST_CASE("adaptive plan refines the noisiest pixels and never exceeds the cap", "[convergence]") {
@@ -306,4 +311,47 @@ TEST_CASE("adaptive and progressive images are identical whatever the thread cou
   timed.time_limit = 1e6;
   s.settings.samples = 12;
   CHECK(render(s, plain).color.rgb == render(s, timed).color.rgb);
+}
+
+TEST_CASE("the error map shows the relative error in false colour", "[convergence]") {
+  // Ends of the log scale, and a ramp that only brightens from 0.1% to 10%.
+  CHECK(error_map_colour(1e-4) == Vec3(0.0));
+  CHECK(error_map_colour(1e-3) == Vec3(0.0));
+  CHECK(glm::length(error_map_colour(1.0) - Vec3(0.9, 0.1, 0.1)) < 1e-12);
+  CHECK(glm::length(error_map_colour(50.0) - Vec3(0.9, 0.1, 0.1)) < 1e-12);
+  double last = -1;
+  for (double e = 1e-3; e <= 0.1; e *= 1.5) {
+    Vec3 c = error_map_colour(e);
+    CHECK(c.x + c.y + c.z > last);
+    last = c.x + c.y + c.z;
+  }
+  RenderOptions o;
+  o.threads = 2;
+  o.aovs = {"error_map", "error"};
+  RenderResult r = render(plane_under_square_light(16, SamplerKind::Random), o);
+  REQUIRE(r.aovs.count("error_map") == 1);
+  const Image& map = r.aovs.at("error_map");
+  const Image& err = r.aovs.at("error");
+  for (std::size_t p = 0; p < r.color.rgb.size() / 3; ++p) {
+    double sigma = 0, value = 0;
+    for (int c = 0; c < 3; ++c) {
+      sigma += err.rgb[p * 3 + c] * err.rgb[p * 3 + c];
+      value += r.color.rgb[p * 3 + c];
+    }
+    Vec3 want = error_map_colour(std::sqrt(sigma / 3) / (value / 3 + 0.01));
+    for (int c = 0; c < 3; ++c) CHECK(map.rgb[p * 3 + c] == Approx(want[c]).margin(1e-5));
+  }
+  // One sample per pixel: no estimate, mid grey.
+  r = render(plane_under_square_light(1, SamplerKind::Random), o);
+  for (float v : r.aovs.at("error_map").rgb) CHECK(v == 0.5f);
+}
+
+TEST_CASE("a time limit's first pass is two samples per pixel", "[convergence]") {
+  RenderOptions o;
+  o.threads = 1;
+  o.time_limit = 1e-9;
+  RenderResult r = render(plane_under_square_light(4096, SamplerKind::Sobol), o);
+  CHECK(r.stats.error.stopped_by_time);
+  CHECK(r.stats.error.max_spp == 2);
+  CHECK(r.stats.error.known);
 }
