@@ -67,6 +67,7 @@ void print(std::ostream& out, bool color, Severity sev, SourceLoc loc, const std
 void DiagnosticSink::report(const Diagnostic& d) {
   if (d.severity == Severity::Error) ++errors_;
   if (d.severity == Severity::Warning) ++warnings_;
+  if (collected_) collected_->push_back(d);
   print(out_, color_, d.severity, d.loc, d.message, true);
   for (const Note& n : d.notes) print(out_, color_, Severity::Note, n.loc, n.message, false);
   out_.flush();

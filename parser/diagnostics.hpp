@@ -51,6 +51,10 @@ class DiagnosticSink {
   void error(SourceLoc loc, const std::string& message);
   void warning(SourceLoc loc, const std::string& message);
 
+  // Also keeps a copy of every diagnostic reported (the language server publishes them as
+  // data rather than text); null: print only.
+  void collect_into(std::vector<Diagnostic>* out) { collected_ = out; }
+
   int error_count() const { return errors_; }
   int warning_count() const { return warnings_; }
 
@@ -61,6 +65,7 @@ class DiagnosticSink {
   bool color_;
   int errors_ = 0;
   int warnings_ = 0;
+  std::vector<Diagnostic>* collected_ = nullptr;
 };
 
 // Renders one diagnostic to a string exactly as the sink prints it (no color); used by the

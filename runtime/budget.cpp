@@ -19,7 +19,18 @@ constexpr uint64_t kStepsPerMemoryCheck = 1 << 16;
 }  // namespace
 
 Budget::Budget(const EvalLimits& limits)
-    : limits_(limits), next_memory_check_(limits.max_memory ? kStepsPerMemoryCheck : UINT64_MAX) {}
+    : limits_(limits),
+      next_memory_check_(limits.max_memory || limits.max_seconds > 0 ? kStepsPerMemoryCheck : UINT64_MAX),
+      timed_(limits.max_seconds > 0) {
+  if (timed_)
+    deadline_ = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                       std::chrono::duration<double>(limits.max_seconds));
+}
+
+void Budget::time_exhausted(SourceLoc loc, const char* what) const {
+  fail(loc, fmt::format("evaluation ran longer than its time budget of {} s; it was here, in {}", limits_.max_seconds,
+                        what));
+}
 
 void Budget::count_iteration(SourceLoc loc) {
   if (++iterations_ > limits_.max_iterations)
@@ -34,6 +45,7 @@ void Budget::check(SourceLoc loc, const char* what) {
                           "string bytes built); it ran away here, in {} (raise the limit with --max-steps)",
                           limits_.max_steps, what));
   next_memory_check_ = steps_ + kStepsPerMemoryCheck;
+  check_time(loc, what);
   check_memory(0, loc, what);
 }
 

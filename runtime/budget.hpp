@@ -4,6 +4,7 @@
 // builtins. Every failure is a located LanguageError naming the flag that raises the limit.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -32,6 +33,12 @@ class Budget {
   }
   // Fails past --max-steps; otherwise checks the memory and schedules the next check.
   void check(SourceLoc loc, const char* what);
+  // Fails once evaluation has run longer than limits.max_seconds (0: never). Cheap enough for
+  // every statement: some cost time without spending steps (a `let` among 100,000 others in
+  // one scope looks at them all for its name).
+  void check_time(SourceLoc loc, const char* what) const {
+    if (timed_ && std::chrono::steady_clock::now() > deadline_) time_exhausted(loc, what);
+  }
   // One loop iteration: counted against --max-iterations and as a step.
   void count_iteration(SourceLoc loc);
   // Fails (located) unless `bytes` more fit under --max-memory; `what` names the value.
@@ -53,6 +60,7 @@ class Budget {
 
  private:
   [[noreturn]] void stack_exhausted(SourceLoc loc, unsigned macro_depth) const;
+  [[noreturn]] void time_exhausted(SourceLoc loc, const char* what) const;
 
   const EvalLimits& limits_;
   uint64_t steps_ = 0;
@@ -60,6 +68,8 @@ class Budget {
   uint64_t next_memory_check_;
   std::uintptr_t stack_floor_ = 0;
   std::size_t stack_bytes_ = 0;
+  bool timed_ = false;  // limits.max_seconds > 0
+  std::chrono::steady_clock::time_point deadline_;
 };
 
 }  // namespace rts::runtime

@@ -111,6 +111,7 @@ EvalResult evaluate_source(SourceManager& sources, const SourceFile& file, const
     result.world_shapes = interp.world_shapes();
     result.world_lights = interp.world_lights();
     result.uses_clock = interp.uses_clock();
+    if (options.describe_globals) result.globals = interp.describe_globals(options.describe_globals);
     result.scene = interp.finish();
     result.parse_seconds = interp.parse_seconds();
   });

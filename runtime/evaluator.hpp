@@ -42,6 +42,9 @@ struct EvalLimits {
   std::size_t max_mesh_triangles = 50'000'000;  // --max-mesh-triangles: OBJ + inline meshes
   // --max-memory: bytes the process may hold (checked where big values are made); 0: none.
   std::size_t max_memory = 0;
+  // Wall-clock seconds evaluation may run (checked with the memory, every 65,536 steps);
+  // 0: none. The language server's budget, so that a runaway loop never freezes an editor.
+  double max_seconds = 0;
 };
 
 // The animation clock a frame is evaluated at: the built-in constants `clock` (0 at the first
@@ -69,6 +72,16 @@ struct EvalOptions {
   // Non-null: the objects placed in the world so far are stored here after each placement,
   // for a progress display on another thread.
   std::atomic<uint64_t>* placed = nullptr;
+  // Keep a text of each top-level variable's value, at most this many bytes each, in
+  // EvalResult::globals (the language server's hover); 0: none.
+  std::size_t describe_globals = 0;
+};
+
+// A top-level variable of the main file once evaluation finished, its value as text.
+struct GlobalValue {
+  std::string name;
+  SourceLoc loc;      // where it was declared
+  std::string value;  // cut at EvalOptions::describe_globals bytes, then "…"
 };
 
 struct EvalResult {
@@ -79,6 +92,7 @@ struct EvalResult {
   uint64_t world_shapes = 0, world_lights = 0;
   // The program read `clock`, `frame` or `frames` (an animation whose frames differ).
   bool uses_clock = false;
+  std::vector<GlobalValue> globals;  // with EvalOptions::describe_globals
 };
 
 // Parses and evaluates the scene file at `path` (loaded through `sources`, which must outlive

@@ -177,6 +177,7 @@ Flow Interpreter::exec_body(const ast::Body& body) {
 
 Flow Interpreter::exec(const ast::Stmt& s) {
   current_loc_ = s.loc;
+  budget_.check_time(s.loc, "statements");
   switch (s.kind) {
     case ast::StmtKind::Let:
       exec_let(static_cast<const ast::LetStmt&>(s));
@@ -388,6 +389,26 @@ Flow Interpreter::exec_while(const ast::WhileStmt& s) {
   }
   --loop_depth_;
   return result;
+}
+
+}  // namespace rts::runtime
+
+namespace rts::runtime {
+
+std::vector<GlobalValue> Interpreter::describe_globals(std::size_t max_bytes) const {
+  std::vector<GlobalValue> out;
+  const std::size_t end = std::min(globals_end(), bindings_.size());
+  for (std::size_t i = 0; i < end; ++i) {
+    const Binding& b = bindings_[i];
+    GlobalValue g{*b.name, b.loc, {}};
+    if (!append_text(g.value, b.value, true, max_bytes)) {
+      g.value.resize(std::min(g.value.size(), max_bytes));
+      while (!g.value.empty() && (static_cast<unsigned char>(g.value.back()) & 0xC0) == 0x80) g.value.pop_back();
+      g.value += "…";
+    }
+    out.push_back(std::move(g));
+  }
+  return out;
 }
 
 }  // namespace rts::runtime

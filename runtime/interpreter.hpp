@@ -103,6 +103,8 @@ class Interpreter {
   uint64_t world_shapes() const { return placement_.world().shapes; }
   uint64_t world_lights() const { return placement_.world().lights; }
   bool uses_clock() const { return uses_clock_; }  // read `clock`, `frame` or `frames`
+  // The global variables as text, each at most `max_bytes` (EvalOptions::describe_globals).
+  std::vector<GlobalValue> describe_globals(std::size_t max_bytes) const;
 
   // a + b for two lists or two strings, counted against the step and memory budgets;
   // appends in place when `a` holds the only reference to its list or string.

@@ -12,6 +12,7 @@
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/shade/lights.hpp"
+#include "render/builder/block_properties.hpp"
 #include "render/builder/obj_loader.hpp"
 #include "render/builder/pattern_builder.hpp"
 #include "render/geometry/tolerances.hpp"
@@ -55,28 +56,19 @@ constexpr KindInfo kKinds[] = {
     {"merge", BlockCategory::Csg},
 };
 
-// The property names each block kind accepts (for unknown-name checks and suggestions).
-const std::vector<std::string_view> kSettingsNames = {"width",         "height",      "samples",
-                                                      "max_depth",     "background",  "ambient_light",
-                                                      "seed",          "sampler",     "environment",
-                                                      "environment_ambient", "frames",
-                                                      "integrator",    "fog_distance", "fog_color",
-                                                      "fog_offset",    "fog_altitude", "output_gamma",
-                                                      "aov",           "depth_range", "depth_miss",
-                                                      "normal_miss"};
-const std::vector<std::string_view> kCameraNames = {"projection", "position",   "look_at",  "up",
-                                                    "fov",        "fov_axis",   "handedness", "view_width",
-                                                    "aperture",   "focus_distance", "direction", "right"};
-const std::vector<std::string_view> kImageTextureNames = {"file", "mapping", "color_space", "filter"};
-const std::vector<std::string_view> kLatLongNames = {"file", "color_space", "filter"};
-const std::vector<std::string_view> kCubeMapNames = {"directory", "color_space", "filter", "orientation"};
-const std::vector<std::string_view> kCheckerNames = {"color1", "color2", "scale"};
-const std::vector<std::string_view> kPatternTextureNames = {"color1", "color2", "scale", "axis"};
-const std::vector<std::string_view> kMaterialNames = {"color",    "texture",  "emission",  "ambient",
-                                                      "diffuse",  "specular", "shininess", "reflect",
-                                                      "transmit", "ior",      "fresnel",   "roughness",
-                                                      "ior_relative", "bump", "bump_scale", "normal_map",
-                                                      "highlight"};
+// The property names each block kind accepts (for unknown-name checks and suggestions), from
+// the tables in block_properties.cpp.
+std::vector<std::string_view> names_of_block(std::string_view kind) {
+  return property_names(find_block_info(kind)->properties);
+}
+const std::vector<std::string_view> kSettingsNames = names_of_block("settings");
+const std::vector<std::string_view> kCameraNames = names_of_block("camera");
+const std::vector<std::string_view> kImageTextureNames = names_of_block("image_texture");
+const std::vector<std::string_view> kLatLongNames = names_of_block("latlong_map");
+const std::vector<std::string_view> kCubeMapNames = names_of_block("cube_map");
+const std::vector<std::string_view> kCheckerNames = names_of_block("checker");
+const std::vector<std::string_view> kPatternTextureNames = names_of_block("stripes");
+const std::vector<std::string_view> kMaterialNames = names_of_block("material");
 // "material" and each shape kind's own properties, by ShapeGeometry index.
 const std::array<std::vector<std::string_view>, kShapeKindCount>& shape_property_names() {
   static const auto table = [] {
@@ -93,15 +85,12 @@ template <class T>
 const std::vector<std::string_view>& names_of() {
   return shape_property_names()[shape_index<T>()];
 }
-const std::vector<std::string_view> kPointLightNames = {"position",          "color",  "intensity", "attenuation",
-                                                        "attenuation_clamp", "shadows"};
-const std::vector<std::string_view> kSpotLightNames = {"position",  "point_at",    "radius",            "falloff", "color",
-                                                       "intensity", "attenuation", "attenuation_clamp", "shadows"};
-const std::vector<std::string_view> kDirectionalLightNames = {"direction", "color", "intensity", "shadows"};
-const std::vector<std::string_view> kAreaLightNames = {"position", "u",         "v",           "samples", "disc",
-                                                       "color",    "intensity", "attenuation", "shadows"};
+const std::vector<std::string_view> kPointLightNames = names_of_block("point_light");
+const std::vector<std::string_view> kSpotLightNames = names_of_block("spot_light");
+const std::vector<std::string_view> kDirectionalLightNames = names_of_block("directional_light");
+const std::vector<std::string_view> kAreaLightNames = names_of_block("area_light");
 
-const std::vector<std::string_view> kCsgNames = {"material", "inverse"};
+const std::vector<std::string_view> kCsgNames = names_of_block("union");
 
 // The names a shape, light or CSG kind takes, or null for other kinds.
 const std::vector<std::string_view>* names_of(std::string_view kind) {

@@ -1,0 +1,206 @@
+// The property tables of block_properties.hpp. Types, defaults and meanings are written as
+// docs/rendering.md writes them; a property added to the builder is added here first (the
+// builder's name lists come from these tables).
+#include "render/builder/block_properties.hpp"
+
+#include <array>
+
+#include "render/geometry/shapes/shape_kinds.hpp"
+
+namespace rts::render {
+
+namespace {
+
+constexpr PropertyInfo kSettings[] = {
+    {"width", "whole number > 0", "`640`", "Image width in pixels."},
+    {"height", "whole number > 0", "`480`", "Image height in pixels."},
+    {"samples", "whole number ≥ 1", "`1`", "Samples per pixel (antialiasing, soft effects)."},
+    {"max_depth", "whole number ≥ 0", "`5`", "Reflection/refraction bounces (capped at 10,000)."},
+    {"background", "color", "`rgb(0)`", "The color of rays that hit nothing."},
+    {"ambient_light", "color", "`rgb(1)`", "Multiplies every material's `ambient` term."},
+    {"seed", "whole number ≥ 0", "`0`", "Seed for every random decision."},
+    {"sampler", "string", "`\"sobol\"`", "How samples are placed: \"random\", \"stratified\" or \"sobol\"."},
+    {"environment", "texture", "none", "The environment map (a latlong_map or cube_map)."},
+    {"environment_ambient", "bool", "`false`", "Also light the ambient term with the environment."},
+    {"frames", "whole number ≥ 1", "`1`", "An animation's frame count; 1 is a still."},
+    {"integrator", "string", "`\"whitted\"`", "\"whitted\" or \"path\" (the physically based path tracer)."},
+    {"fog_distance", "number ≥ 0", "`0` (no fog)", "Constant fog: at this distance 37% of the light is left."},
+    {"fog_color", "color", "`rgb(0)`", "The fog's colour."},
+    {"fog_offset", "number", "`0`", "Ground fog: the height of its top."},
+    {"fog_altitude", "number ≥ 0", "`0`", "Above 0: ground fog, thinning above `fog_offset`."},
+    {"output_gamma", "string", "`\"srgb\"`", "\"linear\": PNG output stores the linear values (`--linear` in the scene)."},
+    {"aov", "string", "none", "Auxiliary images to write beside the output, as --aov (\"normal,depth\")."},
+    {"depth_range", "vector", "none", "Depth AOV: the distances mapped to black and white, as --depth-range."},
+    {"depth_miss", "number", "`0`", "Depth AOV value where nothing is hit, as --depth-miss."},
+    {"normal_miss", "number", "`0`", "Normal AOV value where nothing is hit, as --normal-miss."},
+};
+
+constexpr PropertyInfo kCamera[] = {
+    {"projection", "string", "`\"perspective\"`", "\"perspective\" or \"orthographic\"."},
+    {"position", "vector", "`<0, 0, -5>`", "The eye (perspective) or the centre of the view (orthographic)."},
+    {"look_at", "vector", "`<0, 0, 0>`", "The point at the image centre; must differ from `position`."},
+    {"up", "vector", "`<0, 1, 0>`", "Which way is up in the image."},
+    {"fov", "number in (0, 180)", "`60`", "Perspective: field of view in degrees, across `fov_axis`."},
+    {"fov_axis", "string", "`\"horizontal\"`", "\"horizontal\" or \"vertical\": which side `fov` spans."},
+    {"handedness", "string", "`\"left\"`", "\"left\" or \"right\" (OpenGL's, the courses')."},
+    {"view_width", "number > 0", "`4`", "Orthographic: width of the view in scene units."},
+    {"aperture", "number ≥ 0", "`0`", "Lens diameter; above 0, depth of field."},
+    {"focus_distance", "number ≥ 0", "`0`", "Distance to the plane in focus; 0 is the distance to `look_at`."},
+    {"direction", "vector", "none", "The view direction (instead of look_at), as the courses write it."},
+    {"right", "vector", "none", "The image's right edge direction (POV-Ray's right), with direction."},
+};
+
+constexpr PropertyInfo kMaterial[] = {
+    {"color", "color, or a texture", "`rgb(0.8)`", "Base (diffuse) color."},
+    {"texture", "texture", "none", "Replaces `color` by the texture's color at each point."},
+    {"emission", "color, or a texture", "`rgb(0)`", "Light the surface gives off towards the camera."},
+    {"ambient", "number ≥ 0", "`0.1`", "Weight of `settings.ambient_light`."},
+    {"diffuse", "number ≥ 0, or a texture", "`0.7`", "Lambertian weight."},
+    {"specular", "number or color ≥ 0, or a texture", "`0`", "Phong highlight weight."},
+    {"shininess", "number ≥ 0", "`32`", "Phong exponent: higher is a smaller, sharper highlight."},
+    {"reflect", "number or color ≥ 0, or a texture", "`0`", "Mirror reflection weight, per channel."},
+    {"transmit", "number or color ≥ 0, or a texture", "`0`", "Transmission (refraction) weight, per channel."},
+    {"ior", "number > 0", "`1`", "Index of refraction of the inside (1.5 glass, 1.33 water)."},
+    {"fresnel", "bool", "`false`", "Angle-dependent reflection (Schlick's approximation with `ior`)."},
+    {"roughness", "number ≥ 0", "`0`", "Above 0, blurred (glossy) reflections."},
+    {"ior_relative", "bool", "`false`", "`ior` is the ratio to the medium around the object."},
+    {"bump", "texture", "none", "A height field that perturbs the normal."},
+    {"bump_scale", "number", "`1`", "The height of `bump`'s white."},
+    {"normal_map", "texture", "none", "A tangent-space normal map."},
+    {"highlight", "string", "`\"phong\"`", "The highlight's lobe: \"phong\" (R·V) or \"blinn\" (N·H)."},
+};
+
+// The properties every light takes, in the order the builder has always listed them (which
+// decides between equally close "did you mean" suggestions).
+#define RTS_LIGHT_COLOR                                                \
+  {"color", "color ≥ 0", "`rgb(1)`", "The light's color."},           \
+      {"intensity", "number ≥ 0", "`1`", "Multiplies the color."}
+#define RTS_LIGHT_ATTENUATION                                                                       \
+  {"attenuation", "vector ≥ 0", "`<1, 0, 0>`", "<c, l, q>: the light is divided by c + l·d + q·d²."}, \
+      {"attenuation_clamp", "bool", "`false`", "Caps the attenuation factor at 1."}
+#define RTS_LIGHT_SHADOWS {"shadows", "bool", "`true`", "Cast shadows (false lights through everything, cheaper)."}
+
+constexpr PropertyInfo kPointLight[] = {
+    {"position", "vector", "*required*", "Where the light is."},
+    RTS_LIGHT_COLOR,
+    RTS_LIGHT_ATTENUATION,
+    RTS_LIGHT_SHADOWS,
+};
+constexpr PropertyInfo kSpotLight[] = {
+    {"position", "vector", "*required*", "Where the light is."},
+    {"point_at", "vector", "*required*", "The point the cone's axis goes through."},
+    {"radius", "degrees in (0, 90)", "`30`", "Full intensity within this half-angle."},
+    {"falloff", "degrees, radius to 90", "`45`", "Zero intensity from this half-angle."},
+    RTS_LIGHT_COLOR,
+    RTS_LIGHT_ATTENUATION,
+    RTS_LIGHT_SHADOWS,
+};
+constexpr PropertyInfo kDirectionalLight[] = {
+    {"direction", "vector", "*required*", "The direction the light travels (the sun)."},
+    RTS_LIGHT_COLOR,
+    RTS_LIGHT_SHADOWS,
+};
+constexpr PropertyInfo kAreaLight[] = {
+    {"position", "vector", "*required*", "The centre of the rectangle."},
+    {"u", "vector", "*required*", "One edge of the rectangle."},
+    {"v", "vector", "*required*", "The other edge."},
+    {"samples", "whole number ≥ 1", "`16`", "Stratified points per shading point (soft shadows)."},
+    {"disc", "bool", "`false`", "An ellipse inscribed in the rectangle instead."},
+    RTS_LIGHT_COLOR,
+    {"attenuation", "vector ≥ 0", "`<1, 0, 0>`", "<c, l, q>: the light is divided by c + l·d + q·d²."},
+    RTS_LIGHT_SHADOWS,
+    {"attenuation_clamp", "bool", "`false`", "Caps the attenuation factor at 1."},
+};
+#undef RTS_LIGHT_COLOR
+#undef RTS_LIGHT_ATTENUATION
+#undef RTS_LIGHT_SHADOWS
+
+constexpr PropertyInfo kChecker[] = {
+    {"color1", "color", "`rgb(1)`", "The color of even cells."},
+    {"color2", "color", "`rgb(0)`", "The color of odd cells."},
+    {"scale", "number > 0", "`1`", "The side of a cell."},
+};
+constexpr PropertyInfo kStripes[] = {
+    {"color1", "color", "`rgb(1)`", "The first half of each period."},
+    {"color2", "color", "`rgb(0)`", "The second half."},
+    {"scale", "number > 0", "`1`", "The period."},
+    {"axis", "\"x\", \"y\", \"z\" or 0, 1, 2", "`\"x\"`", "The axis the pattern varies along."},
+};
+constexpr PropertyInfo kImageTexture[] = {
+    {"file", "string", "*required*", "An image file (PNG, BMP, JPEG, TGA or Radiance HDR)."},
+    {"mapping", "string", "`\"uv\"`", "How points map to the image."},
+    {"color_space", "string", "`\"srgb\"`", "\"srgb\" or \"linear\" (normal maps)."},
+    {"filter", "string", "`\"bilinear\"`", "\"bilinear\" or \"nearest\"."},
+};
+constexpr PropertyInfo kLatLong[] = {
+    {"file", "string", "*required*", "A latitude-longitude environment image."},
+    {"color_space", "string", "`\"srgb\"`", "\"srgb\" or \"linear\"."},
+    {"filter", "string", "`\"bilinear\"`", "\"bilinear\" or \"nearest\"."},
+};
+constexpr PropertyInfo kCubeMap[] = {
+    {"directory", "string", "*required*", "A folder of six face images."},
+    {"color_space", "string", "`\"srgb\"`", "\"srgb\" or \"linear\"."},
+    {"filter", "string", "`\"bilinear\"`", "\"bilinear\" or \"nearest\"."},
+    {"orientation", "string", "none", "How the six faces are read (\"mit\": MIT 6.837's layout)."},
+};
+constexpr PropertyInfo kCsg[] = {
+    {"material", "material", "none", "The material of the parts that have none of their own."},
+    {"inverse", "bool", "`false`", "Swap inside and outside."},
+};
+
+constexpr BlockInfo kBlocks[] = {
+    {"settings", "Image size, samples, background, integrator and other render settings.", kSettings},
+    {"camera", "Where the image is seen from.", kCamera},
+    {"material", "How a surface reflects, transmits and emits light.", kMaterial},
+    {"checker", "A 3D checker texture.", kChecker},
+    {"stripes", "A texture of slabs across an axis.", kStripes},
+    {"gradient", "A texture ramping from color1 to color2 along an axis.", kStripes},
+    {"image_texture", "An image file as a texture.", kImageTexture},
+    {"latlong_map", "A latitude-longitude environment map.", kLatLong},
+    {"cube_map", "An environment map of six face images.", kCubeMap},
+    {"point_light", "Light from one point: hard shadows.", kPointLight},
+    {"spot_light", "A point light limited to a cone.", kSpotLight},
+    {"directional_light", "Parallel light (the sun): no position, no attenuation.", kDirectionalLight},
+    {"area_light", "A rectangular (or disc) light: soft shadows.", kAreaLight},
+    {"union", "CSG: the shapes together (inner surfaces kept).", kCsg},
+    {"intersection", "CSG: what is inside every shape.", kCsg},
+    {"difference", "CSG: the first shape minus the others.", kCsg},
+    {"merge", "CSG: the shapes together, inner surfaces removed.", kCsg},
+};
+
+constexpr PropertyInfo kShapeMaterial{"material", "material", "none", "The shape's material."};
+
+// Shapes: their descriptor's properties and `material`, built once.
+struct ShapeBlocks {
+  std::array<std::vector<PropertyInfo>, kShapeKindCount> props;
+  std::array<BlockInfo, kShapeKindCount> infos;
+  ShapeBlocks() {
+    for (std::size_t k = 0; k < kShapeKindCount; ++k) {
+      props[k].push_back(kShapeMaterial);
+      for (const PropertyInfo& p : kShapeInfos[k].properties) props[k].push_back(p);
+      infos[k] = BlockInfo{kShapeInfos[k].name, "A shape (docs/shapes.md).", props[k]};
+    }
+  }
+};
+
+}  // namespace
+
+std::span<const BlockInfo> block_infos() { return kBlocks; }
+
+const BlockInfo* find_block_info(std::string_view kind) {
+  for (const BlockInfo& b : kBlocks)
+    if (b.kind == kind) return &b;
+  static const ShapeBlocks shapes;
+  for (const BlockInfo& b : shapes.infos)
+    if (b.kind == kind) return &b;
+  return nullptr;
+}
+
+std::vector<std::string_view> property_names(std::span<const PropertyInfo> properties) {
+  std::vector<std::string_view> names;
+  names.reserve(properties.size());
+  for (const PropertyInfo& p : properties) names.push_back(p.name);
+  return names;
+}
+
+}  // namespace rts::render
