@@ -27,5 +27,6 @@ void add_render_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_render.
 void add_converge_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_converge.cpp
 void add_import_command(CLI::App& app, CommandContext& ctx);  // cli/cmd_import.cpp
 void add_fmt_command(CLI::App& app, CommandContext& ctx);     // cli/cmd_fmt.cpp
+void add_lsp_command(CLI::App& app, CommandContext& ctx);     // cli/cmd_lsp.cpp
 
 }  // namespace rts::cli

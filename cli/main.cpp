@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   cli::add_converge_command(app, ctx);
   cli::add_import_command(app, ctx);
   cli::add_fmt_command(app, ctx);
+  cli::add_lsp_command(app, ctx);
 
   // A first word that is neither an option nor a command is most likely a misspelt command.
   auto is_command = [&](const std::string& word) {
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
   };
   if (argc > 1 && argv[1][0] != '-' && !is_command(argv[1])) {
     std::cerr << "rts: unknown command '" << argv[1]
-              << "' (expected one of: parse, check, eval, render, converge, import, fmt)\n";
+              << "' (expected one of: parse, check, eval, render, converge, import, fmt, lsp)\n";
     std::cerr << "Run 'rts --help' for usage.\n";
     return kExitUsage;
   }
@@ -65,7 +66,7 @@ int main(int argc, char** argv) {
     return kExitInternal;
   }
   if (app.get_subcommands().empty()) {
-    std::cerr << "rts: no command given (expected one of: parse, check, eval, render, converge, import, fmt)\n";
+    std::cerr << "rts: no command given (expected one of: parse, check, eval, render, converge, import, fmt, lsp)\n";
     std::cerr << "Run 'rts --help' for usage.\n";
     return kExitUsage;
   }

@@ -7,8 +7,10 @@ usage: make_seeds.py NAME OUT_DIR
   png:                 every small .png under examples/ and tests/, plus a few PNG colour
                        types the tree has none of (gray, gray+alpha, palette, RGBA, 16-bit,
                        interlaced), generated here so the repository stays small.
+  lsp:                 LSP sessions (framed JSON-RPC) that open each example and ask for
+                       hover, completion, definition, symbols and signature help in it.
 """
-import os, struct, sys, zlib
+import json, os, struct, sys, zlib
 
 MAX_SEED_BYTES = 64 * 1024  # libFuzzer's -max_len below; larger files only slow mutation
 
@@ -55,6 +57,34 @@ def generated_pngs():
     yield "gen_interlaced.png", png(1, 1, 8, 2, [bytes([10, 20, 30])], interlace=1)
 
 
+def lsp_session(text, uri="file:///fuzz/scene.rts"):
+    """A byte stream as an editor writes it; the first byte is fuzz_lsp's split point."""
+    def msg(obj):
+        body = json.dumps(obj).encode()
+        return b"Content-Length: %d\r\n\r\n" % len(body) + body
+    doc = {"uri": uri}
+    out = msg({"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"capabilities": {}}})
+    out += msg({"jsonrpc": "2.0", "method": "initialized", "params": {}})
+    out += msg({"jsonrpc": "2.0", "method": "textDocument/didOpen",
+                "params": {"textDocument": dict(doc, languageId="rts", version=1, text=text)}})
+    lines = text.split("\n")
+    for i, method in enumerate(["hover", "completion", "definition", "signatureHelp"]):
+        line = (i * 7) % max(1, len(lines))
+        pos = {"line": line, "character": len(lines[line]) // 2}
+        out += msg({"jsonrpc": "2.0", "id": 10 + i, "method": "textDocument/" + method,
+                    "params": {"textDocument": doc, "position": pos}})
+    out += msg({"jsonrpc": "2.0", "method": "textDocument/didChange",
+                "params": {"textDocument": dict(doc, version=2), "contentChanges": [
+                    {"range": {"start": {"line": 0, "character": 0}, "end": {"line": 0, "character": 3}},
+                     "text": "let"}]}})
+    out += msg({"jsonrpc": "2.0", "id": 20, "method": "textDocument/documentSymbol", "params": {"textDocument": doc}})
+    out += msg({"jsonrpc": "2.0", "id": 21, "method": "textDocument/formatting",
+                "params": {"textDocument": doc, "options": {"tabSize": 4, "insertSpaces": True}}})
+    out += msg({"jsonrpc": "2.0", "id": 22, "method": "shutdown"})
+    out += msg({"jsonrpc": "2.0", "method": "exit"})
+    return bytes([len(out) % 251]) + out
+
+
 def main():
     name, out = sys.argv[1], sys.argv[2]
     os.makedirs(out, exist_ok=True)
@@ -80,8 +110,12 @@ def main():
                 put(os.path.basename(p), open(p, "rb").read())
         for base, data in generated_pngs():
             put(base, data)
+    elif name == "lsp":
+        for p in files(".rts", ["examples"]):
+            text = open(p, "rb").read().decode("utf-8", "replace")
+            put(os.path.basename(p) + ".lsp", lsp_session(text))
     else:
-        sys.exit(f"make_seeds.py: unknown harness '{name}' (parse, format, eval, obj, png, render)")
+        sys.exit(f"make_seeds.py: unknown harness '{name}' (parse, format, eval, obj, png, render, lsp)")
     print(f"{count} seeds for {name} in {out}")
 
 

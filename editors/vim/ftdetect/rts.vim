@@ -1,0 +1,2 @@
+" rts scene files.
+autocmd BufRead,BufNewFile *.rts setfiletype rts
