@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "parser/parser.hpp"
+#include "runtime/scene_warnings.hpp"
 
 namespace rts::lsp {
 
@@ -65,9 +66,8 @@ Analysis analyze(const std::string& path, const std::string& text, const LineInd
       EvalResult r = evaluate_source(*a.sources, *a.file, eo, sink);
       a.globals = std::move(r.globals);
       a.evaluated = true;
-      if (r.world_lights == 0 && r.world_shapes > 0 && r.scene.settings.integrator == render::IntegratorKind::Whitted)
-        sink.warning(SourceLoc{a.file, 0, 0},
-                     "the scene places no lights: objects show only their ambient light and emission");
+      // The warnings `rts check` and `rts render` show (no lights, camera inside an object...).
+      for (const Diagnostic& d : scene_warnings(r, *a.sources, a.file)) a.diagnostics.push_back(d);
     } catch (const LanguageError& e) {
       a.diagnostics.push_back(e.diag);
     } catch (const SourceError& e) {

@@ -10,9 +10,10 @@
 
 #include "lsp/builtin_docs.hpp"
 #include "lsp/server.hpp"
+#include "parser/format.hpp"
 #include "parser/parser.hpp"
-#include "render/scene/block_properties.hpp"
-#include "render/scene/scene_builder.hpp"
+#include "render/builder/block_properties.hpp"
+#include "render/builder/scene_builder.hpp"
 #include "runtime/stdlib_path.hpp"
 
 namespace rts::lsp {
@@ -356,10 +357,16 @@ nlohmann::json Server::signature_help(Document& doc, std::size_t offset) {
 }
 
 nlohmann::json Server::formatting(Document& doc) {
-  if (!options_.format) throw std::runtime_error("formatting is not available in this build");
-  const std::string& text = doc.analysis->file->text();
+  // `rts fmt`'s formatter (parser/format.hpp): the same layout as on the command line.
+  const SourceFile& file = *doc.analysis->file;
+  const std::string& text = file.text();
   std::string formatted;
-  if (!options_.format(doc.path, text, formatted)) throw std::invalid_argument(formatted);
+  try {
+    formatted = format_source(file);
+  } catch (const LanguageError& e) {
+    throw RequestFailed(fmt::format("cannot format a scene that does not parse: {}:{}: {}", e.diag.loc.line,
+                                    e.diag.loc.col, e.diag.message));
+  }
   if (formatted == text) return json::array();
   return json::array({{{"range", range_of(doc, 0, text.size())}, {"newText", formatted}}});
 }

@@ -17,6 +17,7 @@ constexpr int kMethodNotFound = -32601;
 constexpr int kInvalidParams = -32602;
 constexpr int kInternalError = -32603;
 constexpr int kServerNotInitialized = -32002;
+constexpr int kRequestFailed = -32803;
 
 // LSP's DiagnosticSeverity and TextDocumentSyncKind.
 constexpr int kSeverityError = 1, kSeverityWarning = 2, kSeverityInformation = 3;
@@ -93,6 +94,8 @@ void Server::handle(std::string_view body) {
   const std::string method = method_it->get<std::string>();
   try {
     dispatch(method, params, id);
+  } catch (const RequestFailed& e) {
+    if (id) respond_error(*id, kRequestFailed, e.what());
   } catch (const json::exception& e) {
     if (id) respond_error(*id, kInvalidParams, std::string("invalid parameters: ") + e.what());
   } catch (const std::invalid_argument& e) {
@@ -168,7 +171,7 @@ nlohmann::json Server::initialize(const json& params) {
       {"definitionProvider", true},
       {"documentSymbolProvider", true},
       {"signatureHelpProvider", {{"triggerCharacters", json::array({"(", ","})}}},
-      {"documentFormattingProvider", static_cast<bool>(options_.format)},
+      {"documentFormattingProvider", true},
   };
   return {{"capabilities", caps}, {"serverInfo", {{"name", "rts"}, {"version", RTS_VERSION}}}};
 }

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -20,9 +21,12 @@ namespace rts::lsp {
 
 struct ServerOptions {
   AnalysisOptions analysis;
-  // The formatter, when one is linked: the buffer's text in, the formatted text out; returns
-  // false (and leaves a message in `out`) when the text cannot be formatted.
-  std::function<bool(const std::string& path, const std::string& text, std::string& out)> format;
+};
+
+// A request that is valid but cannot be done (formatting a buffer that does not parse):
+// answered with LSP's RequestFailed and the message.
+struct RequestFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 class Server {

@@ -131,11 +131,20 @@ with tempfile.TemporaryDirectory() as tmp:
     check(sig["result"] and sig["result"]["signatures"][0]["label"] == "ball(c, r = 1)" and sig["result"]["activeParameter"] == 1,
           "signature help: the second parameter of an included macro")
 
+    # Formatting through rts fmt's formatter: while the buffer does not parse, a clear refusal;
+    # then one edit giving the canonical layout, which rts fmt itself agrees with.
     fmt = c.request("textDocument/formatting", {"textDocument": {"uri": uri}, "options": {"tabSize": 4, "insertSpaces": True}})
-    if caps.get("documentFormattingProvider"):
-        check("result" in fmt and isinstance(fmt["result"], list), "formatting: edits")
-    else:
-        check(fmt.get("error", {}).get("code") == -32603, "formatting: a clear error while no formatter is linked")
+    check(fmt.get("error", {}).get("code") == -32803 and "does not parse" in fmt["error"]["message"],
+          "formatting: refused with the syntax error while the buffer does not parse")
+    c.notify("textDocument/didChange", {"textDocument": {"uri": uri, "version": 4}, "contentChanges": [
+        {"text": "let   size=2\nsphere{center=<0,1,0> radius=size}\n"}]})
+    fmt = c.request("textDocument/formatting", {"textDocument": {"uri": uri}, "options": {"tabSize": 4, "insertSpaces": True}})
+    edits = fmt.get("result") or []
+    expected = subprocess.run([rts, "fmt", "-"], input=b"let   size=2\nsphere{center=<0,1,0> radius=size}\n",
+                              capture_output=True).stdout.decode()
+    check(caps["documentFormattingProvider"] and len(edits) == 1 and edits[0]["newText"] == expected
+          and edits[0]["range"]["start"] == {"line": 0, "character": 0},
+          "formatting: one edit with rts fmt's text (%r)" % expected)
 
     bad = c.request("no/such/method", {})
     check(bad.get("error", {}).get("code") == -32601, "unknown method: MethodNotFound")

@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/scene/scene_builder.hpp"
+#include "render/builder/scene_builder.hpp"
 #include "runtime/interpreter.hpp"
 
 namespace {

@@ -12,7 +12,7 @@
 
 #include "lsp/builtin_docs.hpp"
 #include "lsp/server.hpp"
-#include "render/scene/block_properties.hpp"
+#include "render/builder/block_properties.hpp"
 #include "runtime/interpreter.hpp"
 
 using json = nlohmann::json;

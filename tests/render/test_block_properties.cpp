@@ -10,8 +10,8 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
-#include "render/scene/block_properties.hpp"
-#include "render/scene/scene_builder.hpp"
+#include "render/builder/block_properties.hpp"
+#include "render/builder/scene_builder.hpp"
 
 using namespace rts::render;
 
