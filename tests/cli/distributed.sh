@@ -100,8 +100,8 @@ expect_exit 0 "resume under mpirun -np 2" -- "${MPIRUN[@]}" 2 "$RTS" render "$TM
 cmp -s "$TMP/h.png" "$TMP/h2.png" || { echo "FAIL: the image resumed under mpirun differs"; FAILS=$((FAILS + 1)); }
 
 # An adaptive render killed and resumed: each round's tiles come back from the journal.
-sed 's/samples = 8 }/samples = 512 }/' "$TMP/s.rts" >"$TMP/ha.rts"
-HA=(--target-error 0.002 --no-progress --threads 1)
+sed 's/samples = 8 }/samples = 96 }/' "$TMP/s.rts" >"$TMP/ha.rts"
+HA=(--target-error 0.001 --no-progress --threads 1)
 "$RTS" render "$TMP/ha.rts" -o "$TMP/ha.png" "${HA[@]}" 2>/dev/null
 kill_after_tiles "$TMP/ck3/rts-checkpoint.journal" "$RTS" render "$TMP/ha.rts" -o "$TMP/ha1.png" "${HA[@]}" --checkpoint "$TMP/ck3"
 expect_exit 0 "resume an adaptive render" -- "${MPIRUN[@]}" 2 "$RTS" render "$TMP/ha.rts" -o "$TMP/ha1.png" "${HA[@]}" --checkpoint "$TMP/ck3"
