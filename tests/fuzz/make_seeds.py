@@ -110,12 +110,15 @@ def main():
                 put(os.path.basename(p), open(p, "rb").read())
         for base, data in generated_pngs():
             put(base, data)
+    elif name == "pov":
+        for p in list(files(".pov", ["tests"])) + list(files(".inc", ["tests"])):
+            put(os.path.basename(p), open(p, "rb").read())
     elif name == "lsp":
         for p in files(".rts", ["examples"]):
             text = open(p, "rb").read().decode("utf-8", "replace")
             put(os.path.basename(p) + ".lsp", lsp_session(text))
     else:
-        sys.exit(f"make_seeds.py: unknown harness '{name}' (parse, format, eval, obj, png, render, lsp)")
+        sys.exit(f"make_seeds.py: unknown harness '{name}' (parse, format, eval, obj, png, render, pov, lsp)")
     print(f"{count} seeds for {name} in {out}")
 
 
