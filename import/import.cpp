@@ -22,6 +22,26 @@ const char* format_name(Format f) {
   return "?";
 }
 
+namespace {
+
+// What a file is when it is not a course scene: a mesh, an rts scene, another renderer's
+// format; "" when nothing is recognised.
+std::string not_a_scene(const std::string& first, const std::string& ext, const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (ext == ".obj" || first == "v" || first == "vn" || first == "vt" || first == "f" || first == "mtllib" ||
+      first == "o" || first == "usemtl")
+    return fmt::format("'{}' is a Wavefront OBJ mesh, not a scene: place it in an rts scene with "
+                       "mesh {{ file = \"{}\" }} (docs/shapes.md)", name, name);
+  if (ext == ".rts") return fmt::format("'{}' is already an rts scene: render it with rts render", name);
+  if (first == "ply" || ext == ".ply") return fmt::format("'{}' is a PLY mesh, which rts does not read: convert it to OBJ", name);
+  if (ext == ".pbrt" || ext == ".gltf" || ext == ".glb" || ext == ".blend" || ext == ".xml" || ext == ".x3d")
+    return fmt::format("'{}' is a {} file, which rts import does not translate (it reads the MIT 6.837, CSCI 420 "
+                       "and UW CSE 457 course formats and POV-Ray scenes)", name, ext.substr(1));
+  return "";
+}
+
+}  // namespace
+
 Format detect_format(const std::string& text, const std::string& path) {
   Tokens tk(text);
   if (!tk.done()) {
@@ -37,9 +57,12 @@ Format detect_format(const std::string& text, const std::string& path) {
   if (ext == ".scene") return Format::Csci420;
   if (ext == ".txt") return Format::Mit;
   const Token& at = tk.peek();
+  // Files people hand to `rts import` that are not scenes it translates: say what was read.
+  if (const std::string what = not_a_scene(tk.done() ? std::string() : tk.peek().text, ext, path); !what.empty())
+    throw ImportError(at.line, at.col, what);
   throw ImportError(at.line, at.col,
                     "cannot tell the format: expected 'SBT-raytracer 1.0' (UW .ray), an object count (CSCI 420 "
-                    ".scene) or an MIT block such as PerspectiveCamera");
+                    ".scene), an MIT block such as PerspectiveCamera, or a POV-Ray scene (.pov, --format pov)");
 }
 
 ImportResult import_scene(const std::string& text, Format format, const ImportOptions& options) {

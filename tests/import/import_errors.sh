@@ -52,6 +52,12 @@ expect_grep existing.rts "keep me" "the output is untouched"
 printf 'hello world\n' > mystery.dat
 expect_exit 1 "an unrecognisable format" -- "$RTS" import mystery.dat
 expect_grep "$TMP/err" "cannot tell the format" "says so"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > tri.obj
+expect_exit 1 "an OBJ mesh handed to rts import" -- "$RTS" import tri.obj
+expect_grep "$TMP/err" "'tri.obj' is a Wavefront OBJ mesh, not a scene: .*mesh \\{ file = \"tri.obj\" \\}" "says what it read and what to do"
+printf 'sphere { radius = 1 }\n' > already.rts
+expect_exit 1 "an rts scene handed to rts import" -- "$RTS" import already.rts -o out.rts
+expect_grep "$TMP/err" "already an rts scene: render it with rts render" "says so"
 expect_exit 2 "a missing input" -- "$RTS" import no_such_file.ray
 expect_exit 2 "an unknown --format" -- "$RTS" import short.scene --format vrml
 finish
