@@ -238,9 +238,11 @@ void SceneBuilder::output_settings(ParamSet& ps, Settings& s) {
       std::size_t comma = list.find(',', start);
       if (comma == std::string::npos) comma = list.size();
       std::string name = list.substr(start, comma - start);
-      if (name != "normal" && name != "depth" && name != "albedo" && name != "error")
+      // The names --aov takes (render/renderer.cpp's parse_aovs, a layer above the builder).
+      if (name != "normal" && name != "depth" && name != "albedo" && name != "error" && name != "error_map")
         throw SceneError(loc_of(ps, "aov"), fmt::format("unknown AOV '{}' in property 'aov' of settings (expected a "
-                                                        "comma-separated list of normal, depth, albedo, error)",
+                                                        "comma-separated list of normal, depth, albedo, error, "
+                                                        "error_map)",
                                                         name));
       s.aovs.push_back(name);
       start = comma + 1;

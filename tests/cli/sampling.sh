@@ -28,6 +28,10 @@ expect_exit 0 "--aov error" -- "$RTS" render "$TMP/soft.rts" -o "$TMP/e.png" --a
 [[ -s "$TMP/e.error.png" ]] || { echo "FAIL: no e.error.png"; FAILS=$((FAILS + 1)); }
 expect_exit 0 "--aov error_map" -- "$RTS" render "$TMP/soft.rts" -o "$TMP/m.png" --aov error_map
 [[ -s "$TMP/m.error_map.png" ]] || { echo "FAIL: no m.error_map.png"; FAILS=$((FAILS + 1)); }
+# The same from the scene: settings.aov takes every name --aov takes.
+sed 's/settings {/settings { aov = "error_map" /' "$TMP/soft.rts" >"$TMP/soft_aov.rts"
+expect_exit 0 "settings { aov = \"error_map\" }" -- "$RTS" render "$TMP/soft_aov.rts" -o "$TMP/ms.png"
+cmp -s "$TMP/m.error_map.png" "$TMP/ms.error_map.png" || { echo "FAIL: settings.aov error_map differs from --aov error_map"; FAILS=$((FAILS + 1)); }
 
 expect_exit 0 "adaptive" -- "$RTS" render "$TMP/soft.rts" -o "$TMP/a.png" --samples 256 --target-error 0.002
 expect_grep "$TMP/err" "spp on average" "an adaptive render reports its sample counts"
