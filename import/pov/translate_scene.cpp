@@ -105,6 +105,12 @@ void Translator::item(Writer& w, const Item& it, bool top) {
   w.comments(it.comments);
   switch (it.kind) {
     case Item::Value: {
+      // A macro call is a statement in rts too (it places what the macro makes); any other
+      // value standing alone (`#declare A = A y+ x;` reads as A, then `y + x`) is not one.
+      if (it.args[0]->kind != Expr::Call) {
+        warn(it.loc, "a value where POV-Ray expects an object, a directive or a declaration; it is dropped");
+        return;
+      }
       Text t = expr(*it.args[0]);
       w.line(t.s);
       return;
