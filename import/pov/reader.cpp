@@ -758,6 +758,7 @@ class Reader {
             sizes.push_back(expr());
             expect("]", "to close the array's size");
           }
+          if (sizes.empty()) fail(at, "'array' needs its size in brackets: array[N] (or array[N] { values })");
           if (sizes.size() != 1) {
             // A multi-dimensional array: read over (the writer warns).
             e->text = "multi";
