@@ -52,9 +52,9 @@ double grad(int hash, double x, double y, double z) {
 // lattice point), and the integer conversions below cannot overflow.
 constexpr double kMaxCoordinate = 4.0e15;
 
+// (A NaN or an infinity fails the comparison too.)
 bool usable(const Vec3& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::fabs(p.x) < kMaxCoordinate &&
-         std::fabs(p.y) < kMaxCoordinate && std::fabs(p.z) < kMaxCoordinate;
+  return std::fabs(p.x) < kMaxCoordinate && std::fabs(p.y) < kMaxCoordinate && std::fabs(p.z) < kMaxCoordinate;
 }
 
 // floor(x) for |x| < kMaxCoordinate, without a libm call (x86-64's baseline has no rounding
@@ -69,6 +69,44 @@ int lattice(double floored) { return static_cast<int>(static_cast<int64_t>(floor
 // vector_noise's second and third components re-hash each corner's hash at these offsets, so
 // the three pick unrelated gradients at every corner.
 constexpr int kComponentOffset[3] = {0, 85, 170};
+
+// vector_noise's arithmetic, components 0 and 1 side by side in one SSE2 register (a GCC/clang
+// vector type: plain element-wise double arithmetic on any target). The pattern race scene
+// (bench/race/patterns.rts) spent 30% of its instructions in vector_noise, 583 a call
+// (callgrind): three table lookups, three multiplies and two adds per gradient, 24 gradients.
+// Precomputing each hash's three gradients in one row, and pairing two components, halves
+// that. Element-wise IEEE operations in the same order give the same bits as the scalar code
+// (-ffp-contract=off keeps them unfused): tests/render/test_noise.cpp's exact values hold.
+using Pair2 = double __attribute__((vector_size(16)));
+inline Pair2 lerp2(double t, Pair2 a, Pair2 b) { return a + t * (b - a); }
+
+// For each corner hash h, the gradients the three components use there: component 0 takes
+// kGrad[h], components 1 and 2 kGrad[kPerm[h + kComponentOffset[c]]] (re-hashed, so the three
+// are uncorrelated). x01 holds components 0 and 1's x coefficients, and so on.
+struct alignas(16) CornerGradients {
+  Pair2 x01, y01, z01;
+  double g2[3];
+};
+struct CornerGradientTable {
+  CornerGradients row[256];
+  const CornerGradients& operator[](int h) const { return row[h]; }
+};
+CornerGradientTable make_corner_gradients() {
+  CornerGradientTable t;
+  for (int h = 0; h < 256; ++h) {
+    const double* g0 = kGrad[h & 15];
+    const double* g1 = kGrad[kPerm[(h + kComponentOffset[1]) & 255] & 15];
+    const double* g2 = kGrad[kPerm[(h + kComponentOffset[2]) & 255] & 15];
+    t.row[h].x01 = Pair2{g0[0], g1[0]};
+    t.row[h].y01 = Pair2{g0[1], g1[1]};
+    t.row[h].z01 = Pair2{g0[2], g1[2]};
+    t.row[h].g2[0] = g2[0];
+    t.row[h].g2[1] = g2[1];
+    t.row[h].g2[2] = g2[2];
+  }
+  return t;
+}
+const CornerGradientTable kCornerGradients = make_corner_gradients();
 
 uint64_t cell_hash(int64_t x, int64_t y, int64_t z) {
   return mix64(static_cast<uint64_t>(x) * 0x9e3779b97f4a7c15ULL ^ mix64(static_cast<uint64_t>(y) + 0x632be59bd9b4e019ULL) ^
@@ -120,10 +158,16 @@ double turbulence(const Vec3& p, int octaves, double lambda, double omega) {
   return norm > 0.0 ? std::fabs(sum) / norm : 0.0;
 }
 
-Vec3 vector_noise(const Vec3& p) {
+namespace {
+
+// vector_noise's body, inlined into vector_turbulence's octave loop (a call per octave, with
+// its result through memory, was 240 instructions of a six-octave warp).
+[[gnu::always_inline]] inline Vec3 vector_noise_inline(const Vec3& p) {
   // One walk of the lattice for all three components (a third of the work of three noise
   // calls, which is what turbulence warps spend their time on): each corner's hash picks three
-  // gradients, the second and third through the permutation again at fixed offsets.
+  // gradients, the second and third through the permutation again at fixed offsets. The
+  // corner's three gradients come from one row of kCornerGradients, and components 0 and 1 are
+  // computed as a pair (Pair2 below); see there for why and for why the bits do not change.
   if (!usable(p)) return Vec3(0.0);
   const double fx = fast_floor(p.x), fy = fast_floor(p.y), fz = fast_floor(p.z);
   const int X = lattice(fx), Y = lattice(fy), Z = lattice(fz);
@@ -132,26 +176,34 @@ Vec3 vector_noise(const Vec3& p) {
   const int A = kPerm[X] + Y, AA = kPerm[A] + Z, AB = kPerm[A + 1] + Z;
   const int B = kPerm[X + 1] + Y, BA = kPerm[B] + Z, BB = kPerm[B + 1] + Z;
   const int corner[8] = {kPerm[AA], kPerm[BA], kPerm[AB], kPerm[BB], kPerm[AA + 1], kPerm[BA + 1], kPerm[AB + 1], kPerm[BB + 1]};
-  Vec3 out;
-  for (int c = 0; c < 3; ++c) {
-    int h[8];
-    for (int i = 0; i < 8; ++i) h[i] = c == 0 ? corner[i] : kPerm[(corner[i] + kComponentOffset[c]) & 255];
-    const double r = lerp(w,
-                          lerp(v, lerp(u, grad(h[0], x, y, z), grad(h[1], x - 1, y, z)),
-                               lerp(u, grad(h[2], x, y - 1, z), grad(h[3], x - 1, y - 1, z))),
-                          lerp(v, lerp(u, grad(h[4], x, y, z - 1), grad(h[5], x - 1, y, z - 1)),
-                               lerp(u, grad(h[6], x, y - 1, z - 1), grad(h[7], x - 1, y - 1, z - 1))));
-    out[c] = std::clamp(r, -1.0, 1.0);
+  // Corner i sits at (i & 1, (i >> 1) & 1, i >> 2) in the cell.
+  const double xs[2] = {x, x - 1}, ys[2] = {y, y - 1}, zs[2] = {z, z - 1};
+  Pair2 d01[8];    // components 0 and 1's gradient ramps at each corner
+  double d2[8];    // component 2's
+#pragma GCC unroll 8
+  for (int i = 0; i < 8; ++i) {
+    const CornerGradients& g = kCornerGradients[corner[i]];
+    const double cx = xs[i & 1], cy = ys[(i >> 1) & 1], cz = zs[i >> 2];
+    d01[i] = g.x01 * cx + g.y01 * cy + g.z01 * cz;
+    d2[i] = g.g2[0] * cx + g.g2[1] * cy + g.g2[2] * cz;
   }
-  return out;
+  const Pair2 r01 = lerp2(w, lerp2(v, lerp2(u, d01[0], d01[1]), lerp2(u, d01[2], d01[3])),
+                          lerp2(v, lerp2(u, d01[4], d01[5]), lerp2(u, d01[6], d01[7])));
+  const double r2 = lerp(w, lerp(v, lerp(u, d2[0], d2[1]), lerp(u, d2[2], d2[3])),
+                         lerp(v, lerp(u, d2[4], d2[5]), lerp(u, d2[6], d2[7])));
+  return {std::clamp(r01[0], -1.0, 1.0), std::clamp(r01[1], -1.0, 1.0), std::clamp(r2, -1.0, 1.0)};
 }
+
+}  // namespace
+
+Vec3 vector_noise(const Vec3& p) { return vector_noise_inline(p); }
 
 Vec3 vector_turbulence(const Vec3& p, int octaves, double lambda, double omega) {
   octaves = std::clamp(octaves, 1, kMaxOctaves);
   Vec3 sum(0.0);
   double amp = 1.0, freq = 1.0;
   for (int i = 0; i < octaves; ++i) {
-    sum += amp * vector_noise(p * freq);
+    sum += amp * vector_noise_inline(p * freq);
     amp *= omega;
     freq *= lambda;
   }
