@@ -96,7 +96,7 @@ Vec3 perturbed_normal(const MaterialDesc& m, const World& world, const WorldHit&
     const CompiledTexture& height = textures[m.bump];
     const double texel = height.texel_size();
     const double step = texel > 0.0 ? texel : tol::kBumpDifference;
-    const double h = luminance(height.eval(p));
+    const double h = luminance(height.eval_height(p));
     // The height's slope along u and v: image textures on uv surfaces by moving in uv, others
     // by moving the object-space point along the tangent frame (procedural textures live in
     // object space).
@@ -108,8 +108,8 @@ Vec3 perturbed_normal(const MaterialDesc& m, const World& world, const WorldHit&
       pu.object_point += step * t;
       pv.object_point += step * b;
     }
-    const double hu = (luminance(height.eval(pu)) - h) / step;
-    const double hv = (luminance(height.eval(pv)) - h) / step;
+    const double hu = (luminance(height.eval_height(pu)) - h) / step;
+    const double hv = (luminance(height.eval_height(pv)) - h) / step;
     // pbrt's bump mapping with the displacement along n: the displaced surface's tangents are
     // dp/du + bump_scale * dh/du * n; with unit tangents this is n - scale * (hu t + hv b).
     out = n - m.bump_scale * (hu * t + hv * b);

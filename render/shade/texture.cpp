@@ -240,6 +240,13 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
   return sample(*images_[0], uv.x, uv.y);
 }
 
+Color CompiledTexture::eval_height(const TexturePoint& p) const {
+  if (desc_.kind != TextureKind::Pattern) return eval(p);
+  const Vec3 q = Vec3(inverse_ * glm::dvec4(p.object_point, 1.0));
+  const glm::dvec3 c = pattern::pattern_color(desc_.pattern, q, /*height=*/true);
+  return {c.x, c.y, c.z};
+}
+
 std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used,
                                               std::size_t max_memory) {
   // (path, linear) → image, each file loaded once per color space.

@@ -28,6 +28,9 @@ class CompiledTexture {
       : CompiledTexture(desc, image ? std::vector<std::shared_ptr<const Image>>{std::move(image)}
                                     : std::vector<std::shared_ptr<const Image>>{}) {}
   Color eval(const TexturePoint& p) const;
+  // The texture as a bump's height: eval(), except that ripples and waves stay smooth (see
+  // render/shade/pattern/patterns.hpp).
+  Color eval_height(const TexturePoint& p) const;
   // Bytes of decoded image data this texture holds (0 for procedural ones).
   std::size_t image_bytes() const {
     std::size_t bytes = 0;

@@ -216,6 +216,42 @@ TEST_CASE("patterns mean what POV-Ray's mean", "[patterns]") {
   }
 }
 
+TEST_CASE("ripples and waves as colors wrap as POV-Ray's do; as heights they stay smooth", "[patterns]") {
+  // POV-Ray applies frequency and phase inside ripples and waves (rings per unit) and again to
+  // the color map's index, so at frequency 2 the color jumps where the value crosses 0.5: its
+  // hard-edged bands. A bump's height takes them once and has no jump.
+  PatternDesc d;
+  d.wave = WaveKind::Ramp;
+  d.color_map = {{0.0, {0, 0, 0}}, {1.0, {1, 1, 1}}};
+  for (PatternKind k : {PatternKind::Ripples, PatternKind::Waves}) {
+    d.kind = k;
+    INFO("pattern " << static_cast<int>(k));
+    SECTION("at frequency 1 color and height agree for ripples; waves' color stays inside [0, 1]") {
+      d.frequency = 1;
+      Points pts;
+      for (int i = 0; i < 5000; ++i) {
+        const Vec3 q = pts.next(3);
+        const double c = pat::wave(d, pat::raw_value(d, q));
+        REQUIRE((c >= 0.05 && c <= 0.95));   // POV-Ray's 0.5 + 0.2 * mean: at most +-0.45
+        if (k == PatternKind::Ripples) REQUIRE(c == pat::wave(d, pat::raw_value(d, q, true), true));
+      }
+    }
+    SECTION("at frequency 2 the color jumps along a line; the height does not") {
+      d.frequency = 2;
+      double color_jump = 0, height_jump = 0;
+      const int n = 20000;
+      for (int i = 0; i < n; ++i) {
+        const Vec3 a(-3 + 6.0 * i / n, 0.37, 0.1), b(-3 + 6.0 * (i + 1) / n, 0.37, 0.1);
+        color_jump = std::max(color_jump, std::fabs(pat::wave(d, pat::raw_value(d, a)) - pat::wave(d, pat::raw_value(d, b))));
+        height_jump = std::max(height_jump, std::fabs(pat::wave(d, pat::raw_value(d, a, true), true) -
+                                                      pat::wave(d, pat::raw_value(d, b, true), true)));
+      }
+      CHECK(color_jump > 0.5);     // a wrap from near 1 to near 0 between neighbours 0.0003 apart
+      CHECK(height_jump < 0.02);   // a slope of at most about 2 pi * frequency
+    }
+  }
+}
+
 TEST_CASE("wave functions", "[patterns]") {
   PatternDesc d;
   d.kind = PatternKind::Bozo;

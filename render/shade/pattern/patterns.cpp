@@ -33,26 +33,51 @@ double frac(double v) {
   return f >= 1.0 ? 0.0 : f;
 }
 
-// Ten wave centres for ripples and waves, fixed points within the unit ball (POV-Ray draws
-// its ten from its noise table; any spread-out set gives the same look).
-constexpr glm::dvec3 kWaveSources[10] = {
+// Ten wave centres for ripples and waves on the unit sphere around the origin, as POV-Ray's are
+// (it draws their directions from its noise; any spread-out set of directions gives the look).
+constexpr glm::dvec3 kWaveDirections[10] = {
     {0.42, -0.21, 0.33},  {-0.37, 0.48, -0.12}, {0.05, 0.31, 0.57},  {-0.55, -0.36, 0.19}, {0.29, 0.52, -0.44},
     {-0.18, -0.61, -0.27}, {0.63, 0.08, -0.16},  {-0.46, 0.13, 0.51}, {0.14, -0.44, -0.58}, {-0.07, 0.66, 0.24}};
-
-double ripples(const glm::dvec3& p, double frequency, double phase, bool fade) {
-  double sum = 0.0, weights = 0.0;
-  for (const glm::dvec3& c : kWaveSources) {
-    const double r = glm::length(p - c);
-    const double w = fade ? 1.0 / (1.0 + r) : 1.0;
-    sum += w * std::sin(kTwoPi * (r * frequency + phase));
-    weights += w;
+struct WaveSources {
+  glm::dvec3 centre[10];
+  WaveSources() {
+    for (int i = 0; i < 10; ++i) centre[i] = glm::normalize(kWaveDirections[i]);
   }
-  return 0.5 + 0.5 * sum / weights;
+};
+const WaveSources kWaveSources;
+// `waves` gives each source its own frequency factor; these are the ten POV-Ray 3.7 uses (its
+// fixed generator's values in [0.01, 1.01], rounded), so the slow, large swells weigh as
+// POV-Ray's do: each wave's amplitude is 1 / its factor.
+constexpr double kWaveFactors[10] = {0.9191, 0.96, 0.4332, 0.7093, 0.6892, 0.9914, 0.783, 0.4007, 0.2297, 0.1685};
+
+// POV-Ray's ripples: the mean of ten sines of the distance to each centre, `frequency` waves
+// per unit, mapped to [0, 1].
+double ripples(const glm::dvec3& p, double frequency, double phase) {
+  double sum = 0.0;
+  for (const glm::dvec3& c : kWaveSources.centre) {
+    const double r = glm::length(p - c);
+    sum += std::sin(kTwoPi * (r * frequency + phase));
+  }
+  return 0.5 + 0.5 * sum / 10.0;
+}
+
+// POV-Ray's waves: each centre's sine at frequency * its factor, weighted by 1 / its factor.
+// As a color (height false) POV-Ray's scaling, 0.5 + 0.2 * the mean, whose swings (up to
+// +-0.45) the color map's frequency can push over a wrap: POV-Ray's hard-edged bands. As a
+// bump's height, the weighted mean over the weights' sum, a smooth value in [0, 1].
+double waves(const glm::dvec3& p, double frequency, double phase, bool height) {
+  double sum = 0.0, weights = 0.0;
+  for (int i = 0; i < 10; ++i) {
+    const double r = glm::length(p - kWaveSources.centre[i]);
+    sum += std::sin(kTwoPi * (r * frequency * kWaveFactors[i] + phase)) / kWaveFactors[i];
+    weights += 1.0 / kWaveFactors[i];
+  }
+  return height ? 0.5 + 0.5 * sum / weights : 0.5 + 0.2 * sum / 10.0;
 }
 
 }  // namespace
 
-double raw_value(const PatternDesc& d, const glm::dvec3& q) {
+double raw_value(const PatternDesc& d, const glm::dvec3& q, bool height) {
   glm::dvec3 p = q;
   const bool warp = d.turbulence != glm::dvec3(0.0) && d.kind != PatternKind::Marble &&
                     d.kind != PatternKind::Agate;
@@ -94,15 +119,20 @@ double raw_value(const PatternDesc& d, const glm::dvec3& q) {
       return std::min(1.0, f2 - f1);
     }
     case PatternKind::Cells: return cells(p);
-    case PatternKind::Ripples: return ripples(p, d.frequency, d.phase, false);
-    case PatternKind::Waves: return ripples(p, d.frequency, d.phase, true);
+    case PatternKind::Ripples: return ripples(p, d.frequency, d.phase);
+    case PatternKind::Waves: return waves(p, d.frequency, d.phase, height);
     case PatternKind::Function: return d.function ? d.function->eval(p) : 0.0;
   }
   return 0.0;
 }
 
-double wave(const PatternDesc& d, double value) {
-  const bool inside = d.kind == PatternKind::Ripples || d.kind == PatternKind::Waves;
+double wave(const PatternDesc& d, double value, bool height) {
+  // Ripples and waves take frequency and phase inside, for their rings; as colors POV-Ray
+  // applies both a second time here, as for every pattern (so at frequency 2 the value wraps
+  // where it crosses 0.5: the hard-edged bands POV-Ray shows). A bump's height would turn
+  // those edges into creases, so heights take them once (POV-Ray's normals have their own,
+  // smooth ripples and waves).
+  const bool inside = height && (d.kind == PatternKind::Ripples || d.kind == PatternKind::Waves);
   const double v = inside ? value : value * d.frequency + d.phase;
   if (!std::isfinite(v)) return 0.0;
   switch (d.wave) {
@@ -135,8 +165,8 @@ glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t) {
   return a.color + (b.color - a.color) * ((t - a.value) / span);
 }
 
-glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q) {
-  return color_map_lookup(d.color_map, wave(d, raw_value(d, q)));
+glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q, bool height) {
+  return color_map_lookup(d.color_map, wave(d, raw_value(d, q, height), height));
 }
 
 }  // namespace rts::render::pattern

@@ -12,8 +12,11 @@
 //  - onion:  |p| (spheres around the origin).       leopard: ((sin x + sin y + sin z) / 3)^2.
 //  - wrinkles: half of T(p) over ten octaves (lambda 2, omega 0.5), in [0, 1].
 //  - crackle: F2 - F1 of Worley noise (0 on the cell borders).   cells: one value per unit cube.
-//  - ripples, waves: concentric sine waves from ten fixed centres near the origin, `frequency`
-//            rings per unit and `phase` (waves fade with the distance, as POV-Ray's).
+//  - ripples, waves: concentric sine waves from ten fixed centres on the unit sphere,
+//            `frequency` rings per unit and `phase` (waves: each centre at its own slower
+//            frequency, weighted by its inverse, as POV-Ray's). As colors the frequency and phase
+//            apply again in the wave function, as in POV-Ray (hard-edged bands when frequency
+//            > 1); as a bump's height (height = true) only inside, so the height stays smooth.
 //  - function: a user function f(x, y, z) (render/geometry/function/compiled_function.hpp).
 // Every pattern but marble, wood and agate applies a non-zero `turbulence` as a warp
 // p += turbulence * vector_turbulence(p) first (POV-Ray's classic turbulence).
@@ -23,14 +26,15 @@
 
 namespace rts::render::pattern {
 
-// The pattern's value at texture-space point q, before the wave function.
-double raw_value(const PatternDesc& d, const glm::dvec3& q);
-// The wave function applied to value * frequency + phase (ripples and waves take frequency
-// and phase inside the pattern, so theirs is the identity here).
-double wave(const PatternDesc& d, double value);
+// The pattern's value at texture-space point q, before the wave function. `height`: the value
+// feeds a bump's height, not a color (only ripples and waves differ).
+double raw_value(const PatternDesc& d, const glm::dvec3& q, bool height = false);
+// The wave function applied to value * frequency + phase (for a height from ripples or waves,
+// which take frequency and phase inside the pattern, to the value itself).
+double wave(const PatternDesc& d, double value, bool height = false);
 // The color map's color at index t (entries ascending; clamped outside).
 glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t);
-// All three: the color of the pattern at q.
-glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q);
+// All three: the color of the pattern at q (height: as a bump's height).
+glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q, bool height = false);
 
 }  // namespace rts::render::pattern
