@@ -15,6 +15,7 @@ PreparedScene::PreparedScene(const SceneDesc& scene, bool specialize, std::size_
 FeatureSet PreparedScene::features(const FeatureContext& context) const {
   FeatureSet f = analyze_features(*scene_, flat_, context);
   if (world_->uses_bvh()) f.add(Feature::Bvh);
+  if (!flat_.groups.empty()) f.add(Feature::Instancing);
   return f;
 }
 

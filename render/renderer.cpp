@@ -103,14 +103,18 @@ void describe(const PreparedScene& prep, const FeatureSet& features, const Frame
   for (std::string_view f : features.used()) stats.features_used.emplace_back(f);
   for (std::string_view f : features.left_out()) stats.features_left_out.emplace_back(f);
   uint64_t by_kind[kShapeKindCount] = {};
-  uint64_t csg_blocks = 0;
+  uint64_t csg_blocks = 0, group_placements = 0;
   for (std::size_t i = 0; i < world.instance_count(); ++i) {
     PrimKind kind = world.instance(i).kind;
-    if (kind < kShapeKindCount) ++by_kind[kind]; else ++csg_blocks;  // CSG leaves count as their kinds
+    // CSG leaves and the shapes of instanced groups (once per group) count as their kinds.
+    if (kind < kShapeKindCount) ++by_kind[kind];
+    else if (kind == kGroupKind) ++group_placements;
+    else ++csg_blocks;
   }
   for (std::size_t k = 0; k < kShapeKindCount; ++k)
     if (by_kind[k] > 0) stats.primitives.emplace_back(shape_name(k), by_kind[k]);
   if (csg_blocks > 0) stats.primitives.emplace_back("csg", csg_blocks);
+  if (group_placements > 0) stats.primitives.emplace_back("group", group_placements);
   stats.triangles = world.triangle_count();
   stats.bvh_nodes = world.bvh_nodes();
   WorldMemory m = world.memory();
@@ -270,7 +274,7 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   stats.samples = rs.samples;
   stats.max_depth = rs.max_depth;
   stats.threads = threads;
-  stats.instances = world.instance_count() - world.plane_count() - world.csg_part_count();
+  stats.instances = world.instance_count() - world.plane_count() - world.csg_part_count() - world.group_part_count();
   stats.planes = world.plane_count();
   stats.lights = lights.size();
   for (std::size_t i = 0; i < lights.size(); ++i) {

@@ -1,8 +1,10 @@
 #include "render/accel/flatten.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
@@ -25,8 +27,10 @@ void check_transform(const Mat4& m, const SourceRef& loc) {
   if (!(std::abs(det) > tol::kSingularDeterminant)) throw RenderError(loc, "transform is singular (scale 0?)");
 }
 
+// `instanced`: by group index, the groups placed as FlatGroups instead of copied (may be
+// shorter than the group list: then nothing is instanced).
 void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& parent, int depth,
-                   FlatScene& out) {
+                   const std::vector<bool>& instanced, FlatScene& out) {
   if (depth > tol::kMaxGroupDepth)
     throw RenderError(child.loc, "groups nested more than " + std::to_string(tol::kMaxGroupDepth) +
                                      " deep (a group containing itself?)");
@@ -52,7 +56,12 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
       break;
     case NodeKind::Group:
       if (node.index >= scene.groups.size()) throw RenderError(node.loc, "internal: unknown group");
-      for (const Child& c : scene.groups[node.index].children) flatten_child(scene, c, m, depth + 1, out);
+      if (node.index < instanced.size() && instanced[node.index]) {
+        check_transform(m, child.loc);
+        out.groups.push_back(FlatGroup{node.index, m, child.loc});
+        break;
+      }
+      for (const Child& c : scene.groups[node.index].children) flatten_child(scene, c, m, depth + 1, instanced, out);
       break;
   }
 }
@@ -71,14 +80,105 @@ LightDesc transform_light(const LightDesc& light, const Mat4& m) {
 
 FlatScene flatten_instance(const SceneDesc& scene, const Child& instance) {
   FlatScene out;
-  flatten_child(scene, instance, Mat4(1.0), 0, out);
+  flatten_child(scene, instance, Mat4(1.0), 0, {}, out);
   return out;
 }
 
 FlatScene flatten_scene(const SceneDesc& scene) {
   FlatScene out;
-  for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out);
+  out.instanced = instanced_groups(scene);
+  for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out.instanced, out);
   return out;
+}
+
+FlatScene flatten_group(const SceneDesc& scene, const std::vector<bool>& instanced, uint32_t group, int level) {
+  FlatScene out;
+  static const std::vector<bool> none;
+  const std::vector<bool>& nested = level + 1 < kMaxInstanceLevels ? instanced : none;
+  for (const Child& c : scene.groups[group].children) flatten_child(scene, c, Mat4(1.0), level + 1, nested, out);
+  return out;
+}
+
+std::vector<bool> instanced_groups(const SceneDesc& scene) {
+  const std::size_t n = scene.groups.size();
+  if (n == 0) return {};
+  // Placements of each group: Child entries naming it (the world's and groups'; a group inside
+  // a CSG block is part of that block's tree).
+  std::vector<uint32_t> placed(n, 0);
+  auto count = [&](const std::vector<Child>& children) {
+    for (const Child& c : children)
+      if (c.node < scene.nodes.size() && scene.nodes[c.node].kind == NodeKind::Group &&
+          scene.nodes[c.node].index < n && placed[scene.nodes[c.node].index] < 2)
+        ++placed[scene.nodes[c.node].index];
+  };
+  count(scene.roots);
+  for (const GroupDesc& g : scene.groups) count(g.children);
+  bool any = false;
+  for (uint32_t p : placed) any = any || p >= 2;
+  if (!any) return {};
+
+  auto material_ok = [&](MaterialId id) {
+    if (id >= scene.materials.size()) return true;  // the default material: opaque, dark
+    const MaterialDesc& m = scene.materials[id];
+    auto black = [](const Color& c) { return !(c.r > 0.0 || c.g > 0.0 || c.b > 0.0); };
+    return black(m.transmit) && black(m.emission) && m.transmit_texture == kNoId && m.emission_texture == kNoId;
+  };
+  // Whether each group may be instanced, and how many shapes it holds (saturating): computed
+  // once per group over the graph (a DAG; a cycle makes its groups ineligible, and flattening
+  // then reports it).
+  enum : uint8_t { Unknown, Visiting, Done };
+  std::vector<uint8_t> state(n, Unknown);
+  std::vector<bool> eligible(n, false);
+  std::vector<uint64_t> shapes(n, 0);
+  constexpr uint64_t kSaturated = uint64_t(1) << 40;
+  auto visit = [&](auto& self, uint32_t g, int depth) -> void {
+    state[g] = Visiting;
+    bool ok = depth <= tol::kMaxGroupDepth;
+    uint64_t count_here = 0;
+    for (const Child& c : scene.groups[g].children) {
+      if (!ok) break;
+      if (c.node >= scene.nodes.size()) { ok = false; break; }
+      const Node& node = scene.nodes[c.node];
+      if (node.kind == NodeKind::Shape) {
+        if (node.index >= scene.shapes.size()) { ok = false; break; }
+        const ShapeDesc& s = scene.shapes[node.index];
+        ok = kShapeInfos[s.geometry.index()].bounded && material_ok(s.material);
+        ++count_here;
+      } else if (node.kind == NodeKind::Group && node.index < n) {
+        if (state[node.index] == Unknown) self(self, node.index, depth + 1);
+        ok = state[node.index] == Done && eligible[node.index];
+        count_here += shapes[node.index];
+      } else {
+        ok = false;  // lights, CSG blocks
+      }
+      count_here = std::min(count_here, kSaturated);
+    }
+    eligible[g] = ok;
+    shapes[g] = count_here;
+    state[g] = Done;
+  };
+  std::vector<bool> out(n, false);
+  for (uint32_t g = 0; g < n; ++g) {
+    if (placed[g] < 2) continue;
+    if (state[g] == Unknown) visit(visit, g, 0);
+    out[g] = eligible[g] && shapes[g] >= kMinInstancedGroupShapes;
+  }
+  return out;
+}
+
+void for_each_group_shape(const SceneDesc& scene, uint32_t group, const std::function<void(const ShapeDesc&)>& f) {
+  std::vector<bool> seen(scene.groups.size(), false);
+  auto walk = [&](auto& self, uint32_t g, int depth) -> void {
+    if (g >= scene.groups.size() || seen[g] || depth > tol::kMaxGroupDepth) return;
+    seen[g] = true;
+    for (const Child& c : scene.groups[g].children) {
+      if (c.node >= scene.nodes.size()) continue;
+      const Node& node = scene.nodes[c.node];
+      if (node.kind == NodeKind::Shape && node.index < scene.shapes.size()) f(scene.shapes[node.index]);
+      else if (node.kind == NodeKind::Group) self(self, node.index, depth + 1);
+    }
+  };
+  walk(walk, group, 0);
 }
 
 }  // namespace rts::render

@@ -1,7 +1,10 @@
 // Flattens the scene graph (groups of groups, shared nodes placed many times) into a list of
-// shape instances and lights, each with its composed child → world transform.
+// shape instances and lights, each with its composed child → world transform. A group placed
+// several times (instanced_groups) is not copied: each placement becomes one FlatGroup, and
+// World builds the group's contents once, in the group's own space (two-level instancing).
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "render/scene/scene.hpp"
@@ -21,11 +24,40 @@ struct FlatCsg {
   SourceRef loc;               // the block
 };
 
+// One placement of an instanced group: World traces it as one object whose contents (the
+// group's own BVH, built once) are shared by every placement.
+struct FlatGroup {
+  uint32_t group = 0;          // index into SceneDesc::groups
+  Mat4 to_world{1.0};
+  SourceRef loc;               // where it was placed
+};
+
 struct FlatScene {
   std::vector<FlatShape> shapes;
   std::vector<FlatCsg> csgs;
   std::vector<LightDesc> lights;  // already in world space
+  std::vector<FlatGroup> groups;  // placements of instanced groups (their shapes are not in `shapes`)
+  // By group index: traced as a shared instance (instanced_groups), empty when none is.
+  std::vector<bool> instanced;
 };
+
+// A group is instanced when it is placed at least twice (two Child entries name it), holds at
+// least kMinInstancedGroupShapes shapes, and holds nothing that needs world-space identity:
+// only bounded shapes (and groups of them) whose materials neither transmit nor emit (media
+// are paired by instance, emitters are sampled by instance), no lights, no CSG. Below the
+// shape count, copying the shapes into the top-level BVH is cheaper to trace than an extra
+// ray transform per group, and costs little memory. Instances nest kMaxInstanceLevels deep at
+// most (each level is a recursion of the traversal); deeper instanced groups are copied
+// into the level above.
+inline constexpr std::size_t kMinInstancedGroupShapes = 64;
+inline constexpr int kMaxInstanceLevels = 4;
+std::vector<bool> instanced_groups(const SceneDesc& scene);
+// The contents of group `group` in its own space: its shapes (nested groups flattened), and
+// the placements of the instanced groups it holds when `level` + 1 < kMaxInstanceLevels.
+FlatScene flatten_group(const SceneDesc& scene, const std::vector<bool>& instanced, uint32_t group, int level);
+// Calls f(shape) for each shape placement in the group (nested groups included, instanced or
+// not), each distinct nested group once. Used for the features and textures a scene needs.
+void for_each_group_shape(const SceneDesc& scene, uint32_t group, const std::function<void(const ShapeDesc&)>& f);
 
 // Throws RenderError when a node index is out of range, groups nest deeper than
 // tol::kMaxGroupDepth (a cycle), or an instance's composed transform is not finite or is

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "render/accel/hit_transform.hpp"
 #include "render/geometry/csg/leaf_crossings.hpp"
 #include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/geometry/tolerances.hpp"
@@ -12,15 +13,6 @@ namespace rts::render {
 namespace {
 
 bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
-
-// The infinity norm of the 3x3 linear part (largest row sum of absolute values): how much it
-// can stretch a per-component error bound.
-double linear_norm(const Mat4& m) {
-  double best = 0.0;
-  for (int row = 0; row < 3; ++row)
-    best = std::max(best, std::abs(m[0][row]) + std::abs(m[1][row]) + std::abs(m[2][row]));
-  return best;
-}
 
 }  // namespace
 
@@ -142,37 +134,57 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
   csgs_.push_back(std::move(csg));
 }
 
+bool World::add_shape_instance(const SceneDesc& scene, const FlatShape& fs, Instance& inst, AABB& bounds,
+                               bool& unbounded) {
+  const ShapeDesc& shape = scene.shapes[fs.shape];
+  inst.material = shape.material;
+  if (shape.material < scene.materials.size()) {
+    const Color& t = scene.materials[shape.material].transmit;
+    inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
+    has_transmissive_ = has_transmissive_ || inst.transmissive;
+  }
+  bool identity = is_identity(fs.to_world);
+  if (!identity) {
+    double det = glm::determinant(glm::dmat3(fs.to_world));
+    if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) return false;
+    inst.transform = add_transform(fs.to_world);
+  }
+  AABB object_bounds;
+  add_geometry(scene, shape, inst, object_bounds, unbounded);
+  if (unbounded) return true;
+  if (!object_bounds.valid()) return false;  // empty mesh, nothing to hit
+  bounds = identity ? object_bounds : transform_bounds(fs.to_world, object_bounds);
+  return bounds.finite();                    // NaN/inf coordinates: never hit
+}
+
 World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   meshes_.resize(scene.meshes.size());
   std::vector<Instance> bounded, unbounded, parts;
   std::vector<AABB> boxes;
   for (const FlatShape& fs : flat.shapes) {
-    const ShapeDesc& shape = scene.shapes[fs.shape];
     Instance inst;
-    inst.material = shape.material;
-    if (shape.material < scene.materials.size()) {
-      const Color& t = scene.materials[shape.material].transmit;
-      inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
-      has_transmissive_ = has_transmissive_ || inst.transmissive;
-    }
-    bool identity = is_identity(fs.to_world);
-    if (!identity) {
-      double det = glm::determinant(glm::dmat3(fs.to_world));
-      if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) continue;
-      inst.transform = add_transform(fs.to_world);
-    }
-    AABB object_bounds;
+    AABB world_bounds;
     bool unbounded_shape = false;
-    add_geometry(scene, shape, inst, object_bounds, unbounded_shape);
+    if (!add_shape_instance(scene, fs, inst, world_bounds, unbounded_shape)) continue;
     if (unbounded_shape) {
       unbounded.push_back(inst);
       continue;
     }
-    if (!object_bounds.valid()) continue;  // empty mesh, nothing to hit
-    AABB world_bounds = identity ? object_bounds : transform_bounds(fs.to_world, object_bounds);
-    if (!world_bounds.finite()) continue;  // NaN/inf coordinates: never hit
     bounded.push_back(inst);
     boxes.push_back(world_bounds);
+  }
+  // Instanced groups: each group's contents built once, each placement one instance.
+  std::vector<Instance> group_parts;
+  if (!flat.groups.empty()) {
+    std::vector<uint32_t> built(scene.groups.size(), kNoId);
+    for (const FlatGroup& fg : flat.groups) {
+      const uint32_t gi = group_accel(scene, flat.instanced, fg.group, 0, specialize, group_parts, built);
+      Instance inst;
+      AABB world_bounds;
+      if (!add_group_instance(gi, fg.to_world, inst, world_bounds)) continue;
+      bounded.push_back(inst);
+      boxes.push_back(world_bounds);
+    }
   }
   // CSG blocks: traced in world space through their leaves' own transforms (the block has
   // none); transmissive when any leaf is, so shadow rays look at each of its surfaces.
@@ -197,6 +209,11 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     planes_.push_back(static_cast<uint32_t>(instances_.size()));
     instances_.push_back(p);
   }
+  // Group parts next: they are reached through their group's placements only.
+  const uint32_t group_base = static_cast<uint32_t>(instances_.size());
+  for (Group& g : groups_) g.first += group_base;
+  instances_.insert(instances_.end(), group_parts.begin(), group_parts.end());
+  group_parts_ = group_parts.size();
   // CSG leaves last: they are reached through their block only.
   const uint32_t base = static_cast<uint32_t>(instances_.size());
   for (Csg& c : csgs_)
@@ -257,6 +274,7 @@ bool World::intersect_kind(std::index_sequence<I...>, const Instance& inst, cons
 bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                                SurfaceHit& hit) const {
   if (inst.kind == kCsgKind) return intersect_csg(inst, world_ray, ray_t, hit);
+  if (inst.kind == kGroupKind) return intersect_group(inst, world_ray, ray_t, hit);
   return intersect_kind(std::make_index_sequence<kShapeKindCount>(), inst, object_ray(inst, world_ray), ray_t, hit);
 }
 
@@ -324,6 +342,7 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
     double t;
     return sphere_root(std::get<std::vector<Sphere>>(shapes_)[inst.index], object_ray(inst, world_ray), ray_t, t);
   }
+  if (inst.kind == kGroupKind) return occluded_group(inst, world_ray, ray_t);
   SurfaceHit scratch;
   return intersect_instance(inst, world_ray, ray_t, scratch);
 }
@@ -365,12 +384,15 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   if (!found) return false;
   // A CSG block's hit shows one of its leaves: that leaf's instance has the material, uv and
   // transform of the surface; the block stays the medium.
-  const uint32_t shown = instances_[best_instance].kind == kCsgKind ? best.csg_part : best_instance;
+  // So does an instanced group's: `best` is in the group's space, carried here to the world's.
+  const Instance& placed = instances_[best_instance];
+  const bool grouped = placed.kind == kGroupKind;
+  const uint32_t shown = placed.kind == kCsgKind || grouped ? best.csg_part : best_instance;
   const Instance& inst = instances_[shown];
   hit.t = best.t;
   hit.instance = shown;
   hit.medium = best_instance;
-  hit.object_point = best.point;
+  hit.object_point = grouped ? best.leaf_point : best.point;
   hit.uv = best.uv;
   // Spherical UVs cost two inverse trigonometric calls: computed by surface_uv() only when a
   // texture asks for them.
@@ -381,7 +403,8 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   if (!kShapeInfos[inst.kind].has_tangents) best.dpdu = best.dpdv = Vec3(0.0);   // not set by the others
   // The world point is the shape's own (refined) object point carried to world space, not
   // ray.at(t): its error bound then stays relative to the shape, whatever the ray travelled.
-  if (inst.transform == kNoId) {
+  if (grouped && placed.transform != kNoId) group_to_parent(group_transforms_[placed.transform], best);
+  if (grouped || inst.transform == kNoId) {
     hit.point = best.point;
     hit.error = best.error;
     hit.normal = glm::normalize(best.normal);
@@ -479,6 +502,7 @@ bool World::shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& ou
 
 std::size_t World::bvh_nodes() const {
   std::size_t n = bvh_.nodes.size();
+  for (const Group& g : groups_) n += g.bvh.nodes.size();
   std::vector<const MeshAccel*> distinct;
   for (const auto& m : meshes_)
     if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {
@@ -502,12 +526,14 @@ std::size_t World::triangle_count() const {
 WorldMemory World::memory() const {
   WorldMemory w;
   w.instances = instances_.capacity() * sizeof(Instance) + planes_.capacity() * sizeof(uint32_t);
-  w.transforms = transforms_.capacity() * sizeof(InstanceTransform);
+  w.transforms = transforms_.capacity() * sizeof(InstanceTransform) +
+                 group_transforms_.capacity() * sizeof(GroupTransform);
+  for (const Group& g : groups_) w.bvh += g.bvh.nodes.capacity() * sizeof(BVHNode) + g.bvh.order.capacity() * sizeof(uint32_t);
   std::apply([&](const auto&... array) { ((w.shapes += array.capacity() * sizeof(array[0])), ...); }, shapes_);
   for (const Csg& c : csgs_)
     w.shapes += c.tree.nodes.capacity() * sizeof(CsgNode) + c.tree.children.capacity() * sizeof(uint32_t) +
                 c.leaf_instance.capacity() * sizeof(uint32_t) + c.leaf_bounds.capacity() * sizeof(AABB);
-  w.bvh = bvh_.nodes.capacity() * sizeof(BVHNode) + bvh_.order.capacity() * sizeof(uint32_t);
+  w.bvh += bvh_.nodes.capacity() * sizeof(BVHNode) + bvh_.order.capacity() * sizeof(uint32_t);
   std::vector<const MeshAccel*> distinct;
   for (const auto& m : meshes_)
     if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {

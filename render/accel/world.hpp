@@ -27,6 +27,10 @@ static_assert(kShapeKindCount < 255, "PrimKind is a byte, and 255 is a CSG block
 // A CSG block, traced as one instance (World::csgs_); the leaf whose surface a hit shows is
 // an instance of its own kind after every other (World::csg_part_count), never in the BVH.
 inline constexpr PrimKind kCsgKind = 255;
+// A placement of an instanced group (World::groups_): its shapes are instances of their own
+// kinds after the planes (World::group_part_count), reached through the group's BVH only.
+inline constexpr PrimKind kGroupKind = 254;
+static_assert(kShapeKindCount < 254, "PrimKind 254 is an instanced group");
 
 // One array per ShapeGeometry alternative (meshes' stays empty: they are kept by MeshId).
 template <class V>
@@ -54,6 +58,13 @@ struct InstanceTransform {
   Mat4 to_object{1.0};              // world → object
   glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
   glm::dmat3 vector_to_world{1.0};  // the object → world linear part (tangents)
+};
+
+// A group placement's transform: the affine rows only (the bottom row is 0 0 0 1), 192 bytes
+// instead of InstanceTransform's 400; the normal and tangent matrices are read off these.
+struct GroupTransform {
+  glm::dmat4x3 to_world{1.0};
+  glm::dmat4x3 to_object{1.0};
 };
 
 // A hit in world space, plus what shading needs from object space.
@@ -125,6 +136,9 @@ class World {
   std::size_t instance_count() const { return instances_.size(); }
   std::size_t plane_count() const { return planes_.size(); }
   std::size_t csg_part_count() const { return csg_parts_; }  // the last instances
+  // Shapes inside instanced groups: instances after the planes, before the CSG parts.
+  std::size_t group_part_count() const { return group_parts_; }
+  std::size_t group_count() const { return groups_.size(); }  // distinct instanced groups built
   std::size_t mesh_bvh_count() const;  // distinct mesh BVHs built
   const BVH& top_level() const { return bvh_; }
 
@@ -145,6 +159,20 @@ class World {
   void add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
                AABB& world_bounds);
   bool intersect_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit& hit) const;
+  // One shape placement (top level or inside a group): its instance and bounds in the
+  // placement's parent space; false when it can never be hit (singular, empty, not finite).
+  bool add_shape_instance(const SceneDesc& scene, const FlatShape& fs, Instance& inst, AABB& bounds,
+                          bool& unbounded);
+  // Instanced groups (world_groups.cpp): builds group `group`'s contents once (its parts go
+  // to `parts`), returning its index in groups_; `built` maps group index → groups_ index.
+  uint32_t group_accel(const SceneDesc& scene, const std::vector<bool>& instanced, uint32_t group, int level,
+                       bool specialize, std::vector<Instance>& parts, std::vector<uint32_t>& built);
+  // A placement of group `gi` by `to_world`: its instance and world box; false when it can
+  // never be hit.
+  bool add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst, AABB& bounds);
+  Ray group_ray(const Instance& inst, const Ray& parent_ray) const;
+  bool intersect_group(const Instance& inst, const Ray& parent_ray, const Interval& ray_t, SurfaceHit& hit) const;
+  bool occluded_group(const Instance& inst, const Ray& parent_ray, const Interval& ray_t) const;
 
   // A CSG block: its tree and the instance of each leaf (parts after every other instance).
   struct Csg {
@@ -155,6 +183,17 @@ class World {
 
   ShapeArrays shapes_;
   std::vector<Csg> csgs_;
+  // An instanced group's contents: parts instances_[first, first + count), in the group's
+  // space, under one BVH shared by every placement.
+  struct Group {
+    BVH bvh;
+    uint32_t first = 0, count = 0;
+    bool use_bvh = true;
+    AABB bounds;
+  };
+  std::vector<Group> groups_;
+  std::vector<GroupTransform> group_transforms_;
+  std::size_t group_parts_ = 0;
   // By MeshId; null when unreferenced. MeshIds whose data are identical (the same OBJ file
   // loaded by several statements) share one MeshAccel, so one BVH.
   std::vector<std::shared_ptr<const MeshAccel>> meshes_;

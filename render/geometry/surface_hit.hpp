@@ -24,7 +24,10 @@ struct SurfaceHit {
   uint32_t triangle;
   glm::dvec2 bary;
   // CSG blocks: the instance of the leaf whose surface this is (set and read for CSG only).
+  // Instanced groups: the same, the shape instance inside the group.
   uint32_t csg_part;
+  // Instanced groups: the leaf's object-space point (`point` is then in the group's space).
+  Vec3 leaf_point;
 };
 
 // Per-vertex material values interpolated at a hit (each only when the mesh has it).

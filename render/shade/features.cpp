@@ -127,6 +127,8 @@ constexpr FeatureRule kRules[] = {
     {Feature::Csg, "csg", Scope::Scene, [](const FeatureProbe&) { return false; }},
     // Decided by the World (World::uses_bvh) and added by the renderer.
     {Feature::Bvh, "bvh", Scope::Scene, [](const FeatureProbe&) { return false; }},
+    // Decided by flattening (instanced_groups) and added by the renderer.
+    {Feature::Instancing, "instancing", Scope::Scene, [](const FeatureProbe&) { return false; }},
     {Feature::Fog, "fog", Scope::Scene, [](const FeatureProbe& p) { return p.scene.settings.fog_distance > 0.0; }},
 };
 
@@ -175,6 +177,19 @@ unsigned trace_flags::for_features(const FeatureSet& f) {
   return flags;
 }
 
+namespace {
+// f(group index) for each distinct group the world places as an instance.
+template <class F>
+void for_each_instanced_group(const FlatScene& flat, F&& f) {
+  std::vector<bool> seen(flat.instanced.size(), false);
+  for (const FlatGroup& g : flat.groups)
+    if (g.group < seen.size() && !seen[g.group]) {
+      seen[g.group] = true;
+      f(g.group);
+    }
+}
+}  // namespace
+
 FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const FeatureContext& ctx) {
   FeatureSet f;
   // The default material (no material given) has the MaterialDesc defaults.
@@ -187,6 +202,10 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
     apply_rules(Scope::Shape, probe, f);
   };
   for (const FlatShape& fs : flat.shapes) add_shape(scene.shapes[fs.shape], scene.shapes[fs.shape].material);
+  // An instanced group's shapes, once per group (not per placement).
+  for_each_instanced_group(flat, [&](uint32_t g) {
+    for_each_group_shape(scene, g, [&](const ShapeDesc& s) { add_shape(s, s.material); });
+  });
   // What a CSG block shows is its leaves, each with its own material or the block's.
   for (const FlatCsg& fc : flat.csgs) {
     f.add(Feature::Csg);
@@ -213,6 +232,9 @@ std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
       for_each_texture(scene.materials[id], [&](TextureId t) { if (t < used.size()) used[t] = true; });
   };
   for (const FlatShape& fs : flat.shapes) use(scene.shapes[fs.shape], scene.shapes[fs.shape].material);
+  for_each_instanced_group(flat, [&](uint32_t g) {
+    for_each_group_shape(scene, g, [&](const ShapeDesc& s) { use(s, s.material); });
+  });
   for (const FlatCsg& fc : flat.csgs) for_each_csg_leaf(scene, fc.csg, use);
   if (scene.settings.environment < used.size()) used[scene.settings.environment] = true;
   return used;

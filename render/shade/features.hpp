@@ -30,6 +30,7 @@ enum class Feature : uint8_t {
   Csg,
   // acceleration
   Bvh,
+  Instancing,  // groups placed several times share one BVH (render/accel/flatten.hpp)
   // atmosphere
   Fog,
   Count

@@ -1,0 +1,51 @@
+// Carrying a SurfaceHit from a child's space into its parent's: the step an instanced group
+// adds between a shape's object space and the world (World::intersect does the last step
+// itself, with the normalisation and the world's hit record).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/accel/world.hpp"
+#include "render/geometry/ray.hpp"
+
+namespace rts::render {
+
+// The infinity norm of the 3x3 linear part (largest row sum of absolute values): how much it
+// can stretch a per-component error bound.
+template <class M>
+double linear_norm(const M& m) {
+  double best = 0.0;
+  for (int row = 0; row < 3; ++row)
+    best = std::max(best, std::abs(m[0][row]) + std::abs(m[1][row]) + std::abs(m[2][row]));
+  return best;
+}
+
+// Point, error bound, normals and tangents of `h` moved by the affine map `to_parent` (its
+// linear part `vec` for tangents, `nrm` (inverse transpose) for normals); the normals are
+// left unnormalised, as shapes report them. The error bound grows as pbrt-v4's transformed
+// point's: the linear part scales it, the product and the translation add rounding.
+inline void hit_to_parent(const Vec3& point, const glm::dmat3& vec, const Vec3& translation, const glm::dmat3& nrm,
+                          SurfaceHit& h) {
+  const double linear = linear_norm(vec);
+  h.error = linear * h.error * (1.0 + error_gamma(3)) +
+            error_gamma(3) * (linear * max_abs_component(h.point) + max_abs_component(translation));
+  h.point = point;
+  h.normal = nrm * h.normal;
+  h.shading_normal = nrm * h.shading_normal;
+  h.dpdu = vec * h.dpdu;
+  h.dpdv = vec * h.dpdv;
+}
+
+inline void group_to_parent(const GroupTransform& xf, SurfaceHit& h) {
+  const glm::dmat3 vec(xf.to_world);
+  hit_to_parent(xf.to_world * glm::dvec4(h.point, 1.0), vec, xf.to_world[3], glm::transpose(glm::dmat3(xf.to_object)),
+                h);
+}
+
+inline void shape_to_parent(const InstanceTransform& xf, SurfaceHit& h) {
+  hit_to_parent(Vec3(xf.to_world * glm::dvec4(h.point, 1.0)), xf.vector_to_world, Vec3(xf.to_world[3]),
+                xf.normal_to_world, h);
+}
+
+}  // namespace rts::render
