@@ -26,11 +26,13 @@ const std::map<std::string, std::string>& standard_includes() {
       {"glass.inc", "glass.inc"},     {"textures.inc", "textures.inc"}, {"shapes.inc", "shapes.inc"},
       {"skies.inc", "skies.inc"},     {"math.inc", ""},              {"transforms.inc", ""},
       {"functions.inc", ""},          {"rand.inc", ""},              {"strings.inc", ""},
-      {"arrays.inc", ""},             {"debug.inc", ""},             {"finish.inc", "textures.inc"}};
+      {"arrays.inc", ""},             {"debug.inc", ""},             {"finish.inc", "textures.inc"},
+      {"woods.inc", "woods.inc"},     {"stones.inc", "stones.inc"},  {"stones1.inc", "stones.inc"},
+      {"stones2.inc", "stones.inc"}};
   return m;
 }
 const std::set<std::string>& unshipped_includes() {
-  static const std::set<std::string> s = {"woods.inc", "stones.inc", "stones1.inc", "stones2.inc", "stars.inc",
+  static const std::set<std::string> s = {"stars.inc",
                                           "shapes2.inc", "shapesq.inc", "shapes_old.inc", "chars.inc",
                                           "skies.inc.old", "sunpos.inc", "screen.inc", "logo.inc", "rad_def.inc",
                                           "glass_old.inc", "meshmaker.inc", "makegrass.inc", "stdcam.inc",
