@@ -74,4 +74,27 @@ expect_exit 0 "--format pov" -- "$RTS" import --format pov "$TMP/scene.txt"
 cp "$golden/conv_gamma.pov" "$TMP/pov_text.rts"
 expect_exit 1 "an .rts scene is not imported" -- "$RTS" render "$TMP/pov_text.rts" -o "$TMP/x.png"
 expect_grep "$TMP/err" "pov_text.rts:2:1: error: POV-Ray's 'light_source'|pov_text.rts:[0-9]+:[0-9]+: error" "rts's own error"
+
+# POV-Ray's material libraries resolve in rts's (stdlib/woods.rts, stones.rts, metals.rts,
+# textures.rts): no warning, the names kept, and the scene renders.
+cat > "$TMP/lib.pov" <<'EOF'
+#include "woods.inc"
+#include "stones.inc"
+#include "metals.inc"
+#include "textures.inc"
+camera { location <0, 1, -4> look_at <0, 0.5, 0> }
+light_source { <-5, 8, -6> rgb 1 }
+plane { y, 0 texture { T_Wood20 } }
+sphere { <-1.2, 0.5, 0>, 0.5 texture { T_Stone25 } }
+sphere { <0, 0.5, 0>, 0.5 texture { T_Gold_3C } }
+sphere { <1.2, 0.5, 0>, 0.5 texture { Jade } }
+EOF
+expect_exit 0 "library materials import" -- "$RTS" import "$TMP/lib.pov"
+expect_grep "$TMP/out" '^include "woods.inc"' "woods.inc is a library include"
+expect_grep "$TMP/out" '^include "stones.inc"' "stones.inc is a library include"
+expect_grep "$TMP/out" "material = T_Wood20" "T_Wood20 kept"
+expect_grep "$TMP/out" "material = T_Stone25" "T_Stone25 kept"
+expect_grep "$TMP/out" "material = Jade" "Jade kept"
+if grep -q "warning" "$TMP/err"; then echo "FAIL: library names gave warnings:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); fi
+expect_exit 0 "library materials render" -- "$RTS" render "$TMP/lib.pov" -o "$TMP/lib.png" --width 16 --height 12 --no-progress
 finish
