@@ -386,6 +386,20 @@ void Translator::finish(const Block& b, MaterialProps& m) {
         finish(*s->block, m);
         continue;
       }
+      // A library finish (Shiny, Phong_Glossy, F_MetalC ...): its properties, which the
+      // items after it may change as in POV-Ray.
+      MaterialProps part;
+      if (library_part(it.args[0]->text, part)) {
+        for (const auto& p : part.props) m.set(p.first, p.second);
+        if (part.has("highlight")) {
+          // A Blinn finish's exponent stays unless a later roughness changes it.
+          for (const auto& p : part.props)
+            if (p.first == "shininess") roughness = p.second;
+        }
+        continue;
+      }
+      missing_name(it.loc, it.args[0]->text, "finish");
+      continue;
     }
     if (it.kind == Item::Nested && it.block->kind == "reflection") {
       // reflection { rmin rmax fresnel metallic }: the largest of the values.
@@ -446,13 +460,31 @@ void Translator::finish(const Block& b, MaterialProps& m) {
   }
 }
 
+bool Translator::library_part(const std::string& name, MaterialProps& m) {
+  // Only the library's own name: a scene's #declare of the same name (a block) wins.
+  Symbol* s = lookup(name);
+  if (!s || s->block) return false;
+  auto it = library_parts_.find(name);
+  if (it == library_parts_.end()) return false;
+  m = it->second;
+  return true;
+}
+
 void Translator::interior(const Block& b, MaterialProps& m) {
   for (const Item& it : b.items) {
-    if (it.kind == Item::Value && it.args[0]->kind == Expr::Name)
+    if (it.kind == Item::Value && it.args[0]->kind == Expr::Name) {
       if (Symbol* s = lookup(it.args[0]->text); s && s->block && s->type == Type::Interior) {
         interior(*s->block, m);
         continue;
       }
+      MaterialProps part;  // a library interior (I_Glass ...): its index
+      if (library_part(it.args[0]->text, part)) {
+        for (const auto& p : part.props) m.set(p.first, p.second);
+        continue;
+      }
+      missing_name(it.loc, it.args[0]->text, "interior");
+      continue;
+    }
     if (it.kind == Item::Keyword && it.name == "ior" && !it.args.empty()) {
       m.set("ior", value(*it.args[0]));
     } else if (it.kind == Item::Keyword && (it.name == "fade_distance" || it.name == "fade_power" ||

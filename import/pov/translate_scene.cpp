@@ -26,7 +26,7 @@ const std::map<std::string, std::string>& standard_includes() {
       {"glass.inc", "glass.inc"},     {"textures.inc", "textures.inc"}, {"shapes.inc", "shapes.inc"},
       {"skies.inc", "skies.inc"},     {"math.inc", ""},              {"transforms.inc", ""},
       {"functions.inc", ""},          {"rand.inc", ""},              {"strings.inc", ""},
-      {"arrays.inc", ""},             {"debug.inc", ""},             {"finish.inc", "textures.inc"},
+      {"arrays.inc", ""},             {"debug.inc", ""},             {"finish.inc", "finish.inc"},
       {"woods.inc", "woods.inc"},     {"stones.inc", "stones.inc"},  {"stones1.inc", "stones.inc"},
       {"stones2.inc", "stones.inc"}};
   return m;
@@ -635,6 +635,48 @@ void Translator::global_settings(Writer& w, const Block& b) {
   }
 }
 
+void Translator::declare_library_file(const std::string& file) {
+  if (!library_files_.insert(file).second) return;
+  std::ifstream lib(fs::path(opt_.stdlib_dir) / file);
+  std::string line;
+  while (std::getline(lib, line)) {
+    if (line.rfind("include \"", 0) == 0) {
+      // rts's include makes the included file's names visible too (textures.rts: metals, glass,
+      // finish ...).
+      std::size_t e = line.find('"', 9);
+      if (e != std::string::npos) declare_library_file(line.substr(9, e - 9));
+    } else if (line.rfind("let ", 0) == 0) {
+      std::size_t e = line.find_first_of(" =", 4);
+      std::string n = line.substr(4, e == std::string::npos ? std::string::npos : e - 4);
+      library_names_.insert(n);
+      Symbol s{line.find("rgb(") != std::string::npos ? Type::Color : Type::Unknown, nullptr, ""};
+      if (line.find("material") != std::string::npos) s.type = Type::Material;
+      scopes_.front()[n] = s;
+      // A one-line material of literal properties: kept for finish { N } and interior { N }.
+      std::size_t open = line.find("= material { "), close = line.find(" }");
+      if (open != std::string::npos && close != std::string::npos && close > open) {
+        std::string body = line.substr(open + 13, close - open - 13);
+        MaterialProps props;
+        std::size_t at = 0;
+        while (at < body.size()) {
+          std::size_t next = body.find("  ", at);
+          std::string pair = body.substr(at, next == std::string::npos ? std::string::npos : next - at);
+          std::size_t eq = pair.find(" = ");
+          if (eq != std::string::npos) props.set(pair.substr(0, eq), pair.substr(eq + 3));
+          if (next == std::string::npos) break;
+          at = next + 2;
+        }
+        library_parts_[n] = props;
+      }
+    } else if (line.rfind("macro ", 0) == 0) {
+      std::size_t e = line.find('(', 6);
+      std::string n = line.substr(6, e == std::string::npos ? std::string::npos : e - 6);
+      library_names_.insert(n);
+      scopes_.front()[n] = Symbol{Type::Macro, nullptr, ""};
+    }
+  }
+}
+
 void Translator::include(Writer& w, const Item& it) {
   const std::string& name = it.name;
   fs::path found;
@@ -658,25 +700,7 @@ void Translator::include(Writer& w, const Item& it) {
       }
       w.line(fmt::format("include \"{}\"", std_it->second));
       // The names the library file defines: declared for the translation.
-      if (!opt_.stdlib_dir.empty()) {
-        std::ifstream lib(fs::path(opt_.stdlib_dir) / (fs::path(std_it->second).stem().string() + ".rts"));
-        std::string line;
-        while (std::getline(lib, line)) {
-          if (line.rfind("let ", 0) == 0) {
-            std::size_t e = line.find_first_of(" =", 4);
-            std::string n = line.substr(4, e == std::string::npos ? std::string::npos : e - 4);
-            library_names_.insert(n);
-            Symbol s{line.find("rgb(") != std::string::npos ? Type::Color : Type::Unknown, nullptr, ""};
-            if (line.find("material") != std::string::npos) s.type = Type::Material;
-            scopes_.front()[n] = s;
-          } else if (line.rfind("macro ", 0) == 0) {
-            std::size_t e = line.find('(', 6);
-            std::string n = line.substr(6, e == std::string::npos ? std::string::npos : e - 6);
-            library_names_.insert(n);
-            scopes_.front()[n] = Symbol{Type::Macro, nullptr, ""};
-          }
-        }
-      }
+      if (!opt_.stdlib_dir.empty()) declare_library_file(fs::path(std_it->second).stem().string() + ".rts");
       return;
     }
     if (unshipped_includes().count(base)) {

@@ -96,6 +96,8 @@ class Translator {
   void camera(Writer& w, const Block& b);
   void global_settings(Writer& w, const Block& b);
   void include(Writer& w, const Item& it);
+  void declare_library_file(const std::string& file);  // its names, and the files it includes
+  bool library_part(const std::string& name, MaterialProps& m);  // a finish/interior name merged
   void hoist(Writer& w, const std::vector<Item>& body);
 
   // ---- diagnostics ----
@@ -114,6 +116,11 @@ class Translator {
   std::set<std::string> included_;
   std::set<std::string> reader_names_;  // declared names, for the reader (reader.hpp)
   std::set<std::string> library_names_;  // names the included standard library files define
+  std::set<std::string> library_files_;  // the library files whose names are declared
+  // One-line `let N = material { k = v  k = v }` of the library (its finishes and interiors:
+  // Shiny, I_Glass ...): the properties, merged into the material a POV-Ray finish/interior
+  // naming N is translated to.
+  std::map<std::string, MaterialProps> library_parts_;
   bool library_known_ = false;           // options.stdlib_dir was read: an unknown name is missing
   std::vector<std::string> group_material_;
   int csg_depth_ = 0;
