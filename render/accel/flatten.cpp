@@ -42,7 +42,7 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
     case NodeKind::Shape:
       if (node.index >= scene.shapes.size()) throw RenderError(node.loc, "internal: unknown shape");
       check_transform(m, child.loc);
-      out.shapes.push_back(FlatShape{node.index, m, child.loc});
+      out.add_shape(node.index, m);
       break;
     case NodeKind::Light:
       if (node.index >= scene.lights.size()) throw RenderError(node.loc, "internal: unknown light");

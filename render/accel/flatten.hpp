@@ -11,10 +11,13 @@
 
 namespace rts::render {
 
+// 8 bytes: most placements carry no transform of their own (spheres placed by their centre),
+// and the composed transforms that exist are kept in FlatScene::transforms. Finding (issue 24,
+// 4M spheres): with a 128-byte matrix and a location each, the flat copy was 152 bytes per
+// sphere at the peak of the build.
 struct FlatShape {
   uint32_t shape = 0;          // index into SceneDesc::shapes
-  Mat4 to_world{1.0};
-  SourceRef loc;               // where the instance was placed
+  uint32_t transform = kNoId;  // into FlatScene::transforms; kNoId: the identity
 };
 
 // A CSG block placed in the world: traced as one object (its children are not flattened).
@@ -34,11 +37,25 @@ struct FlatGroup {
 
 struct FlatScene {
   std::vector<FlatShape> shapes;
+  std::vector<Mat4> transforms;   // the shapes' child → world transforms other than the identity
   std::vector<FlatCsg> csgs;
   std::vector<LightDesc> lights;  // already in world space
   std::vector<FlatGroup> groups;  // placements of instanced groups (their shapes are not in `shapes`)
   // By group index: traced as a shared instance (instanced_groups), empty when none is.
   std::vector<bool> instanced;
+
+  void add_shape(uint32_t shape, const Mat4& to_world) {
+    FlatShape fs{shape, kNoId};
+    if (to_world != Mat4(1.0)) {
+      fs.transform = static_cast<uint32_t>(transforms.size());
+      transforms.push_back(to_world);
+    }
+    shapes.push_back(fs);
+  }
+  const Mat4& to_world(const FlatShape& fs) const {
+    static const Mat4 identity(1.0);
+    return fs.transform == kNoId ? identity : transforms[fs.transform];
+  }
 };
 
 // A group is instanced when it is placed at least twice (two Child entries name it), holds at

@@ -134,26 +134,26 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
   csgs_.push_back(std::move(csg));
 }
 
-bool World::add_shape_instance(const SceneDesc& scene, const FlatShape& fs, Instance& inst, AABB& bounds,
-                               bool& unbounded) {
-  const ShapeDesc& shape = scene.shapes[fs.shape];
+bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, const Mat4& to_world, Instance& inst,
+                               AABB& bounds, bool& unbounded) {
+  const ShapeDesc& shape = scene.shapes[shape_index];
   inst.material = shape.material;
   if (shape.material < scene.materials.size()) {
     const Color& t = scene.materials[shape.material].transmit;
     inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
     has_transmissive_ = has_transmissive_ || inst.transmissive;
   }
-  bool identity = is_identity(fs.to_world);
+  bool identity = is_identity(to_world);
   if (!identity) {
-    double det = glm::determinant(glm::dmat3(fs.to_world));
+    double det = glm::determinant(glm::dmat3(to_world));
     if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) return false;
-    inst.transform = add_transform(fs.to_world);
+    inst.transform = add_transform(to_world);
   }
   AABB object_bounds;
   add_geometry(scene, shape, inst, object_bounds, unbounded);
   if (unbounded) return true;
   if (!object_bounds.valid()) return false;  // empty mesh, nothing to hit
-  bounds = identity ? object_bounds : transform_bounds(fs.to_world, object_bounds);
+  bounds = identity ? object_bounds : transform_bounds(to_world, object_bounds);
   return bounds.finite();                    // NaN/inf coordinates: never hit
 }
 
@@ -161,11 +161,17 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   meshes_.resize(scene.meshes.size());
   std::vector<Instance> bounded, unbounded, parts;
   std::vector<AABB> boxes;
+  // Sized once: grown by doubling, the box array (48 bytes per object) and the instances left
+  // their outgrown blocks resident in the heap through the BVH build.
+  const std::size_t objects = flat.shapes.size() + flat.groups.size() + flat.csgs.size();
+  bounded.reserve(objects);
+  boxes.reserve(objects);
+  transforms_.reserve(flat.transforms.size());
   for (const FlatShape& fs : flat.shapes) {
     Instance inst;
     AABB world_bounds;
     bool unbounded_shape = false;
-    if (!add_shape_instance(scene, fs, inst, world_bounds, unbounded_shape)) continue;
+    if (!add_shape_instance(scene, fs.shape, flat.to_world(fs), inst, world_bounds, unbounded_shape)) continue;
     if (unbounded_shape) {
       unbounded.push_back(inst);
       continue;

@@ -24,7 +24,7 @@ uint32_t World::group_accel(const SceneDesc& scene, const std::vector<bool>& ins
     AABB box;
     bool unbounded = false;
     // instanced_groups admits bounded shapes only; a shape that cannot be hit is left out.
-    if (!add_shape_instance(scene, fs, inst, box, unbounded) || unbounded) continue;
+    if (!add_shape_instance(scene, fs.shape, local.to_world(fs), inst, box, unbounded) || unbounded) continue;
     mine.push_back(inst);
     boxes.push_back(box);
   }

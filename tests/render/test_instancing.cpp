@@ -25,7 +25,7 @@ FlatScene copied(const SceneDesc& s) {
   FlatScene out;
   for (const Child& root : s.roots) {
     FlatScene one = flatten_instance(s, root);
-    out.shapes.insert(out.shapes.end(), one.shapes.begin(), one.shapes.end());
+    for (const FlatShape& fs : one.shapes) out.add_shape(fs.shape, one.to_world(fs));
   }
   return out;
 }

@@ -123,7 +123,7 @@ TEST_CASE("scale 0 is reported by flattening instead of giving NaNs", "[transfor
   CHECK_THROWS_WITH(flatten_scene(s), "transform is singular (scale 0?)");
   // World, given such an instance anyway, skips it rather than tracing NaNs.
   FlatScene flat;
-  flat.shapes.push_back(FlatShape{0, scale(Vec3(0)), {}});
+  flat.add_shape(0, scale(Vec3(0)));
   World w(s, flat);
   WorldHit h;
   CHECK_FALSE(w.intersect(Ray{Vec3(0, 0, -5), Vec3(0, 0, 1)}, Interval::positive(), h));
