@@ -38,15 +38,12 @@ constexpr std::array<uint8_t, 512> kPerm = make_permutation();
 double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 double lerp(double t, double a, double b) { return a + t * (b - a); }
 
-// Perlin's 12 edge gradients (16 cases, four repeated), as in his reference code, as a table:
-// a dot product instead of his branches, which mispredict on every other corner.
+// Perlin's 12 edge gradients (16 cases, four repeated), as in his reference code, as a table
+// (indexed by hash & 15): a dot product instead of his branches, which mispredict on every
+// other corner.
 constexpr double kGrad[16][3] = {{1, 1, 0},  {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1},
                                  {1, 0, -1}, {-1, 0, -1}, {0, 1, 1},  {0, -1, 1}, {0, 1, -1}, {0, -1, -1},
                                  {1, 1, 0},  {0, -1, 1}, {-1, 1, 0}, {0, -1, -1}};
-double grad(int hash, double x, double y, double z) {
-  const double* g = kGrad[hash & 15];
-  return g[0] * x + g[1] * y + g[2] * z;
-}
 
 // Beyond this magnitude a double has no fractional part left: the noise is 0 there (as at a
 // lattice point), and the integer conversions below cannot overflow.
@@ -79,6 +76,7 @@ constexpr int kComponentOffset[3] = {0, 85, 170};
 // (-ffp-contract=off keeps them unfused): tests/render/test_noise.cpp's exact values hold.
 using Pair2 = double __attribute__((vector_size(16)));
 inline Pair2 lerp2(double t, Pair2 a, Pair2 b) { return a + t * (b - a); }
+inline Pair2 fade2(Pair2 t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 
 // For each corner hash h, the gradients the three components use there: component 0 takes
 // kGrad[h], components 1 and 2 kGrad[kPerm[h + kComponentOffset[c]]] (re-hashed, so the three
@@ -121,14 +119,27 @@ double gradient_noise(const Vec3& p) {
   const double fx = fast_floor(p.x), fy = fast_floor(p.y), fz = fast_floor(p.z);
   const int X = lattice(fx), Y = lattice(fy), Z = lattice(fz);
   const double x = p.x - fx, y = p.y - fy, z = p.z - fz;
-  const double u = fade(x), v = fade(y), w = fade(z);
+  const Pair2 uv = fade2(Pair2{x, y});
+  const double u = uv[0], v = uv[1], w = fade(z);
   const int A = kPerm[X] + Y, AA = kPerm[A] + Z, AB = kPerm[A + 1] + Z;
   const int B = kPerm[X + 1] + Y, BA = kPerm[B] + Z, BB = kPerm[B + 1] + Z;
-  const double r = lerp(w,
-                        lerp(v, lerp(u, grad(kPerm[AA], x, y, z), grad(kPerm[BA], x - 1, y, z)),
-                             lerp(u, grad(kPerm[AB], x, y - 1, z), grad(kPerm[BB], x - 1, y - 1, z))),
-                        lerp(v, lerp(u, grad(kPerm[AA + 1], x, y, z - 1), grad(kPerm[BA + 1], x - 1, y, z - 1)),
-                             lerp(u, grad(kPerm[AB + 1], x, y - 1, z - 1), grad(kPerm[BB + 1], x - 1, y - 1, z - 1))));
+  // Perlin's lerp(w, lerp(v, lerp(u, c0, c1), lerp(u, c2, c3)), lerp(v, lerp(u, c4, c5), ..))
+  // over the corners c0..c7 (corner i at (i & 1, (i >> 1) & 1, i >> 2)), with each corner below
+  // paired with the one above it: the same IEEE operations per element, half the instructions
+  // for the u and v lerps and the gradient ramps (as vector_noise_inline's component 2).
+  const int lo[4] = {kPerm[AA], kPerm[BA], kPerm[AB], kPerm[BB]};
+  const int hi[4] = {kPerm[AA + 1], kPerm[BA + 1], kPerm[AB + 1], kPerm[BB + 1]};
+  const double xs[2] = {x, x - 1}, ys[2] = {y, y - 1};
+  const Pair2 zs2 = {z, z - 1};
+  Pair2 c[4];
+#pragma GCC unroll 4
+  for (int j = 0; j < 4; ++j) {
+    const double* gl = kGrad[lo[j] & 15];
+    const double* gh = kGrad[hi[j] & 15];
+    c[j] = Pair2{gl[0], gh[0]} * xs[j & 1] + Pair2{gl[1], gh[1]} * ys[j >> 1] + Pair2{gl[2], gh[2]} * zs2;
+  }
+  const Pair2 rv = lerp2(v, lerp2(u, c[0], c[1]), lerp2(u, c[2], c[3]));
+  const double r = lerp(w, rv[0], rv[1]);
   // The sum of eight gradient ramps peaks just above 1 in a few corners of the cell; the
   // documented range is [-1, 1].
   return std::clamp(r, -1.0, 1.0);
@@ -172,25 +183,38 @@ namespace {
   const double fx = fast_floor(p.x), fy = fast_floor(p.y), fz = fast_floor(p.z);
   const int X = lattice(fx), Y = lattice(fy), Z = lattice(fz);
   const double x = p.x - fx, y = p.y - fy, z = p.z - fz;
-  const double u = fade(x), v = fade(y), w = fade(z);
+  // x's and y's fades as a pair (the same operations per element as fade()).
+  const Pair2 uv = fade2(Pair2{x, y});
+  const double u = uv[0], v = uv[1], w = fade(z);
   const int A = kPerm[X] + Y, AA = kPerm[A] + Z, AB = kPerm[A + 1] + Z;
   const int B = kPerm[X + 1] + Y, BA = kPerm[B] + Z, BB = kPerm[B + 1] + Z;
   const int corner[8] = {kPerm[AA], kPerm[BA], kPerm[AB], kPerm[BB], kPerm[AA + 1], kPerm[BA + 1], kPerm[AB + 1], kPerm[BB + 1]};
   // Corner i sits at (i & 1, (i >> 1) & 1, i >> 2) in the cell.
   const double xs[2] = {x, x - 1}, ys[2] = {y, y - 1}, zs[2] = {z, z - 1};
   Pair2 d01[8];    // components 0 and 1's gradient ramps at each corner
-  double d2[8];    // component 2's
 #pragma GCC unroll 8
   for (int i = 0; i < 8; ++i) {
     const CornerGradients& g = kCornerGradients[corner[i]];
     const double cx = xs[i & 1], cy = ys[(i >> 1) & 1], cz = zs[i >> 2];
     d01[i] = g.x01 * cx + g.y01 * cy + g.z01 * cz;
-    d2[i] = g.g2[0] * cx + g.g2[1] * cy + g.g2[2] * cz;
   }
   const Pair2 r01 = lerp2(w, lerp2(v, lerp2(u, d01[0], d01[1]), lerp2(u, d01[2], d01[3])),
                           lerp2(v, lerp2(u, d01[4], d01[5]), lerp2(u, d01[6], d01[7])));
-  const double r2 = lerp(w, lerp(v, lerp(u, d2[0], d2[1]), lerp(u, d2[2], d2[3])),
-                         lerp(v, lerp(u, d2[4], d2[5]), lerp(u, d2[6], d2[7])));
+  // Component 2 pairs the corner below (z) with the one above it: d2[j] holds corners j and
+  // j + 4, so the u and v lerps run on both z layers at once and only the last (w) is scalar.
+  // The same IEEE operations on each element as lerp(w, lerp(v, lerp(u, ..), ..), ..) of the
+  // eight scalars (profile finding: component 2 alone was a third of the octave's arithmetic).
+  const Pair2 zs2 = {z, z - 1};
+  Pair2 d2[4];
+#pragma GCC unroll 4
+  for (int j = 0; j < 4; ++j) {
+    const CornerGradients& lo = kCornerGradients[corner[j]];
+    const CornerGradients& hi = kCornerGradients[corner[j + 4]];
+    const double cx = xs[j & 1], cy = ys[j >> 1];
+    d2[j] = Pair2{lo.g2[0], hi.g2[0]} * cx + Pair2{lo.g2[1], hi.g2[1]} * cy + Pair2{lo.g2[2], hi.g2[2]} * zs2;
+  }
+  const Pair2 r2v = lerp2(v, lerp2(u, d2[0], d2[1]), lerp2(u, d2[2], d2[3]));
+  const double r2 = lerp(w, r2v[0], r2v[1]);
   return {std::clamp(r01[0], -1.0, 1.0), std::clamp(r01[1], -1.0, 1.0), std::clamp(r2, -1.0, 1.0)};
 }
 
