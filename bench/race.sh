@@ -13,7 +13,8 @@
 #
 # Scenes: spheres (400 reflective spheres and a glass one), terrain (320k-triangle height field,
 # camera + shadow rays), grid90k (90,000 spheres placed by loops), soft (16-sample area light,
-# 4 spp), glass (nested glass, depth 10), loop (a 1M-iteration evaluation loop: `rts check`
+# 4 spp), glossy (blurred reflections: roughness 0.1-0.2, 4 spp; POV-Ray's micro-normals with
+# the same 2x2 supersampling), glass (nested glass, depth 10), loop (a 1M-iteration evaluation loop: `rts check`
 # against POV-Ray parsing), mesh2m (a 2M-triangle height field: memory and BVH build rate),
 # patterns (wood, marble, granite, agate and bumps: procedural texture cost), csg (36 dice as
 # box-and-sphere intersections minus six pips, lenses, a cut torus), isosurface (three compiled
@@ -26,7 +27,7 @@ W="${W:-800}"
 H="${H:-600}"
 RUNS="${RUNS:-3}"
 THREADS="${THREADS:-2}"
-SCENES="${SCENES:-spheres terrain grid90k soft glass loop mesh2m patterns csg isosurface}"
+SCENES="${SCENES:-spheres terrain grid90k soft glossy glass loop mesh2m patterns csg isosurface}"
 build="$root/${RTS_BUILD_DIR:-build}"
 
 "$root/scripts/ensure-deps" --bench
@@ -63,11 +64,11 @@ commands() {
     loop)
       rts_cmd=("$rts" check eval_loop.rts)
       pov_cmd=(povray +Ieval_loop.pov +Oloop.pov.png +W8 +H8 -D -A +FN -GA) ;;
-    soft)
-      rts_cmd=("$rts" render soft.rts -o soft.rts.png --width "$W" --height "$H" --threads "$THREADS" --no-progress)
+    soft|glossy)
+      rts_cmd=("$rts" render "$1.rts" -o "$1.rts.png" --width "$W" --height "$H" --threads "$THREADS" --no-progress)
       # POV-Ray's antialiasing as 4 spp: method 1 with threshold 0 supersamples every pixel
       # that differs from its neighbours at all with 2x2 rays (rts: 4 stratified samples).
-      pov_cmd=(povray +Isoft.pov +Osoft.pov.png "+W$W" "+H$H" -D +AM1 +A0.0 +R2 -J "+WT$THREADS" -GA) ;;
+      pov_cmd=(povray "+I$1.pov" "+O$1.pov.png" "+W$W" "+H$H" -D +AM1 +A0.0 +R2 -J "+WT$THREADS" -GA) ;;
     *)
       rts_cmd=("$rts" render "$1.rts" -o "$1.rts.png" --width "$W" --height "$H" --threads "$THREADS" --no-progress)
       pov_cmd=(povray "+I$1.pov" "+O$1.pov.png" "+W$W" "+H$H" -D -A "+WT$THREADS" -GA) ;;
