@@ -95,6 +95,29 @@ struct ShadowCrossings {
   uint32_t instance[tol::kMaxShadowSurfaces];
 };
 
+// The region every shadow segment from one shading point to an area light lies in: the
+// pyramid with the point as apex over the light's rectangle, given as its box and the outward
+// planes of its sides (World::occluder_candidates).
+struct ShadowRegion {
+  AABB box;
+  int planes = 0;
+  Vec3 normal[4];        // unit, outward
+  double offset[4];      // a point x is outside a side when dot(normal, x) > offset
+  Vec3 vertex[5];        // the apex (every ray's origin) and the light's corners
+  double slack = 0.0;    // how far the segments may stray from the pyramid (rounding)
+};
+
+// The BVH leaves (or, without a BVH, the bounded instances) that may block a shadow segment
+// inside a ShadowRegion: the shading point's shadow rays towards an area light test these few
+// objects instead of walking the BVH once per light sample.
+struct OccluderCandidates {
+  static constexpr int kMax = 8;
+  int count = 0;
+  uint32_t leaf[kMax];   // BVH node indices (leaves), or instance indices without a BVH
+  int plane_count = 0;
+  uint32_t plane[kMax];  // the unbounded planes that cross the region (instance indices)
+};
+
 // Bytes held by each part of the world, for --stats.
 struct WorldMemory {
   std::size_t instances = 0, transforms = 0, shapes = 0, bvh = 0, meshes = 0;
@@ -115,6 +138,13 @@ class World {
   // a transmissive surface is in `out` (each instance is re-tested only along its own
   // crossings, instead of re-walking the whole scene with closest-hit steps).
   bool shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& out) const;
+  // The leaves whose boxes meet `region` (its box, and no side plane leaves them outside),
+  // into `out`; false (and `out` unusable) when there are more than OccluderCandidates::kMax or
+  // the region is not a box (NaN).
+  bool occluder_candidates(const ShadowRegion& region, OccluderCandidates& out) const;
+  // occluded(ray, ray_t) for a segment inside the region `candidates` were found for: the same
+  // answer, testing only the candidates' planes and leaves (box first, as traversal does).
+  bool occluded_by(const OccluderCandidates& candidates, const Ray& ray, Interval ray_t) const;
   bool uses_bvh() const { return use_bvh_; }
   std::size_t bvh_nodes() const;         // top level plus each distinct mesh BVH
   std::size_t triangle_count() const;    // in each distinct mesh

@@ -62,6 +62,13 @@ inline constexpr double kTinyLength = 1e-300;
 // light's own position never counts as an occluder.
 inline constexpr double kShadowEndRelative = 1e-9;
 
+// The box around every shadow segment from one shading point to an area light (World::
+// occluder_candidates) grows by this much relative to its largest coordinate (plus the
+// origin's offset): the segments' end points are rounded sums of the light's corners and
+// the ray direction, ~1e-16 relative away from the exact hull. Too large only costs a
+// candidate more; too small could drop an occluder.
+inline constexpr double kShadowHullPadRelative = 1e-9;
+
 // Shadow rays pass through at most this many transmissive surfaces before giving up (and
 // treating the light as blocked): bounds the cost of stacked glass.
 inline constexpr int kMaxShadowSurfaces = 64;
