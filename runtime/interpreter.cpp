@@ -128,14 +128,29 @@ void Interpreter::exec_include(const ast::IncludeStmt& s) {
 // ---------------------------------------------------------------------------------------
 
 void Interpreter::declare(ast::Symbol name, Value value, SourceLoc loc) {
-  for (std::size_t i = scopes_.back(); i < bindings_.size(); ++i) {
-    if (bindings_[i].name == name) {
-      Diagnostic d;
-      d.loc = loc;
-      d.message = fmt::format("'{}' is already defined in this scope (assign with '{} = ...' instead)", *name, *name);
-      d.notes.push_back(Note{bindings_[i].loc, "previously defined here"});
-      throw LanguageError(std::move(d));
+  const std::size_t scope = scopes_.back();
+  std::size_t previous = kNoScope;
+  if (bindings_.size() - scope < kScannedScopeNames) {
+    for (std::size_t i = scope; i < bindings_.size(); ++i)
+      if (bindings_[i].name == name) {
+        previous = i;
+        break;
+      }
+  } else {
+    if (indexed_scope_ != scope) {
+      forget_scope_index();
+      indexed_scope_ = indexed_end_ = scope;
     }
+    for (; indexed_end_ < bindings_.size(); ++indexed_end_)
+      scope_index_.emplace(bindings_[indexed_end_].name, indexed_end_);
+    if (auto it = scope_index_.find(name); it != scope_index_.end()) previous = it->second;
+  }
+  if (previous != kNoScope) {
+    Diagnostic d;
+    d.loc = loc;
+    d.message = fmt::format("'{}' is already defined in this scope (assign with '{} = ...' instead)", *name, *name);
+    d.notes.push_back(Note{bindings_[previous].loc, "previously defined here"});
+    throw LanguageError(std::move(d));
   }
   bindings_.push_back(Binding{name, std::move(value), loc});
 }

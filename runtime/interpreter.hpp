@@ -130,8 +130,14 @@ class Interpreter {
   // scopes
   void push_scope() { scopes_.push_back(bindings_.size()); }
   void pop_scope() {
+    if (scopes_.back() < indexed_end_) forget_scope_index();
     bindings_.resize(scopes_.back());
     scopes_.pop_back();
+  }
+  void forget_scope_index() {
+    scope_index_.clear();
+    indexed_scope_ = kNoScope;
+    indexed_end_ = 0;
   }
   void declare(ast::Symbol name, Value value, SourceLoc loc);
   Binding* lookup(ast::Symbol name);
@@ -181,6 +187,14 @@ class Interpreter {
 
   std::vector<Binding> bindings_;
   std::vector<std::size_t> scopes_;
+  // declare()'s duplicate check in a scope of many names (10 MB of `let`s: a scan per
+  // declaration made the file quadratic, minutes of evaluation): the first binding of each
+  // name in bindings_[indexed_scope_, indexed_end_), caught up on the next declaration in that
+  // scope, forgotten when the scope's bindings are popped. Small scopes are scanned.
+  static constexpr std::size_t kNoScope = ~std::size_t{0};
+  static constexpr std::size_t kScannedScopeNames = 32;
+  std::unordered_map<ast::Symbol, std::size_t> scope_index_;
+  std::size_t indexed_scope_ = kNoScope, indexed_end_ = 0;
   std::size_t frame_base_ = 0;  // first binding of the current macro frame (0 at top level)
   std::vector<Context> contexts_;
   // Macro arguments between their evaluation and their binding (call_macro), all calls' in one.

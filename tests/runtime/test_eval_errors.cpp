@@ -90,3 +90,27 @@ TEST_CASE("limits stop runaway scenes", "[errors][limits]") {
   CHECK_THAT(eval_error("let s = sphere { radius = 1 }\nfor i in 0 .. 11 { s }", objs),
              Catch::Contains("more than 10 objects placed"));
 }
+
+TEST_CASE("a name declared twice in a scope of many names is still found", "[errors]") {
+  // Past 32 names a scope's duplicate check uses an index (10 MB of `let`s were quadratic);
+  // it must find the first definition, forget a popped scope and see names bound by loops.
+  std::string lets;
+  for (int i = 0; i < 100; ++i) lets += "let v" + std::to_string(i) + " = " + std::to_string(i) + "\n";
+  Diagnostic d = eval_diagnostic(lets + "let v7 = 1\n");
+  CHECK(d.message.find("'v7' is already defined") == 0);
+  CHECK(d.loc.line == 101);
+  REQUIRE(d.notes.size() == 1);
+  CHECK(d.notes[0].loc.line == 8);
+  // Each iteration's body is a new scope with the same start: the same 40 names again are fine.
+  std::string body;
+  for (int i = 0; i < 40; ++i) body += " let w" + std::to_string(i) + " = i\n";
+  CHECK_NOTHROW(rts::test::eval_text(lets + "for i in 0 .. 3 {\n" + body + "}\n"));
+  // ... and a duplicate inside such a body is found in every iteration's scope.
+  Diagnostic in_loop = eval_diagnostic(lets + "for i in 0 .. 3 {\n" + body + " let w3 = 0\n}\n");
+  CHECK(in_loop.message.find("'w3' is already defined") == 0);
+  CHECK(in_loop.notes.at(0).loc.line == 105);
+  // A global defined after a big loop scope was popped is checked against the globals.
+  Diagnostic after = eval_diagnostic(lets + "for i in 0 .. 2 {\n" + body + "}\nlet v99 = 0\n");
+  CHECK(after.message.find("'v99' is already defined") == 0);
+  CHECK(after.notes.at(0).loc.line == 100);
+}
