@@ -4,7 +4,7 @@
 # over one thread. Prints a table; writes it between the "scaling:begin"/"scaling:end" markers
 # of docs/performance.md and plots it into docs/images/perf_scaling.svg (NO_DOC=1: print only).
 #
-#   bench/scaling.sh                          # 400x300, 3 runs, spheres soft glass terrain
+#   bench/scaling.sh                          # 400x300, 3 runs, spheres soft glossy glass terrain
 #   W=800 H=600 RUNS=5 SCENES="soft" bench/scaling.sh
 #   RTS_BIN=/path/to/rts NO_DOC=1 bench/scaling.sh   # a binary built elsewhere (another machine)
 set -euo pipefail
@@ -12,7 +12,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 W="${W:-400}"
 H="${H:-300}"
 RUNS="${RUNS:-3}"
-SCENES="${SCENES:-spheres soft glass terrain}"
+SCENES="${SCENES:-spheres soft glossy glass terrain}"
 build="$root/${RTS_BUILD_DIR:-build}"
 load_at_start="$(cut -d' ' -f1-3 /proc/loadavg)"
 if [[ -n "${RTS_BIN:-}" ]]; then
