@@ -30,7 +30,7 @@ print(f'{s["evaluate"]:.3f} {s["build"]:.3f} {float(wall):.2f} {int(kb) / 1024:.
 PY
 }
 
-printf '| spheres (group x placements) | binary | evaluate | build | wall | peak RSS | bytes per sphere |\n|---|---|---|---|---|---|---|\n'
+printf '| spheres (group x placements) | binary | evaluate | build | wall | peak RSS (MiB) | bytes per sphere |\n|---|---|---|---|---|---|---|\n'
 for size in $SIZES; do
   m="${size%x*}" c="${size#*x}"
   spheres=$((m * m * c * c))
@@ -46,7 +46,7 @@ for size in $SIZES; do
   done
   for b in "${bins[@]}"; do
     peak="$(median ${pk[$b]})"
-    printf '| %d (%d x %d) | %s | %s s | %s s | %s s | %s MB | %d |\n' "$spheres" $((m * m)) $((c * c)) \
+    printf '| %d (%d x %d) | %s | %s s | %s s | %s s | %s | %d |\n' "$spheres" $((m * m)) $((c * c)) \
       "$(basename "$b")" "$(median ${ev[$b]})" "$(median ${bu[$b]})" "$(median ${wa[$b]})" "$peak" \
       "$(python3 -c "print(round($peak * 1048576 / $spheres))")"
   done
