@@ -440,7 +440,7 @@ void Translator::finish(const Block& b, MaterialProps& m) {
       specular = true;
     } else if (k == "roughness" && !v.empty()) {
       double r;
-      roughness = literal_number(*it.args[0], r) && r > 0 ? num(1 / r) : "1 / " + v;
+      roughness = literal_number(*it.args[0], r) && r > 0 ? num(1 / r) : "1 / (" + v + ")";  // roughness 1/300: 1 / (1 / 300)
     } else if (k == "reflection" && !v.empty()) {
       m.set("reflect", v);
     } else if (k == "emission" && !v.empty()) {

@@ -118,4 +118,13 @@ if [[ -z "$mad" ]] || ! awk -v m="$mad" 'BEGIN { exit !(m <= 5.0) }'; then
 else
   echo "ok: finish names within $mad/255 of POV-Ray"
 fi
+# A roughness that is an expression is inverted whole (POV-Ray's roughness r is rts's shininess
+# 1/r): `roughness R + 0` with R = 1/300 is shininess 300, not 1 / R + 0.
+cat > "$TMP/rough.pov" <<'EOF'
+#declare R = 1/300;
+sphere { <0, 0, 0>, 1 pigment { rgb 1 } finish { specular 0.5 roughness R + 0 } }
+EOF
+expect_exit 0 "an expression roughness imports" -- "$RTS" import "$TMP/rough.pov" -o "$TMP/rough.rts"
+expect_grep "$TMP/rough.rts" 'shininess = 1 / \(R \+ 0\)' "the expression is inverted whole"
+expect_exit 0 "and evaluates" -- "$RTS" check "$TMP/rough.rts"
 finish
