@@ -7,6 +7,7 @@
 // and in the pyramid, so that leaf is a candidate, and a candidate leaf is tested as the
 // traversal would (its box, then its instances).
 #include <algorithm>
+#include <cmath>
 
 #include "render/accel/world.hpp"
 
@@ -28,6 +29,34 @@ bool meets(const ShadowRegion& r, const Box& lo, const Box& hi) {
 }
 
 }  // namespace
+
+ShadowRegion shadow_pyramid(const Vec3& apex, const Vec3& centre, const Vec3& u, const Vec3& v) {
+  ShadowRegion r;
+  const Vec3 half_u = 0.5 * u, half_v = 0.5 * v;
+  const Vec3 corner[4] = {centre - half_u - half_v, centre + half_u - half_v, centre + half_u + half_v,
+                          centre - half_u + half_v};
+  r.vertex[0] = apex;
+  for (int k = 0; k < 4; ++k) r.vertex[k + 1] = corner[k];
+  for (const Vec3& p : r.vertex) r.box.extend(p);
+  const double scale = std::max(max_abs_component(r.box.lo), max_abs_component(r.box.hi));
+  r.slack = tol::kShadowHullPadRelative * scale;
+  r.box.lo -= Vec3(r.slack);
+  r.box.hi += Vec3(r.slack);
+  // Each side: the plane through the apex and one edge, facing away from the other corners.
+  for (int k = 0; k < 4; ++k) {
+    const Vec3& a = corner[k];
+    const Vec3& b = corner[(k + 1) % 4];
+    Vec3 n = glm::cross(a - apex, b - apex);
+    const double len = glm::length(n);
+    if (!(len > tol::kTinyLength) || !std::isfinite(len)) continue;  // the apex is in the light's plane
+    n /= len;
+    if (glm::dot(n, corner[(k + 2) % 4] - apex) > 0.0) n = -n;
+    r.normal[r.planes] = n;
+    r.offset[r.planes] = glm::dot(n, apex) + 4.0 * r.slack;
+    ++r.planes;
+  }
+  return r;
+}
 
 bool World::occluder_candidates(const ShadowRegion& region, OccluderCandidates& out) const {
   out.count = 0;

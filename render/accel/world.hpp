@@ -107,6 +107,10 @@ struct ShadowRegion {
   double slack = 0.0;    // how far the segments may stray from the pyramid (rounding)
 };
 
+// The pyramid from `apex` over the rectangle centre ± u/2 ± v/2, padded for rounding: every
+// segment from the apex to a point of the rectangle lies in it.
+ShadowRegion shadow_pyramid(const Vec3& apex, const Vec3& centre, const Vec3& u, const Vec3& v);
+
 // The BVH leaves (or, without a BVH, the bounded instances) that may block a shadow segment
 // inside a ShadowRegion: the shading point's shadow rays towards an area light test these few
 // objects instead of walking the BVH once per light sample.

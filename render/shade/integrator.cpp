@@ -32,34 +32,9 @@ double shadow_end(const LightSample& ls) {
 // The region holding every shadow segment from `point` to area light `l`: the rays start at
 // `origin` (the point's offset copy) along the direction from `point` to a light sample and
 // stop short of it, so they lie in the pyramid from `origin` over the light's rectangle moved
-// by origin - point (a disc light lies inside its rectangle), padded for rounding.
+// by origin - point (a disc light lies inside its rectangle).
 ShadowRegion shadow_region(const CompiledLight& l, const Vec3& point, const Vec3& origin) {
-  ShadowRegion r;
-  const Vec3 shift = origin - point;
-  const Vec3 centre = l.position + shift, half_u = 0.5 * l.u, half_v = 0.5 * l.v;
-  const Vec3 corner[4] = {centre - half_u - half_v, centre + half_u - half_v, centre + half_u + half_v,
-                          centre - half_u + half_v};
-  r.vertex[0] = origin;
-  for (int k = 0; k < 4; ++k) r.vertex[k + 1] = corner[k];
-  for (const Vec3& v : r.vertex) r.box.extend(v);
-  const double scale = std::max(max_abs_component(r.box.lo), max_abs_component(r.box.hi));
-  r.slack = tol::kShadowHullPadRelative * scale;
-  r.box.lo -= Vec3(r.slack);
-  r.box.hi += Vec3(r.slack);
-  // Each side: the plane through the apex and one edge, facing away from the other corners.
-  for (int k = 0; k < 4; ++k) {
-    const Vec3& a = corner[k];
-    const Vec3& b = corner[(k + 1) % 4];
-    Vec3 n = glm::cross(a - origin, b - origin);
-    const double len = glm::length(n);
-    if (!(len > tol::kTinyLength) || !std::isfinite(len)) continue;  // the apex is in the light's plane
-    n /= len;
-    if (glm::dot(n, corner[(k + 2) % 4] - origin) > 0.0) n = -n;
-    r.normal[r.planes] = n;
-    r.offset[r.planes] = glm::dot(n, origin) + 4.0 * r.slack;
-    ++r.planes;
-  }
-  return r;
+  return shadow_pyramid(origin, l.position + (origin - point), l.u, l.v);
 }
 
 // The sampler values direct_light draws for one light: a permutation seed, and a 2D jitter

@@ -238,3 +238,38 @@ TEST_CASE("float boxes build the same tree as the same boxes in double", "[bvh]"
       for (int k = 0; k < 3; ++k) CHECK((node.lo[k] <= box.lo[k] && box.hi[k] <= node.hi[k]));
     }
 }
+
+TEST_CASE("shadow rays tested against the occluder candidates get occluded()'s answer", "[bvh]") {
+  // World::occluder_candidates keeps the leaves and planes that meet the pyramid from a point
+  // over an area light; every segment in the pyramid must get the same answer from them
+  // (occluded_by) as from the whole scene (occluded), including points on the floor plane.
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> radius(0.05, 0.8), unit(0.0, 1.0);
+  SceneDesc s;
+  for (int i = 0; i < 200; ++i) place(s, add_shape(s, Sphere{random_point(rng, 9.0), radius(rng)}));
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), -10.0}));
+  World w(s, flatten_scene(s));
+  REQUIRE(w.top_level().nodes.size() > 1);
+  const Vec3 u(3, 0, 0.5), v(0, 0.2, 3);
+  int searched = 0, blocked = 0, open = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Vec3 apex = random_point(rng, 10.0);
+    if (trial % 4 == 0) apex.y = -10.0;                  // on the floor
+    if (trial % 4 == 1) apex.y = std::nextafter(-10.0, 0.0);  // just above it
+    const Vec3 centre = random_point(rng, 4.0) + Vec3(0, 12, 0);
+    OccluderCandidates c;
+    if (!w.occluder_candidates(shadow_pyramid(apex, centre, u, v), c)) continue;
+    ++searched;
+    for (int k = 0; k < 16; ++k) {
+      const Vec3 target = centre + (unit(rng) - 0.5) * u + (unit(rng) - 0.5) * v;
+      const Ray ray{apex, target - apex};
+      const Interval segment(0.0, 1.0 - 1e-9);
+      const bool expected = w.occluded(ray, segment);
+      REQUIRE(w.occluded_by(c, ray, segment) == expected);
+      (expected ? blocked : open) += 1;
+    }
+  }
+  CHECK(searched > 100);  // the search answers most points (few leaves meet each pyramid)
+  CHECK(blocked > 100);   // both answers are exercised
+  CHECK(open > 100);
+}
