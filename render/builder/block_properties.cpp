@@ -33,6 +33,7 @@ constexpr PropertyInfo kSettings[] = {
     {"depth_range", "vector", "none", "Depth AOV: the distances mapped to black and white, as --depth-range."},
     {"depth_miss", "number", "`0`", "Depth AOV value where nothing is hit, as --depth-miss."},
     {"normal_miss", "number", "`0`", "Normal AOV value where nothing is hit, as --normal-miss."},
+    {"clamp", "number ≥ 0", "`0` (off)", "Path mode: the most one camera sample may add to a pixel (biased)."},
 };
 
 constexpr PropertyInfo kCamera[] = {

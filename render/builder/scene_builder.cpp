@@ -320,6 +320,8 @@ void SceneBuilder::settings(ParamSet& ps) {
                        fmt::format("unknown output_gamma '{}' (expected srgb or linear)", name));
     s.output_linear = name == "linear";
   }
+  s.clamp = ps.number("clamp", s.clamp);
+  require(ps, "clamp", s.clamp >= 0 && std::isfinite(s.clamp), ">= 0 (0: no clamping)", s.clamp);
   s.loc = ps.loc();
   ps.check_unused(kSettingsNames);
 }

@@ -279,6 +279,10 @@ struct Settings {
   bool has_depth_range = false;
   double depth_near = 0.0, depth_far = 1.0;
   double depth_miss = 0.0, normal_miss = 0.0;
+  // Path mode: the most any one camera sample may add to a pixel (its largest channel; the
+  // colour is kept). 0, the default, clamps nothing and keeps the path tracer unbiased; a
+  // clamp trades bias (lost energy from bright, rare paths) for less noise. Whitted ignores it.
+  double clamp = 0.0;
   SourceRef loc;
 };
 

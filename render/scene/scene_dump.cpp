@@ -149,6 +149,7 @@ void SceneDesc::dump(std::ostream& out) const {
   if (s.has_depth_range) out << fmt::format(" depth_range {} {}", num(s.depth_near), num(s.depth_far));
   if (s.depth_miss != 0 || s.normal_miss != 0)
     out << fmt::format(" depth_miss {} normal_miss {}", num(s.depth_miss), num(s.normal_miss));
+  if (s.clamp > 0) out << " clamp " << num(s.clamp);
   if (s.fog_distance > 0)
     out << fmt::format(" fog distance {} color {} offset {} altitude {}", num(s.fog_distance), col(s.fog_color),
                        num(s.fog_offset), num(s.fog_altitude));

@@ -55,7 +55,7 @@ PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const
                                const std::vector<CompiledTexture>& textures, int max_depth,
                                std::vector<Warning>& warnings)
     : world_(world), materials_(scene.materials), textures_(textures),
-      lights_(world, scene, lights, textures), max_depth_(max_depth) {
+      lights_(world, scene, lights, textures), max_depth_(max_depth), clamp_(scene.settings.clamp) {
   std::vector<bool> placed(scene.materials.size(), false);
   for (std::size_t i = 0; i < world.instance_count(); ++i)
     if (world.instance(i).material < placed.size()) placed[world.instance(i).material] = true;
@@ -87,6 +87,7 @@ void PathIntegrator::describe(std::vector<std::string>& used, std::vector<std::s
   report(has_transmission_, "dielectric_medium_stack");
   report(has_microfacets_, "microfacet_lobes");
   report(max_depth_ >= kRouletteStart, "russian_roulette");
+  report(clamp_ > 0.0, "clamp");
 }
 
 Lobes PathIntegrator::lobes(const MaterialDesc& m, uint32_t material_id, const WorldHit& hit) const {
@@ -203,6 +204,12 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
       if (u_roulette >= q) break;
       beta /= q;
     }
+  }
+  // settings.clamp: a sample's largest channel at most clamp, its colour kept (biased; off by
+  // default).
+  if (clamp_ > 0.0) {
+    const double peak = max_channel(radiance);
+    if (peak > clamp_) radiance *= clamp_ / peak;
   }
   return radiance;
 }

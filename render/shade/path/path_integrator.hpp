@@ -46,6 +46,7 @@ class PathIntegrator {
   LightSet lights_;
   std::vector<double> scale_;   // by MaterialId: the energy normalisation (1 when none is needed)
   int max_depth_;
+  double clamp_;  // settings.clamp; 0: none
   bool has_transmission_ = false, has_microfacets_ = false;
 };
 
