@@ -119,6 +119,16 @@ inline constexpr double kMinEmitterArea = 1e-200;
 // just outside.
 inline constexpr double kSphereConeMargin = 1e-6;
 
+// Path tracing: a rectangular quad light whose solid angle from the shading point is below
+// this (steradians) is sampled by area instead: the solid angle is a sum of four angles less
+// 2 pi, which loses relative precision as it shrinks (about 1e-15 * 2 pi absolute, so 1e-8
+// relative here), and so far away 1/r^2 barely varies over the light, area sampling is as good.
+inline constexpr double kMinSphericalRectAngle = 1e-6;
+
+// Path tracing: quad edges count as orthogonal (a rectangle, sampled by solid angle) when
+// |cos| of the angle between them is below this; a skewed parallelogram is sampled by area.
+inline constexpr double kRectangleCosine = 1e-9;
+
 // Ground fog: a ray whose direction's height component (unit direction) is below this is
 // treated as level, its optical depth the density at its height times its length. The closed
 // form divides a difference of heights by it, which for steeper rays loses at most ~1e-16 / 1e-9

@@ -1,7 +1,8 @@
 // Every light the path tracer samples by next-event estimation, in physical units
 // (docs/path-tracing.md):
-//   emissive shapes  emitted radiance (two-sided); quads, triangles and meshes sampled by area,
-//                    spheres by solid angle (by area from inside);
+//   emissive shapes  emitted radiance (two-sided); rectangles and spheres sampled by solid
+//                    angle (spheres by area from inside), other quads, triangles, meshes,
+//                    discs (annuli) and boxes by area (a box: a face by its area);
 //   point, spot      radiant intensity (W/sr), inverse-square falloff (spot: its cone factor);
 //   directional      irradiance (W/m^2) on a surface facing it;
 //   area_light       a two-sided emitter of the same total power as a point light of its
@@ -40,6 +41,8 @@ class LightSet {
            const std::vector<CompiledTexture>& textures);
 
   bool empty() const { return entries_.empty(); }
+  // One light: sample() ignores u_pick.
+  bool single() const { return entries_.size() == 1; }
   bool sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSample& out) const;
 
   // Does NEE sample this instance's emission? (Else a ray that hits it counts all of it.)
@@ -64,14 +67,16 @@ class LightSet {
   std::size_t unsampled_emitters() const { return unsampled_emitters_; }
 
  private:
-  enum class Type : uint8_t { Sphere, Quad, Triangle, Mesh, Point, Spot, Directional, AreaLight, Sky };
+  enum class Type : uint8_t { Sphere, Quad, Triangle, Mesh, Disc, Box, Point, Spot, Directional, AreaLight, Sky };
   struct Entry {
     Type type = Type::Point;
     Rgb radiance{0.0};   // emitters: Le; point/spot: intensity; directional: irradiance
-    Vec3 p0{0.0}, e1{0.0}, e2{0.0};  // corner (centre for spheres and area lights) and edges
-    double radius = 0.0;
+    Vec3 p0{0.0}, e1{0.0}, e2{0.0};  // corner (centre for spheres, discs and area lights) and edges
+    Vec3 e3{0.0};                    // boxes: the third edge
+    double radius = 0.0;             // spheres; discs: inner radius / outer radius
     double area = 0.0;
     bool disc = false;               // area_light: the ellipse inscribed in e1, e2
+    bool rect = false;               // quad: e1 and e2 orthogonal, sampled by solid angle
     uint32_t first = 0, count = 0;   // meshes: their triangles in tris_
     CompiledLight light;             // point, spot
   };
