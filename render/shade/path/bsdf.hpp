@@ -41,6 +41,10 @@ class Bsdf {
   Bsdf(const Lobes& lobes, const Vec3& n, const Vec3& ng, const Vec3& wo);
 
   bool black() const { return total_ <= 0.0; }
+  // Only one lobe can be chosen: sample() ignores u_lobe.
+  bool single_lobe() const {
+    return (p_diffuse_ > 0.0) + (p_glossy_ > 0.0) + (p_reflect_ > 0.0) + (p_transmit_ > 0.0) == 1;
+  }
   bool has_smooth() const { return p_diffuse_ + p_glossy_ + (reflect_delta_ ? 0.0 : p_reflect_) > 0.0; }
   Rgb f(const Vec3& wi) const;
   // |cos| between wi and the normal the lobes are shaded with.
