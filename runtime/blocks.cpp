@@ -1,5 +1,6 @@
 // Blocks (`sphere { ... }`, `material { ... }`, `group { ... }`), `with` derivation,
 // transform postfixes, conversion of values to builder parameters, and object placement.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -359,6 +360,24 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
     case Type::List: {
       const auto& items = as_list(v);
       if (items.empty()) return std::vector<double>{};
+      if (std::any_of(items.begin(), items.end(), [](const Value& x) { return x.type == Type::Texture; })) {
+        // A sky_sphere's layers: textures, and solid colors among them.
+        render::LayersParam layers;
+        for (const Value& x : items) {
+          if (x.type == Type::Texture) {
+            layers.textures.push_back(realize_texture(x));
+            layers.colors.emplace_back(0.0);
+          } else if (x.type == Type::Color || x.type == Type::Vector) {
+            layers.textures.push_back(render::kNoId);
+            layers.colors.emplace_back(x.v.x, x.v.y, x.v.z);
+          } else {
+            fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: a list of layers holds textures "
+                                    "and colors, not {}",
+                                    *p.name, kind, with_article(x.type)));
+          }
+        }
+        return layers;
+      }
       if (items.front().type == Type::Vector || items.front().type == Type::Color) {
         // Colors travel as vectors (r, g, b): `vertex_colors = [rgb(1, 0, 0), ...]`.
         std::vector<render::Vec3> out;
@@ -405,12 +424,14 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
         render::ColorMapParam map;
         for (const Value& x : items) {
           const auto* pair = x.type == Type::List ? &as_list(x) : nullptr;
-          if (!pair || pair->size() != 2 || (*pair)[0].type != Type::Number ||
-              ((*pair)[1].type != Type::Color && (*pair)[1].type != Type::Vector))
+          // [value, color] or [value, color, transmit] (POV-Ray's rgbt: a sky_sphere layer's see-through).
+          if (!pair || pair->size() < 2 || pair->size() > 3 || (*pair)[0].type != Type::Number ||
+              ((*pair)[1].type != Type::Color && (*pair)[1].type != Type::Vector) ||
+              (pair->size() == 3 && (*pair)[2].type != Type::Number))
             fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: a color map is a list of [number, "
-                                    "color] pairs, e.g. [[0, rgb(1)], [1, rgb(0)]]",
+                                    "color] pairs (or [number, color, transmit]), e.g. [[0, rgb(1)], [1, rgb(0)]]",
                                     *p.name, kind));
-          map.entries.push_back({(*pair)[0].v.x, (*pair)[1].v});
+          map.entries.push_back({(*pair)[0].v.x, (*pair)[1].v, pair->size() == 3 ? (*pair)[2].v.x : 0.0});
         }
         return map;
       }

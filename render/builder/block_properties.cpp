@@ -20,7 +20,7 @@ constexpr PropertyInfo kSettings[] = {
     {"ambient_light", "color", "`rgb(1)`", "Multiplies every material's `ambient` term."},
     {"seed", "whole number ≥ 0", "`0`", "Seed for every random decision."},
     {"sampler", "string", "`\"sobol\"`", "How samples are placed: \"random\", \"stratified\" or \"sobol\"."},
-    {"environment", "texture", "none", "The environment map (a latlong_map or cube_map)."},
+    {"environment", "texture", "none", "What rays that leave the scene see: a latlong_map, cube_map, sky_sphere or any texture."},
     {"environment_ambient", "bool", "`false`", "Also light the ambient term with the environment."},
     {"frames", "whole number ≥ 1", "`1`", "An animation's frame count; 1 is a still."},
     {"integrator", "string", "`\"whitted\"`", "\"whitted\" or \"path\" (the physically based path tracer)."},
@@ -144,6 +144,11 @@ constexpr PropertyInfo kCubeMap[] = {
     {"filter", "string", "`\"bilinear\"`", "\"bilinear\" or \"nearest\"."},
     {"orientation", "string", "none", "How the six faces are read (\"mit\": MIT 6.837's layout)."},
 };
+constexpr PropertyInfo kSkySphere[] = {
+    {"layers", "list of textures and colors", "*required*",
+     "POV-Ray's sky_sphere pigments, bottom first: procedural textures evaluated on the view direction, each "
+     "showing those below where its color map's transmit lets them through."},
+};
 constexpr PropertyInfo kCsg[] = {
     {"material", "material", "none", "The material of the parts that have none of their own."},
     {"inverse", "bool", "`false`", "Swap inside and outside."},
@@ -159,6 +164,7 @@ constexpr BlockInfo kBlocks[] = {
     {"image_texture", "An image file as a texture.", kImageTexture},
     {"latlong_map", "A latitude-longitude environment map.", kLatLong},
     {"cube_map", "An environment map of six face images.", kCubeMap},
+    {"sky_sphere", "A background of pattern layers on the direction (POV-Ray's sky_sphere).", kSkySphere},
     {"point_light", "Light from one point: hard shadows.", kPointLight},
     {"spot_light", "A point light limited to a cone.", kSpotLight},
     {"directional_light", "Parallel light (the sun): no position, no attenuation.", kDirectionalLight},

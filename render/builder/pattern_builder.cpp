@@ -40,6 +40,7 @@ std::vector<std::string_view> names_for(PatternKind kind) {
   std::vector<std::string_view> names = kCommonNames;
   if (kind == PatternKind::Agate) names.push_back("agate_turb");
   if (kind == PatternKind::Function) names.push_back("function");
+  if (kind == PatternKind::Gradient) names.push_back("axis");
   return names;
 }
 
@@ -79,6 +80,7 @@ void build_pattern_texture(std::string_view kind, ParamSet& ps, TextureDesc& t) 
   PatternDesc& d = t.pattern;
   for (const PatternKindName& k : kPatterns)
     if (k.name == kind) d.kind = k.kind;
+  if (kind == "gradient") d.kind = PatternKind::Gradient;   // with a color_map (scene_builder.cpp)
   const std::vector<std::string_view> valid = names_for(d.kind);
   ps.set_valid_names(&valid);
 
@@ -141,6 +143,12 @@ void build_pattern_texture(std::string_view kind, ParamSet& ps, TextureDesc& t) 
       const double x = map->entries[i].value;
       if (!std::isfinite(x))
         fail_at(ps, "color_map", fmt::format("entry {} of the color_map of {} has a value that is not finite", i + 1, kind));
+      const double t = map->entries[i].transmit;
+      if (!(t >= 0.0 && t <= 1.0))
+        fail_at(ps, "color_map",
+                fmt::format("entry {} of the color_map of {} has transmit {}: it must be from 0 (opaque) to 1 "
+                            "(clear)",
+                            i + 1, kind, t));
       if (i > 0 && x < map->entries[i - 1].value)
         fail_at(ps, "color_map",
                 fmt::format("the color_map of {} must list its values in ascending order: entry {} ({}) comes after {}",

@@ -37,6 +37,7 @@ constexpr KindInfo kKinds[] = {
     {"image_texture", BlockCategory::Texture},
     {"latlong_map", BlockCategory::Texture},
     {"cube_map", BlockCategory::Texture},
+    {"sky_sphere", BlockCategory::Texture},
     // pattern textures (render/builder/pattern_builder.cpp)
     {"bozo", BlockCategory::Texture}, {"spotted", BlockCategory::Texture}, {"granite", BlockCategory::Texture},
     {"marble", BlockCategory::Texture}, {"wood", BlockCategory::Texture}, {"agate", BlockCategory::Texture},
@@ -66,6 +67,7 @@ const std::vector<std::string_view> kCameraNames = names_of_block("camera");
 const std::vector<std::string_view> kImageTextureNames = names_of_block("image_texture");
 const std::vector<std::string_view> kLatLongNames = names_of_block("latlong_map");
 const std::vector<std::string_view> kCubeMapNames = names_of_block("cube_map");
+const std::vector<std::string_view> kSkySphereNames = names_of_block("sky_sphere");
 const std::vector<std::string_view> kCheckerNames = names_of_block("checker");
 const std::vector<std::string_view> kPatternTextureNames = names_of_block("stripes");
 const std::vector<std::string_view> kMaterialNames = names_of_block("material");
@@ -203,7 +205,8 @@ std::vector<std::string_view> SceneBuilder::property_names(std::string_view kind
   static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
       {"settings", &kSettingsNames},          {"camera", &kCameraNames},       {"material", &kMaterialNames},
       {"image_texture", &kImageTextureNames}, {"latlong_map", &kLatLongNames}, {"cube_map", &kCubeMapNames},
-      {"checker", &kCheckerNames},            {"stripes", &kPatternTextureNames}, {"gradient", &kPatternTextureNames}};
+      {"checker", &kCheckerNames},            {"stripes", &kPatternTextureNames}, {"gradient", &kPatternTextureNames},
+      {"sky_sphere", &kSkySphereNames}};
   for (const auto& [name, names] : kTable)
     if (name == kind) return *names;
   return {};  // group (no properties) and unknown kinds
@@ -454,6 +457,13 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
     ps.check_unused(kImageTextureNames);
   } else if (is_pattern_kind(kind)) {
     build_pattern_texture(kind, ps, t);
+  } else if (kind == "gradient" && ps.has("color_map")) {
+    // POV-Ray's `gradient y color_map { ... }`: the pattern form, with turbulence and waves.
+    const int axis = axis_of(ps);
+    build_pattern_texture(kind, ps, t);
+    t.pattern.axis = axis;
+  } else if (kind == "sky_sphere") {
+    sky_sphere(ps, t);
   } else {
     if (kind == "checker")
       t.kind = TextureKind::Checker;
@@ -477,9 +487,50 @@ TextureId SceneBuilder::texture(std::string_view kind, ParamSet& ps, const Mat4&
   return static_cast<TextureId>(scene_.textures.size() - 1);
 }
 
+void SceneBuilder::sky_sphere(ParamSet& ps, TextureDesc& t) {
+  t.kind = TextureKind::SkySphere;
+  ps.set_valid_names(&kSkySphereNames);   // a misspelt 'layers' is reported as such
+  const ParamValue* v = ps.value("layers");
+  if (!v) ps.fail_block("sky_sphere needs property 'layers' (its textures, bottom first: layers = [gradient { ... }])");
+  LayersParam layers;
+  if (auto* list = std::get_if<LayersParam>(v))
+    layers = *list;
+  else if (auto* one = std::get_if<TextureRef>(v))
+    layers = LayersParam{{one->id}, {Color(0.0)}};
+  else if (std::holds_alternative<Color>(*v) || std::holds_alternative<Vec3>(*v) || std::holds_alternative<double>(*v))
+    layers = LayersParam{{kNoId}, {ps.color("layers", Color(0.0))}};
+  else
+    ps.fail(*ps.find("layers"), fmt::format("property 'layers' of sky_sphere expects a list of textures (and colors), "
+                                            "got a {}", param_type_name(*v)));
+  for (std::size_t i = 0; i < layers.textures.size(); ++i) {
+    const TextureId id = layers.textures[i];
+    if (id == kNoId) {
+      non_negative_color(ps, "layers", layers.colors[i]);
+      continue;
+    }
+    const TextureKind k = scene_.textures[id].kind;
+    if (k != TextureKind::Pattern && k != TextureKind::Gradient && k != TextureKind::Checker &&
+        k != TextureKind::Stripes)
+      ps.fail(*ps.find("layers"),
+              fmt::format("layer {} of sky_sphere is {}: a sky's layers are procedural textures (gradient, bozo, "
+                          "granite, ...) and colors; for an image sky, set the environment to a latlong_map",
+                          i + 1, k == TextureKind::SkySphere ? "a sky_sphere" : "an image texture"));
+  }
+  t.sky_layers = std::move(layers.textures);
+  t.sky_layer_colors = std::move(layers.colors);
+  ps.check_unused(kSkySphereNames);
+  ps.set_valid_names(nullptr);
+}
+
 MaterialId SceneBuilder::material(ParamSet& ps) {
   MaterialDesc m;
   m.loc = ps.loc();
+  for (const Param& p : ps.params())
+    if (auto* t = std::get_if<TextureRef>(&p.value); t && t->id < scene_.textures.size() &&
+                                                      scene_.textures[t->id].kind == TextureKind::SkySphere)
+      ps.fail(p, fmt::format("property '{}' of material holds a sky_sphere: a sky is the background, set it as "
+                             "settings {{ environment = ... }}",
+                             p.name));
   if (const ParamValue* c = ps.value("color")) {
     if (auto* t = std::get_if<TextureRef>(c))
       m.texture = t->id;

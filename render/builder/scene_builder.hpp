@@ -67,6 +67,7 @@ class SceneBuilder {
   SceneDesc finish() { return std::move(scene_); }
 
  private:
+  void sky_sphere(ParamSet& params, TextureDesc& t);           // texture(): `sky_sphere { layers }`
   // Checks that the scene may read `path` (as the scene wrote it: `shown`) and that it is a
   // regular file, not a FIFO or device that would block or never end.
   void check_readable(const std::string& path, const std::string& shown, std::string_view what, SourceRef where) const;

@@ -90,6 +90,8 @@ const char* param_type_name(const ParamValue& v) {
       return "container";
     case 12:
       return "list of lists";
+    case 13:
+      return "list of textures";
   }
   return "value";
 }

@@ -25,6 +25,12 @@ struct RowsParam {
   struct Row { std::vector<Vec3> vectors; std::vector<double> numbers; };
   std::vector<Row> rows;
 };
+// A sky_sphere's layers, `layers = [gradient { ... }, bozo { ... }]`: textures, or solid colors
+// (texture kNoId, the color at the same index).
+struct LayersParam {
+  std::vector<TextureId> textures;
+  std::vector<Color> colors;
+};
 // An isosurface's container, `contained_by = box { min max }` or `sphere { center radius }`
 // (the runtime reads the block's own properties; the shape is not placed).
 struct ContainerParam {
@@ -38,10 +44,10 @@ struct ContainerParam {
 // number → double, bool, string, vector → Vec3, color → Color, list of vectors → vector<Vec3>,
 // list of numbers → vector<double>, a texture value → TextureRef, a material → MaterialRef,
 // a list of [number, color] pairs → ColorMapParam, a macro of one point → FunctionRef, an
-// unplaced box or sphere → ContainerParam.
+// unplaced box or sphere → ContainerParam, a list holding textures (and colors) → LayersParam.
 using ParamValue = std::variant<double, bool, std::string, Vec3, Color, TextureRef, MaterialRef,
                                 std::vector<Vec3>, std::vector<double>, ColorMapParam, FunctionRef,
-                                ContainerParam, RowsParam>;
+                                ContainerParam, RowsParam, LayersParam>;
 
 // "number", "vector", ... for messages.
 const char* param_type_name(const ParamValue& v);

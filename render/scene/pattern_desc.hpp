@@ -18,6 +18,7 @@ class CompiledFunction;
 enum class PatternKind : uint8_t {
   Bozo, Spotted, Granite, Marble, Wood, Agate, Onion, Leopard, Wrinkles, Crackle, Cells,
   Bumps, Dents, Ripples, Waves, Function,
+  Gradient,   // `gradient` with a color_map: the point's coordinate along `axis` (POV-Ray's gradient)
 };
 
 // How the pattern's value (times frequency, plus phase) becomes the color map's index:
@@ -30,6 +31,9 @@ enum class WaveKind : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Clamp };
 struct ColorMapEntry {
   double value = 0.0;
   glm::dvec3 color{0.0};   // linear rgb
+  // POV-Ray's `transmit` (rgbt's t): how much of what lies behind shows through. Only a
+  // sky_sphere's layers look at it (render/shade/sky_sphere.hpp); surfaces ignore it.
+  double transmit = 0.0;
 };
 
 struct PatternDesc {
@@ -44,6 +48,7 @@ struct PatternDesc {
   double frequency = 1.0;
   double phase = 0.0;
   double agate_turb = 1.0;   // agate's own turbulence scale (POV-Ray's agate_turb)
+  int axis = 1;              // Gradient: 0 = x, 1 = y, 2 = z
   // Ascending values; below the first entry the first color, above the last the last,
   // linear interpolation between. Never empty once built (the builder supplies color1→color2).
   std::vector<ColorMapEntry> color_map;

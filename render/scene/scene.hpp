@@ -50,7 +50,11 @@ inline constexpr uint32_t kNoId = std::numeric_limits<uint32_t>::max();
 // leave the scene, image-based ambient light); on a surface they use the direction from the
 // texture-space origin to the point.
 // Pattern: a procedural pattern (marble, wood, ..., a user function) with a color map.
-enum class TextureKind : uint8_t { Checker, Stripes, Gradient, Image, LatLong, CubeMap, Pattern };
+// SkySphere: POV-Ray's sky_sphere, only as the settings' environment: layers of procedural
+// textures evaluated on the unit direction (after the sky's own transform), the last layer on
+// top, each showing the ones below where its color map's `transmit` lets them through
+// (render/shade/sky_sphere.hpp).
+enum class TextureKind : uint8_t { Checker, Stripes, Gradient, Image, LatLong, CubeMap, Pattern, SkySphere };
 enum class TextureFilter : uint8_t { Bilinear, Nearest };
 struct TextureDesc {
   TextureKind kind = TextureKind::Checker;
@@ -69,6 +73,10 @@ struct TextureDesc {
   // left-right, +y top-bottom) instead of rts's upright, unmirrored faces.
   bool cube_mit = false;
   PatternDesc pattern;       // Pattern: which one, its turbulence, wave and color map
+  // SkySphere: its layers, bottom first: a procedural texture each (kNoId: the solid
+  // sky_layer_colors entry of the same index instead).
+  std::vector<TextureId> sky_layers;
+  std::vector<Color> sky_layer_colors;
   Mat4 transform{1.0};       // object space → texture space is inverse(transform)
   SourceRef loc;
 };

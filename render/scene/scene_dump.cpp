@@ -57,6 +57,8 @@ const char* texture_kind(TextureKind k) {
       return "cube_map";
     case TextureKind::Pattern:
       return "pattern";
+    case TextureKind::SkySphere:
+      return "sky_sphere";
   }
   return "?";
 }

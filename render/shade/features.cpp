@@ -130,6 +130,11 @@ constexpr FeatureRule kRules[] = {
     // Decided by flattening (instanced_groups) and added by the renderer.
     {Feature::Instancing, "instancing", Scope::Scene, [](const FeatureProbe&) { return false; }},
     {Feature::Fog, "fog", Scope::Scene, [](const FeatureProbe& p) { return p.scene.settings.fog_distance > 0.0; }},
+    {Feature::SkySphere, "sky_sphere", Scope::Scene,
+     [](const FeatureProbe& p) {
+       const TextureId env = p.scene.settings.environment;
+       return env < p.scene.textures.size() && p.scene.textures[env].kind == TextureKind::SkySphere;
+     }},
 };
 
 constexpr bool rules_in_feature_order() {

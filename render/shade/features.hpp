@@ -33,6 +33,7 @@ enum class Feature : uint8_t {
   Instancing,  // groups placed several times share one BVH (render/accel/flatten.hpp)
   // atmosphere
   Fog,
+  SkySphere,   // the environment is a sky_sphere (layered patterns on the direction)
   Count
 };
 

@@ -206,6 +206,7 @@ Color CompiledTexture::lookup_direction(const Vec3& d) const {
 }
 
 Color CompiledTexture::eval_direction(const Vec3& direction) const {
+  if (desc_.kind == TextureKind::SkySphere) return eval_sky(direction);
   const Vec3 q = Vec3(inverse_ * glm::dvec4(direction, 0.0));
   if (is_environment()) return lookup_direction(q);
   TexturePoint p;
@@ -225,6 +226,9 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
     }
     case TextureKind::LatLong:
     case TextureKind::CubeMap: return lookup_direction(q);
+    // Only ever the environment (the builder refuses it elsewhere); on a surface it would
+    // show the sky in the direction of the point.
+    case TextureKind::SkySphere: return eval_sky(p.object_point);
     case TextureKind::Image: break;
   }
   glm::dvec2 uv;
@@ -282,6 +286,23 @@ std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std:
       for (const std::string& face : desc.face_paths) images.push_back(load(face, desc));
     }
     compiled.emplace_back(desc, std::move(images));
+    if (desc.kind == TextureKind::SkySphere) {
+      // The layers were built before the sky (its block realised them), so they precede it.
+      std::vector<CompiledTexture> layers;
+      for (std::size_t i = 0; i < desc.sky_layers.size(); ++i) {
+        const TextureId layer = desc.sky_layers[i];
+        if (layer == kNoId) {
+          TextureDesc solid;   // a solid color layer: a checker of one color
+          solid.color1 = solid.color2 = i < desc.sky_layer_colors.size() ? desc.sky_layer_colors[i] : Color(0.0);
+          layers.emplace_back(solid, std::vector<std::shared_ptr<const Image>>{});
+        } else if (layer < id) {
+          layers.push_back(compiled[layer]);
+        } else {
+          throw RenderError(desc.loc, "sky_sphere layer is not a texture built before the sky");
+        }
+      }
+      compiled.back().set_sky(std::move(layers), scene.settings.background);
+    }
   }
   return compiled;
 }

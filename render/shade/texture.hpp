@@ -43,16 +43,29 @@ class CompiledTexture {
   bool is_environment() const {
     return desc_.kind == TextureKind::LatLong || desc_.kind == TextureKind::CubeMap;
   }
+  bool is_sky_sphere() const { return desc_.kind == TextureKind::SkySphere; }
+  // A procedural texture as one of a sky_sphere's layers: its color and (w) its transmit at
+  // point p (the direction in the sky's space); only pattern color maps have a transmit.
+  glm::dvec4 eval_layer(const Vec3& p) const;
+  // SkySphere: its compiled layers (bottom first) and the settings' background, which shows
+  // where every layer lets light through (compile_textures calls this).
+  void set_sky(std::vector<CompiledTexture> layers, const Color& background) {
+    sky_layers_ = std::move(layers);
+    sky_background_ = background;
+  }
   // The size of one texel in uv units (0 for procedural textures), for bump-map differences.
   double texel_size() const;
 
  private:
   Color sample(const Image& image, double u, double v) const;
   Color lookup_direction(const Vec3& texture_space_direction) const;
+  Color eval_sky(const Vec3& direction) const;   // render/shade/sky_sphere.cpp
 
   TextureDesc desc_;
   Mat4 inverse_;                                       // object space → texture space
   std::vector<std::shared_ptr<const Image>> images_;   // image kinds only (linear RGB)
+  std::vector<CompiledTexture> sky_layers_;            // SkySphere only, bottom first
+  Color sky_background_{0.0};                          // SkySphere: behind every layer
 };
 
 // Loads each distinct image once. Throws RenderError located at the texture's SourceRef when

@@ -32,6 +32,7 @@ for path in sys.argv[1:]:
     f = s["features"]
     assert f["specialized"] is True, path
     assert "reflection" in f["left_out"] and "area_light" in f["left_out"], (path, f)
+    assert "sky_sphere" in f["left_out"], (path, f)
     assert set(f["used"]) >= {"sphere", "plane", "point_light", "shadows"}, (path, f)
     assert s["scene"]["primitives"] == {"sphere": 144, "plane": 1}, (path, s["scene"])
     assert all(k in s["seconds"] for k in ("parse", "evaluate", "build", "render", "write")), path
@@ -49,4 +50,12 @@ expect_grep "$TMP/err" "warning: material 'glass' is declared but never used|war
 { cat leave_out_b.rts; echo "big"; } > placed.rts
 expect_exit 1 "check with the missing OBJ placed" -- "$RTS" check placed.rts
 expect_grep "$TMP/err" "leave_out_big.obj" "missing OBJ error names the file"
+
+# A sky_sphere environment is reported as used (docs/library.md#sky_sphere).
+cat > sky.rts <<'RTS'
+settings { environment = sky_sphere { layers = [gradient { axis = "y"  color_map = [[0, rgb(1)], [1, rgb(0, 0, 1)]] }] } }
+sphere { radius = 1  material = material { reflect = 0.5 } }
+RTS
+expect_exit 0 "render a sky_sphere" -- "$RTS" render sky.rts -o sky.png "${size[@]}" --stats
+expect_grep "$TMP/err" "features: .*used .*sky_sphere.*left_out" "--stats lists sky_sphere as used"
 finish

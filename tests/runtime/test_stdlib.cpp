@@ -364,3 +364,43 @@ TEST_CASE("fog settings are checked and reach the scene", "[eval][fog]") {
   CHECK_THAT(eval_error("settings { fog_altitude = -1 }"), Catch::Contains("fog_altitude"));
   CHECK_THAT(eval_error("settings { fog_colour = rgb(1) }"), Catch::Contains("did you mean 'fog_color'?"));
 }
+
+TEST_CASE("sky_sphere: layers bottom first, gradient with a color map, transmit, located errors", "[eval][sky]") {
+  SceneDesc s = eval_text(R"rts(settings { environment = sky_sphere {
+  layers = [gradient { axis = "y"  color_map = [[0, rgb(1)], [1, rgb(0, 0, 1)]] },
+            bozo { color_map = [[0, rgb(1), 1], [1, rgb(0.5), 0.25]] } scale 0.5,
+            rgb(0.1)]
+} rotate <0, 30, 0> })rts");
+  REQUIRE(s.settings.environment < s.textures.size());
+  const TextureDesc& sky = s.textures[s.settings.environment];
+  CHECK(sky.kind == TextureKind::SkySphere);
+  REQUIRE(sky.sky_layers.size() == 3);
+  const TextureDesc& gradient = s.textures[sky.sky_layers[0]];
+  CHECK(gradient.kind == TextureKind::Pattern);
+  CHECK(gradient.pattern.kind == PatternKind::Gradient);
+  CHECK(gradient.pattern.axis == 1);
+  const TextureDesc& clouds = s.textures[sky.sky_layers[1]];
+  CHECK(clouds.pattern.color_map[0].transmit == 1.0);
+  CHECK(clouds.pattern.color_map[1].transmit == 0.25);
+  CHECK(clouds.transform[0][0] == Approx(0.5));
+  CHECK(sky.sky_layers[2] == kNoId);
+  CHECK(sky.sky_layer_colors[2].r == Approx(0.1));
+  CHECK(sky.transform[2][0] == Approx(std::sin(30.0 * 3.14159265358979 / 180.0)));   // the sky's own rotate
+  // The two-colour gradient is unchanged without a color_map.
+  CHECK(eval_text("settings { environment = gradient { axis = \"y\" } }").textures[0].kind == TextureKind::Gradient);
+
+  CHECK_THAT(eval_error("settings { environment = sky_sphere { } }"), Catch::Contains("needs property 'layers'"));
+  CHECK_THAT(eval_error("settings { environment = sky_sphere { layer = [bozo { }] } }"),
+             Catch::Contains("did you mean 'layers'?"));
+  CHECK_THAT(eval_error("settings { environment = sky_sphere { layers = [bozo { }, 3] } }"),
+             Catch::Contains("textures and colors"));
+  CHECK_THAT(eval_error("settings { environment = sky_sphere { layers = [bozo { color_map = [[0, rgb(1), 1.5]] }] } }"),
+             Catch::Contains("transmit 1.5"));
+  CHECK_THAT(eval_error("settings { environment = sky_sphere { layers = [sky_sphere { layers = [bozo { }] }] } }"),
+             Catch::Contains("layer 1 of sky_sphere is a sky_sphere"));
+  CHECK_THAT(eval_error("sphere { radius = 1  material = material { color = sky_sphere { layers = [bozo { }] } } }"),
+             Catch::Contains("settings { environment = ... }"));
+  // Located: file:line:col of the property.
+  CHECK_THAT(eval_error("settings {\n  environment = sky_sphere { layers = [bozo { color_map = [[0, rgb(1), -1]] }] } }"),
+             Catch::Contains(":2:"));
+}

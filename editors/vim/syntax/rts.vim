@@ -12,7 +12,7 @@ syn keyword rtsBoolean true false
 syn keyword rtsConstant none clock frame frames
 
 " Block kinds.
-syn keyword rtsBlock settings camera material checker stripes gradient image_texture latlong_map cube_map
+syn keyword rtsBlock settings camera material checker stripes gradient image_texture latlong_map cube_map sky_sphere
 syn keyword rtsBlock bozo spotted granite marble wood agate onion leopard wrinkles crackle cells bumps dents
 syn keyword rtsBlock ripples waves pattern
 syn keyword rtsBlock box cone cylinder disc mesh plane quad sphere superellipsoid torus triangle isosurface blob

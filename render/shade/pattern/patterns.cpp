@@ -122,6 +122,7 @@ double raw_value(const PatternDesc& d, const glm::dvec3& q, bool height) {
     case PatternKind::Ripples: return ripples(p, d.frequency, d.phase);
     case PatternKind::Waves: return waves(p, d.frequency, d.phase, height);
     case PatternKind::Function: return d.function ? d.function->eval(p) : 0.0;
+    case PatternKind::Gradient: return p[d.axis < 0 || d.axis > 2 ? 1 : d.axis];
   }
   return 0.0;
 }
@@ -165,8 +166,26 @@ glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t) {
   return a.color + (b.color - a.color) * ((t - a.value) / span);
 }
 
+double transmit_lookup(const std::vector<ColorMapEntry>& map, double t) {
+  if (map.empty()) return 0.0;
+  if (!(t > map.front().value)) return map.front().transmit;   // also NaN
+  if (t >= map.back().value) return map.back().transmit;
+  std::size_t i = 1;
+  while (map[i].value < t) ++i;
+  const ColorMapEntry& a = map[i - 1];
+  const ColorMapEntry& b = map[i];
+  const double span = b.value - a.value;
+  if (!(span > 0.0)) return b.transmit;
+  return a.transmit + (b.transmit - a.transmit) * ((t - a.value) / span);
+}
+
 glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q, bool height) {
   return color_map_lookup(d.color_map, wave(d, raw_value(d, q, height), height));
+}
+
+glm::dvec4 pattern_color_transmit(const PatternDesc& d, const glm::dvec3& q) {
+  const double t = wave(d, raw_value(d, q));
+  return glm::dvec4(color_map_lookup(d.color_map, t), transmit_lookup(d.color_map, t));
 }
 
 }  // namespace rts::render::pattern

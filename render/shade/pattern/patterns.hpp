@@ -17,6 +17,7 @@
 //            frequency, weighted by its inverse, as POV-Ray's). As colors the frequency and phase
 //            apply again in the wave function, as in POV-Ray (hard-edged bands when frequency
 //            > 1); as a bump's height (height = true) only inside, so the height stays smooth.
+//  - gradient: the coordinate along its axis (a `gradient` block with a color_map).
 //  - function: a user function f(x, y, z) (render/geometry/function/compiled_function.hpp).
 // Every pattern but marble, wood and agate applies a non-zero `turbulence` as a warp
 // p += turbulence * vector_turbulence(p) first (POV-Ray's classic turbulence).
@@ -36,5 +37,9 @@ double wave(const PatternDesc& d, double value, bool height = false);
 glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t);
 // All three: the color of the pattern at q (height: as a bump's height).
 glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q, bool height = false);
+// The color map's transmit at index t, interpolated as the colors are.
+double transmit_lookup(const std::vector<ColorMapEntry>& map, double t);
+// The color and (w) the transmit at q, for a sky_sphere's layers.
+glm::dvec4 pattern_color_transmit(const PatternDesc& d, const glm::dvec3& q);
 
 }  // namespace rts::render::pattern
