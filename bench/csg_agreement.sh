@@ -13,7 +13,7 @@ echo "scene agreement differing_pixels"
 for rts_scene in "$root"/bench/csg/*.rts; do
   name="$(basename "$rts_scene" .rts)"
   "$rts" render "$rts_scene" -o "$tmp/$name.pfm" --no-progress 2>/dev/null
-  povray "+I$root/bench/csg/$name.pov" "+O$tmp/$name.ppm" +W320 +H240 -A -D +FP16 >/dev/null 2>&1
+  povray "+I$root/bench/csg/$name.pov" "+L$root/bench/csg" "+O$tmp/$name.ppm" +W320 +H240 -A -D +FP16 >/dev/null 2>&1
   echo "$name $(python3 "$root/bench/csg/agreement.py" "$tmp/$name.pfm" "$tmp/$name.ppm")"
 done
 # The diffuse-lit pass of the scenes that have one (`let lit = 0`, `-D lit=1`; POV-Ray's
@@ -24,7 +24,7 @@ for rts_scene in "$root"/bench/csg/*.rts; do
   grep -q '^let lit = 0' "$rts_scene" || continue
   name="$(basename "$rts_scene" .rts)"
   "$rts" render "$rts_scene" -D lit=1 -o "$tmp/$name.lit.pfm" --no-progress 2>/dev/null
-  povray "+I$root/bench/csg/$name.pov" "+O$tmp/$name.lit.ppm" +W320 +H240 -A -D +FP16 Declare=Lit=1 File_Gamma=1.0 \
+  povray "+I$root/bench/csg/$name.pov" "+L$root/bench/csg" "+O$tmp/$name.lit.ppm" +W320 +H240 -A -D +FP16 Declare=Lit=1 File_Gamma=1.0 \
     >/dev/null 2>&1
   echo "$name $(python3 "$root/bench/csg/agreement.py" --lit "$tmp/$name.lit.pfm" "$tmp/$name.lit.ppm")"
 done

@@ -28,7 +28,6 @@ constexpr Hint kHints[] = {
     {"lathe", "not yet available"},
     {"sor", "not yet available"},
     {"prism", "not yet available"},
-    {"height_field", "not yet available"},
 };
 
 }  // namespace

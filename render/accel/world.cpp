@@ -97,6 +97,8 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     AABB object_bounds;
     bool unbounded = false;
     add_geometry(scene, shape, part, object_bounds, unbounded);
+    // A height field's solid has no floor (POV-Ray's): its bounds hold only the drawn surface.
+    if (std::holds_alternative<HeightField>(shape.geometry)) unbounded = true;
     if (m != Mat4(1.0)) part.transform = add_transform(m);
     AABB box = unbounded ? AABB{Vec3(-inf), Vec3(inf)}
                          : (m == Mat4(1.0) ? object_bounds : transform_bounds(m, object_bounds));

@@ -13,6 +13,7 @@
 #include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/shade/lights.hpp"
 #include "render/builder/block_properties.hpp"
+#include "render/builder/height_field_builder.hpp"
 #include "render/builder/obj_loader.hpp"
 #include "render/builder/pattern_builder.hpp"
 #include "render/geometry/tolerances.hpp"
@@ -771,6 +772,16 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       s.geometry = g;
     }
     ps.check_unused(names_of<Triangle>());
+  } else if (kind == "height_field") {
+    std::string path;
+    if (ps.has("file")) {
+      SourceRef where = loc_of(ps, "file");
+      std::string file = ps.string("file", "");
+      path = resolve_path(file, where);
+      check_readable(path, file, "height_field image", where);
+    }
+    s.geometry = build_height_field(ps, path, limits_.max_memory);
+    ps.check_unused(names_of<HeightField>());
   } else if (kind == "mesh") {
     MeshRef g;
     g.smooth = ps.boolean("smooth", g.smooth);

@@ -28,6 +28,15 @@ inline constexpr double kIsoNormalStep = 1e-6;
 // the degree drops so poly_roots never divides by a rounding residue.
 inline constexpr double kBlobLeadingCoefficient = 1e-14;
 
+// A height field skips a block or cell when the ray's height over it misses the block's height
+// range by more than this (relative to the heights compared): a root on the block's edge, where
+// the ray's height is rounded, is never skipped.
+inline constexpr double kHeightFieldCellMargin = 1e-9;
+
+// A height-field root is the quotient of plane equations whose terms are of the grid's size in
+// cells: its point carries this relative rounding per cell of the grid (generous: 64 ulp).
+inline constexpr double kHeightFieldRootRelative = 1.4e-14;
+
 // A ray parallel to a plane/disc/cap within this cosine is treated as missing it.
 inline constexpr double kParallelCosine = 1e-14;
 

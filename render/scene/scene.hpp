@@ -174,8 +174,26 @@ struct BlobComponent { Vec3 a{0.0}, b{0.0}; double radius = 1.0, strength = 1.0;
 inline constexpr std::size_t kMaxBlobComponents = 256;  // bounds the per-ray stack arrays
 struct Blob { double threshold = 1.0; std::vector<BlobComponent> components; };
 
+// POV-Ray's height_field: heights in [0, 1] sampled on an nx by nz grid over the unit square
+// x, z in [0, 1] (render/geometry/shapes/height_field.hpp builds and traces it). Shared by
+// every copy of the shape: a big grid is held once.
+struct HeightFieldData {
+  int nx = 0, nz = 0;                 // samples along x and z (at least 2 each)
+  std::vector<float> height;          // nz rows of nx: height[iz * nx + ix] at x = ix / (nx - 1), z = iz / (nz - 1)
+  int block = 8;                      // cells per block side (the traversal's coarse level)
+  int blocks_x = 0, blocks_z = 0;
+  std::vector<float> block_lo, block_hi;  // each block's height range (its cells' corners)
+  std::vector<glm::vec3> normals;     // per sample, POV-Ray's averaged normals (smooth only)
+  float min_height = 0.0f, max_height = 0.0f;
+};
+struct HeightField {
+  std::shared_ptr<const HeightFieldData> data;
+  bool smooth = false;
+  double water_level = 0.0;           // below it nothing is drawn (the solid is filled up to it)
+};
+
 using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,
-                                   Isosurface, Blob>;
+                                   Isosurface, Blob, HeightField>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;

@@ -104,6 +104,12 @@ std::string shape_text(const ShapeDesc& s) {
                           : fmt::format(" sphere {} {} {}", vec(c.a), num(c.radius), num(c.strength));
       return out;
     }
+    std::string operator()(const HeightField& g) {
+      if (!g.data) return "height_field empty";
+      return fmt::format("height_field {}x{} heights {}..{} smooth {} water_level {}", g.data->nx, g.data->nz,
+                         num(g.data->min_height), num(g.data->max_height), g.smooth ? "true" : "false",
+                         num(g.water_level));
+    }
     std::string operator()(const Isosurface& g) {
       std::string box = g.container_sphere ? fmt::format("sphere {} {}", vec(g.center), num(g.radius))
                                            : fmt::format("box {} {}", vec(g.box_min), vec(g.box_max));

@@ -84,6 +84,17 @@ T sample(SceneDesc& s) {
     g.box_min = Vec3(-1.2, -1.2, -1.2);
     g.box_max = Vec3(1.2, 0.6, 1.2);
     return g;
+  } else if constexpr (std::is_same_v<T, HeightField>) {
+    // A 17 x 13 grid of hills and a valley, smooth, partly under water.
+    std::vector<float> h;
+    for (int iz = 0; iz < 13; ++iz)
+      for (int ix = 0; ix < 17; ++ix)
+        h.push_back(static_cast<float>(0.5 + 0.4 * std::sin(0.7 * ix) * std::cos(0.9 * iz)));
+    HeightField g;
+    g.data = make_height_field_data(17, 13, std::move(h), true);
+    g.smooth = true;
+    g.water_level = 0.2;
+    return g;
   } else {
     static_assert(kNoSample<T>, "a new shape kind needs a sample in test_error_bounds.cpp");
   }

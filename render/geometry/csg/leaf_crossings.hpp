@@ -12,6 +12,7 @@
 #include "render/geometry/shapes/box.hpp"
 #include "render/geometry/shapes/cone.hpp"
 #include "render/geometry/shapes/cylinder.hpp"
+#include "render/geometry/shapes/height_field.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
 #include "render/geometry/shapes/plane.hpp"
 #include "render/geometry/shapes/sphere.hpp"
@@ -97,6 +98,24 @@ inline bool leaf_hit(const Isosurface& s, const Ray& ray, const CsgLeafCrossings
   double t0, t1;
   bool on_container = iso_container_span(s, ray, t0, t1) && (c.t[k] == t0 || c.t[k] == t1);
   iso_hit_at(s, ray, c.t[k], on_container, hit);
+  return true;
+}
+
+// The column under the surface (render/geometry/shapes/height_field.hpp): its walls, surface
+// and water plane; the kind of each crossing is found again at the chosen one.
+inline void leaf_crossings(const HeightField& f, const Ray& ray, CsgLeafCrossings& out) {
+  HeightFieldCrossing c[kMaxLeafCrossings];
+  out.count = height_field_crossings(f, ray, c, kMaxLeafCrossings, out.inside_at_start);
+  for (int i = 0; i < out.count; ++i) out.t[i] = c[i].t;
+}
+
+inline bool leaf_hit(const HeightField& f, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  bool inside = false;
+  HeightFieldCrossing all[kMaxLeafCrossings];
+  int n = height_field_crossings(f, ray, all, kMaxLeafCrossings, inside);
+  if (k >= n) return false;
+  height_field_crossing_hit(f, ray, all[k], hit);
+  hit.t = c.t[k];
   return true;
 }
 

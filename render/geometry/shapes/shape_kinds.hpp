@@ -15,6 +15,7 @@
 #include "render/geometry/shapes/cone.hpp"
 #include "render/geometry/shapes/cylinder.hpp"
 #include "render/geometry/shapes/disc.hpp"
+#include "render/geometry/shapes/height_field.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
 #include "render/geometry/shapes/mesh.hpp"
 #include "render/geometry/shapes/plane.hpp"
