@@ -35,7 +35,7 @@ bool is_builtin_value(const std::string& n) {
       "min", "mod", "pow", "prod", "radians", "rand", "seed", "select", "sin", "sinh", "sqr", "sqrt", "str",
       "strcmp", "strlen", "strlwr", "strupr", "substr", "sum", "tan", "tanh", "trace", "val", "vaxis_rotate",
       "vcross", "vdot", "vlength", "vnormalize", "vrotate", "vstr", "vturbulence", "min_extent", "max_extent",
-      "eval_pigment", "internal", "transform"};
+      "eval_pigment", "internal"};
   return names.count(n) > 0;
 }
 

@@ -40,6 +40,10 @@ bool Translator::is_unsupported_shape(const std::string& k) {
 
 namespace {
 
+// A declared transform's steps are copied where it is used; a chain of declarations naming the
+// last one twice doubles at each step, so the count is bounded (a located error past it).
+constexpr std::size_t kMaxTransformSteps = 10000;
+
 // The closest rts alternative for an unsupported shape, and whether it is planned.
 std::pair<std::string, bool> shape_alternative(const std::string& k) {
   if (k == "lathe" || k == "sor" || k == "prism" || k == "blob" || k == "height_field" || k == "isosurface")
@@ -70,7 +74,7 @@ bool Translator::has_texture(const Block& b) const {
     }
     if (it.kind == Item::Value && b.kind == "object" && it.args[0]->kind == Expr::Name) {
       auto* self = const_cast<Translator*>(this);
-      if (Symbol* s = self->lookup(it.args[0]->text); s && s->block && has_texture(*s->block)) return true;
+      if (Symbol* s = self->lookup(it.args[0]->text); s && s->textured) return true;
     }
     if (it.kind != Item::Nested && it.kind != Item::Keyword && b.kind != "object") all_children = false;
   }
@@ -95,14 +99,9 @@ std::vector<std::string> Translator::transforms(const Item& it) {
       error(it.loc, "'matrix' takes 12 values: <a, b, c, d, e, f, g, h, i, j, k, l>");
     }
     if (it.name == "transform") {
-      // transform T, a declared transform: its steps inlined.
+      // transform T, a declared transform: its steps (written out when it was declared).
       if (it.args[0]->kind == Expr::Name)
-        if (Symbol* s = lookup(it.args[0]->text); s && s->block) {
-          std::vector<std::string> out;
-          for (const Item& step : s->block->items)
-            for (std::string& t : transforms(step)) out.push_back(std::move(t));
-          return out;
-        }
+        if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Transform) return s->steps;
       unsupported(it.loc, "transform", "translate/rotate/scale/matrix written out", false);
     }
   }
@@ -114,13 +113,14 @@ std::vector<std::string> Translator::transforms(const Item& it) {
         ref.kind = Item::Keyword;
         ref.name = "transform";
         for (std::string& t : transforms(ref)) out.push_back(std::move(t));
-        continue;
-      }
-      if (step.kind == Item::Keyword && step.name == "inverse") {
+      } else if (step.kind == Item::Keyword && step.name == "inverse") {
         unsupported(step.loc, "inverse", "the inverse transform written out", false);
-        continue;
+      } else {
+        for (std::string& t : transforms(step)) out.push_back(std::move(t));
       }
-      for (std::string& t : transforms(step)) out.push_back(std::move(t));
+      // Declared transforms that each name the last one twice double at every step.
+      if (out.size() > kMaxTransformSteps)
+        error(step.loc, fmt::format("this transform expands to more than {} steps", kMaxTransformSteps));
     }
     return out;
   }
@@ -382,8 +382,8 @@ void Translator::finish(const Block& b, MaterialProps& m) {
   bool specular = false;
   for (const Item& it : b.items) {
     if (it.kind == Item::Value && it.args[0]->kind == Expr::Name) {
-      if (Symbol* s = lookup(it.args[0]->text); s && s->block && s->type == Type::Finish) {
-        finish(*s->block, m);
+      if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Finish) {
+        for (const auto& p : s->props.props) m.set(p.first, p.second);
         continue;
       }
       // A library finish (Shiny, Phong_Glossy, F_MetalC ...): its properties, which the
@@ -473,8 +473,8 @@ bool Translator::library_part(const std::string& name, MaterialProps& m) {
 void Translator::interior(const Block& b, MaterialProps& m) {
   for (const Item& it : b.items) {
     if (it.kind == Item::Value && it.args[0]->kind == Expr::Name) {
-      if (Symbol* s = lookup(it.args[0]->text); s && s->block && s->type == Type::Interior) {
-        interior(*s->block, m);
+      if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Interior) {
+        for (const auto& p : s->props.props) m.set(p.first, p.second);
         continue;
       }
       MaterialProps part;  // a library interior (I_Glass ...): its index

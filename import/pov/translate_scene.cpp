@@ -283,6 +283,7 @@ void Translator::declare(Writer& w, const Item& it) {
             if (Symbol* inner = lookup(r.args[0]->text)) s.object_kind = inner->object_kind;
             break;
           }
+      s.textured = has_texture(b);  // before N is redefined: `object { N texture { } }` names the old N
       object(w, b, head, false);
       if (b.kind != "object") s.object_kind = last_kind_;
     } else if (b.kind == "texture" || b.kind == "material") {
@@ -298,13 +299,19 @@ void Translator::declare(Writer& w, const Item& it) {
       w.line(head + pigment_value(b));
     } else if (b.kind == "finish") {
       s.type = Type::Finish;
-      MaterialProps m;
-      finish(b, m);
+      finish(b, s.props);
       w.line(fmt::format("// finish {}: written into each material that uses it", it.name));
       define(it.name, s);
       return;
     } else if (b.kind == "interior" || b.kind == "transform" || b.kind == "normal") {
       s.type = b.kind == "interior" ? Type::Interior : b.kind == "normal" ? Type::Normal : Type::Transform;
+      if (s.type == Type::Interior) interior(b, s.props);
+      if (s.type == Type::Transform) {
+        Item whole;
+        whole.kind = Item::Nested;
+        whole.block = e.block;
+        s.steps = transforms(whole);
+      }
       w.line(fmt::format("// {} {}: written where it is used", b.kind, it.name));
     } else if (b.kind == "light_source") {
       s.type = Type::Light;
@@ -768,9 +775,10 @@ void Translator::footer(Writer& w) {
 }
 
 // The names the user's include files declare, before the main file is read: the reader needs
-// them to tell a lower-case name that is a value from a keyword.
+// them to tell a lower-case name that is a value from a keyword. Each file is read once: a file
+// that includes itself twice would otherwise be read 2^20 times.
 void collect_declared(const std::string& text, const std::string& dir, const PovOptions& options,
-                      std::set<std::string>& names, int depth) {
+                      std::set<std::string>& names, std::set<std::string>& seen, int depth) {
   if (depth > 20) return;
   std::vector<Token> toks;
   try {
@@ -790,10 +798,11 @@ void collect_declared(const std::string& text, const std::string& dir, const Pov
         fs::path p = fs::path(folder.empty() ? "." : folder) / toks[i + 1].text;
         std::error_code ec;
         if (!fs::is_regular_file(p, ec) || standard_includes().count(p.filename().string())) continue;
+        if (!seen.insert(fs::weakly_canonical(p, ec).string()).second) break;
         std::ifstream in(p, std::ios::binary);
         std::stringstream buffer;
         buffer << in.rdbuf();
-        collect_declared(buffer.str(), p.parent_path().string(), options, names, depth + 1);
+        collect_declared(buffer.str(), p.parent_path().string(), options, names, seen, depth + 1);
         break;
       }
     }
@@ -822,7 +831,8 @@ PovResult import_pov(const std::string& text, const PovOptions& options) {
   t.library_known_ = !options.stdlib_dir.empty() && fs::is_directory(options.stdlib_dir);
   Program p;
   try {
-    collect_declared(text, fs::path(options.source_path).parent_path().string(), options, t.reader_names_, 0);
+    std::set<std::string> seen;
+    collect_declared(text, fs::path(options.source_path).parent_path().string(), options, t.reader_names_, seen, 0);
     p = read_program(text, options.source_path, t.reader_names_);
   } catch (const SyntaxError& e) {
     throw PovError{Diagnostic{options.source_path, e.loc.line, e.loc.col, e.message}};

@@ -22,12 +22,6 @@ namespace rts::import::pov {
 enum class Type { Unknown, Float, Bool, Vector, Color, String, Object, Material, Pigment, Finish, Interior,
                   Normal, Camera, Light, Transform, List, Random, Macro };
 
-struct Symbol {
-  Type type = Type::Unknown;
-  std::shared_ptr<Block> block;  // declared blocks: finishes and transforms are inlined from it
-  std::string object_kind;       // Object: the block's kind (sphere, union, ...)
-};
-
 // An expression written as rts text, with its type and how tightly it binds (rts's levels:
 // 2 or, 3 and, 4 not, 5 compare, 7 add, 8 multiply, 9 unary, 11 postfix, 12 primary).
 struct Text {
@@ -44,6 +38,22 @@ struct MaterialProps {
   void set(const std::string& name, const std::string& value);
   bool has(const std::string& name) const;
   bool empty() const { return base.empty() && props.empty(); }
+};
+
+// A declared name. What a use needs from its block is worked out when it is declared, so
+// a use never follows names again: `#declare F = finish { F phong 1 }` means the earlier F
+// (POV-Ray's meaning), and a chain of declarations each naming the last twice
+// (`#declare F2 = finish { F1 F1 }`) costs each declaration once instead of doubling.
+struct Symbol {
+  Type type = Type::Unknown;
+  std::shared_ptr<Block> block;  // declared blocks (a camera's items are taken from it)
+  std::string object_kind;       // Object: the block's kind (sphere, union, ...)
+  bool textured = false;         // Object: it carries its own texture (has_texture)
+  std::vector<std::string> steps;  // Transform: its steps as rts transforms
+  MaterialProps props;           // Finish, Interior: what it adds to a material
+  Symbol() = default;
+  Symbol(Type t, std::shared_ptr<Block> b, std::string kind)
+      : type(t), block(std::move(b)), object_kind(std::move(kind)) {}
 };
 
 class Translator {

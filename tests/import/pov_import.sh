@@ -127,4 +127,18 @@ EOF
 expect_exit 0 "an expression roughness imports" -- "$RTS" import "$TMP/rough.pov" -o "$TMP/rough.rts"
 expect_grep "$TMP/rough.rts" 'shininess = 1 / \(R \+ 0\)' "the expression is inverted whole"
 expect_exit 0 "and evaluates" -- "$RTS" check "$TMP/rough.rts"
+
+
+# A declaration naming itself means its earlier value (POV-Ray's meaning), and chains of
+# declarations each naming the last twice cost each declaration once (fuzz_pov's hang):
+# resolved when declared, never followed again at a use.
+regress="$SRC/tests/fuzz/regressions/pov"
+expect_exit 0 "a finish, interior, transform and object naming themselves" -- timeout 20 "$RTS" import "$regress/self_reference.pov"
+expect_grep "$TMP/out" "diffuse = 0.5  specular = 1  shininess = 40  ior = 1.5" "the earlier finish and interior kept"
+expect_grep "$TMP/out" "\} translate <1, 0, 0> translate <1, 0, 0>$" "transform T: the earlier T twice"
+expect_exit 0 "40 finishes each naming the last twice" -- timeout 20 "$RTS" import "$regress/finish_chain.pov"
+expect_exit 0 "40 textured unions each naming the last twice" -- timeout 20 "$RTS" import "$regress/union_chain.pov"
+expect_exit 1 "40 transforms each naming the last twice" -- timeout 20 "$RTS" import "$regress/transform_chain.pov"
+expect_grep "$TMP/err" "transform_chain.pov:17:32: error: this transform expands to more than 10000 steps" "a located error"
+
 finish

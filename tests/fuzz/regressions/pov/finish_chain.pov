@@ -1,0 +1,44 @@
+// fuzz_pov: declared finishes that each name the last one twice: followed at every use,
+// 2^40 steps (a hang). Each declaration is now resolved once.
+#declare F0 = finish { phong 1 }
+#declare F1 = finish { F0 F0 }
+#declare F2 = finish { F1 F1 }
+#declare F3 = finish { F2 F2 }
+#declare F4 = finish { F3 F3 }
+#declare F5 = finish { F4 F4 }
+#declare F6 = finish { F5 F5 }
+#declare F7 = finish { F6 F6 }
+#declare F8 = finish { F7 F7 }
+#declare F9 = finish { F8 F8 }
+#declare F10 = finish { F9 F9 }
+#declare F11 = finish { F10 F10 }
+#declare F12 = finish { F11 F11 }
+#declare F13 = finish { F12 F12 }
+#declare F14 = finish { F13 F13 }
+#declare F15 = finish { F14 F14 }
+#declare F16 = finish { F15 F15 }
+#declare F17 = finish { F16 F16 }
+#declare F18 = finish { F17 F17 }
+#declare F19 = finish { F18 F18 }
+#declare F20 = finish { F19 F19 }
+#declare F21 = finish { F20 F20 }
+#declare F22 = finish { F21 F21 }
+#declare F23 = finish { F22 F22 }
+#declare F24 = finish { F23 F23 }
+#declare F25 = finish { F24 F24 }
+#declare F26 = finish { F25 F25 }
+#declare F27 = finish { F26 F26 }
+#declare F28 = finish { F27 F27 }
+#declare F29 = finish { F28 F28 }
+#declare F30 = finish { F29 F29 }
+#declare F31 = finish { F30 F30 }
+#declare F32 = finish { F31 F31 }
+#declare F33 = finish { F32 F32 }
+#declare F34 = finish { F33 F33 }
+#declare F35 = finish { F34 F34 }
+#declare F36 = finish { F35 F35 }
+#declare F37 = finish { F36 F36 }
+#declare F38 = finish { F37 F37 }
+#declare F39 = finish { F38 F38 }
+#declare F40 = finish { F39 F39 }
+sphere { 0, 1 finish { F40 } }

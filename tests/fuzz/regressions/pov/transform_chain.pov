@@ -1,0 +1,44 @@
+// fuzz_pov: transforms that each name the last one twice double at every step: a located
+// error past 10,000 steps instead of 2^40 strings.
+#declare T0 = transform { translate x }
+#declare T1 = transform { T0 T0 }
+#declare T2 = transform { T1 T1 }
+#declare T3 = transform { T2 T2 }
+#declare T4 = transform { T3 T3 }
+#declare T5 = transform { T4 T4 }
+#declare T6 = transform { T5 T5 }
+#declare T7 = transform { T6 T6 }
+#declare T8 = transform { T7 T7 }
+#declare T9 = transform { T8 T8 }
+#declare T10 = transform { T9 T9 }
+#declare T11 = transform { T10 T10 }
+#declare T12 = transform { T11 T11 }
+#declare T13 = transform { T12 T12 }
+#declare T14 = transform { T13 T13 }
+#declare T15 = transform { T14 T14 }
+#declare T16 = transform { T15 T15 }
+#declare T17 = transform { T16 T16 }
+#declare T18 = transform { T17 T17 }
+#declare T19 = transform { T18 T18 }
+#declare T20 = transform { T19 T19 }
+#declare T21 = transform { T20 T20 }
+#declare T22 = transform { T21 T21 }
+#declare T23 = transform { T22 T22 }
+#declare T24 = transform { T23 T23 }
+#declare T25 = transform { T24 T24 }
+#declare T26 = transform { T25 T25 }
+#declare T27 = transform { T26 T26 }
+#declare T28 = transform { T27 T27 }
+#declare T29 = transform { T28 T28 }
+#declare T30 = transform { T29 T29 }
+#declare T31 = transform { T30 T30 }
+#declare T32 = transform { T31 T31 }
+#declare T33 = transform { T32 T32 }
+#declare T34 = transform { T33 T33 }
+#declare T35 = transform { T34 T34 }
+#declare T36 = transform { T35 T35 }
+#declare T37 = transform { T36 T36 }
+#declare T38 = transform { T37 T37 }
+#declare T39 = transform { T38 T38 }
+#declare T40 = transform { T39 T39 }
+sphere { 0, 1 transform T40 }

@@ -1,0 +1,44 @@
+// fuzz_pov: textured unions of unions, each naming the last twice: has_texture followed
+// every name (2^40 calls).
+#declare A0 = sphere { 0, 1 texture { pigment { rgb 1 } } }
+#declare A1 = union { object { A0 } object { A0 } }
+#declare A2 = union { object { A1 } object { A1 } }
+#declare A3 = union { object { A2 } object { A2 } }
+#declare A4 = union { object { A3 } object { A3 } }
+#declare A5 = union { object { A4 } object { A4 } }
+#declare A6 = union { object { A5 } object { A5 } }
+#declare A7 = union { object { A6 } object { A6 } }
+#declare A8 = union { object { A7 } object { A7 } }
+#declare A9 = union { object { A8 } object { A8 } }
+#declare A10 = union { object { A9 } object { A9 } }
+#declare A11 = union { object { A10 } object { A10 } }
+#declare A12 = union { object { A11 } object { A11 } }
+#declare A13 = union { object { A12 } object { A12 } }
+#declare A14 = union { object { A13 } object { A13 } }
+#declare A15 = union { object { A14 } object { A14 } }
+#declare A16 = union { object { A15 } object { A15 } }
+#declare A17 = union { object { A16 } object { A16 } }
+#declare A18 = union { object { A17 } object { A17 } }
+#declare A19 = union { object { A18 } object { A18 } }
+#declare A20 = union { object { A19 } object { A19 } }
+#declare A21 = union { object { A20 } object { A20 } }
+#declare A22 = union { object { A21 } object { A21 } }
+#declare A23 = union { object { A22 } object { A22 } }
+#declare A24 = union { object { A23 } object { A23 } }
+#declare A25 = union { object { A24 } object { A24 } }
+#declare A26 = union { object { A25 } object { A25 } }
+#declare A27 = union { object { A26 } object { A26 } }
+#declare A28 = union { object { A27 } object { A27 } }
+#declare A29 = union { object { A28 } object { A28 } }
+#declare A30 = union { object { A29 } object { A29 } }
+#declare A31 = union { object { A30 } object { A30 } }
+#declare A32 = union { object { A31 } object { A31 } }
+#declare A33 = union { object { A32 } object { A32 } }
+#declare A34 = union { object { A33 } object { A33 } }
+#declare A35 = union { object { A34 } object { A34 } }
+#declare A36 = union { object { A35 } object { A35 } }
+#declare A37 = union { object { A36 } object { A36 } }
+#declare A38 = union { object { A37 } object { A37 } }
+#declare A39 = union { object { A38 } object { A38 } }
+#declare A40 = union { object { A39 } object { A39 } }
+object { A40 }
