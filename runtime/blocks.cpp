@@ -75,9 +75,6 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
         Placement::Into target(placement_, children);
         collect_properties(e.body, props, true);
       }
-      if (!props.empty())
-        fail(props.front().loc,
-             fmt::format("unknown property '{}' for group (a group takes no properties)", *props.front().name));
       // What the group expands to, checked now: groups of groups double at every level, and
       // 40 levels are 2^40 objects, which flattening would try to build.
       ObjectCount count = placement_.count(children);
@@ -89,7 +86,12 @@ Value Interpreter::eval_block(const ast::BlockExpr& e, bool keep_block) {
                                 options_.limits.max_objects));
       Value v;
       v.type = Type::Object;
-      v.id = builder_.group(std::move(children), ref(e.loc));
+      if (props.empty()) {
+        v.id = builder_.group(std::move(children), ref(e.loc));
+      } else {
+        render::ParamSet ps = to_params(kind, e.loc, props);  // `material`: the members' default
+        v.id = builder_.group(std::move(children), ps);
+      }
       placement_.record(v.id, count);
       return v;
     }

@@ -28,9 +28,11 @@ void check_transform(const Mat4& m, const SourceRef& loc) {
 }
 
 // `instanced`: by group index, the groups placed as FlatGroups instead of copied (may be
-// shorter than the group list: then nothing is instanced).
+// shorter than the group list: then nothing is instanced). `inherited`: the nearest enclosing
+// group's material (kNoId: none); a group reached with one is copied, never instanced, since
+// its shapes show that material here and maybe another elsewhere.
 void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& parent, int depth,
-                   const std::vector<bool>& instanced, FlatScene& out) {
+                   const std::vector<bool>& instanced, MaterialId inherited, FlatScene& out) {
   if (depth > tol::kMaxGroupDepth)
     throw RenderError(child.loc, "groups nested more than " + std::to_string(tol::kMaxGroupDepth) +
                                      " deep (a group containing itself?)");
@@ -42,7 +44,7 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
     case NodeKind::Shape:
       if (node.index >= scene.shapes.size()) throw RenderError(node.loc, "internal: unknown shape");
       check_transform(m, child.loc);
-      out.add_shape(node.index, m);
+      out.add_shape(node.index, m, inherited);
       break;
     case NodeKind::Light:
       if (node.index >= scene.lights.size()) throw RenderError(node.loc, "internal: unknown light");
@@ -52,17 +54,20 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
     case NodeKind::Csg:
       if (node.index >= scene.csgs.size()) throw RenderError(node.loc, "internal: unknown CSG block");
       check_transform(m, child.loc);
-      out.csgs.push_back(FlatCsg{node.index, m, node.loc});
+      out.csgs.push_back(FlatCsg{node.index, m, node.loc, inherited});
       break;
-    case NodeKind::Group:
+    case NodeKind::Group: {
       if (node.index >= scene.groups.size()) throw RenderError(node.loc, "internal: unknown group");
-      if (node.index < instanced.size() && instanced[node.index]) {
+      if (inherited == kNoId && node.index < instanced.size() && instanced[node.index]) {
         check_transform(m, child.loc);
         out.groups.push_back(FlatGroup{node.index, m, child.loc});
         break;
       }
-      for (const Child& c : scene.groups[node.index].children) flatten_child(scene, c, m, depth + 1, instanced, out);
+      const GroupDesc& g = scene.groups[node.index];
+      MaterialId mat = g.material != kNoId ? g.material : inherited;
+      for (const Child& c : g.children) flatten_child(scene, c, m, depth + 1, instanced, mat, out);
       break;
+    }
   }
 }
 
@@ -80,14 +85,14 @@ LightDesc transform_light(const LightDesc& light, const Mat4& m) {
 
 FlatScene flatten_instance(const SceneDesc& scene, const Child& instance) {
   FlatScene out;
-  flatten_child(scene, instance, Mat4(1.0), 0, {}, out);
+  flatten_child(scene, instance, Mat4(1.0), 0, {}, kNoId, out);
   return out;
 }
 
 FlatScene flatten_scene(const SceneDesc& scene) {
   FlatScene out;
   out.instanced = instanced_groups(scene);
-  for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out.instanced, out);
+  for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out.instanced, kNoId, out);
   return out;
 }
 
@@ -95,7 +100,7 @@ FlatScene flatten_group(const SceneDesc& scene, const std::vector<bool>& instanc
   FlatScene out;
   static const std::vector<bool> none;
   const std::vector<bool>& nested = level + 1 < kMaxInstanceLevels ? instanced : none;
-  for (const Child& c : scene.groups[group].children) flatten_child(scene, c, Mat4(1.0), level + 1, nested, out);
+  for (const Child& c : scene.groups[group].children) flatten_child(scene, c, Mat4(1.0), level + 1, nested, kNoId, out);
   return out;
 }
 
@@ -133,7 +138,8 @@ std::vector<bool> instanced_groups(const SceneDesc& scene) {
   constexpr uint64_t kSaturated = uint64_t(1) << 40;
   auto visit = [&](auto& self, uint32_t g, int depth) -> void {
     state[g] = Visiting;
-    bool ok = depth <= tol::kMaxGroupDepth;
+    // A group with a material gives it to members without one: copied where it is placed.
+    bool ok = depth <= tol::kMaxGroupDepth && scene.groups[g].material == kNoId;
     uint64_t count_here = 0;
     for (const Child& c : scene.groups[g].children) {
       if (!ok) break;

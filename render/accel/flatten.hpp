@@ -25,6 +25,7 @@ struct FlatCsg {
   uint32_t csg = 0;            // index into SceneDesc::csgs
   Mat4 to_world{1.0};
   SourceRef loc;               // the block
+  MaterialId inherited = kNoId;  // the enclosing group's material (for parts with none)
 };
 
 // One placement of an instanced group: World traces it as one object whose contents (the
@@ -44,13 +45,27 @@ struct FlatScene {
   // By group index: traced as a shared instance (instanced_groups), empty when none is.
   std::vector<bool> instanced;
 
-  void add_shape(uint32_t shape, const Mat4& to_world) {
+  // By shape, once any shape has one: the material of the nearest enclosing group with a
+  // material (`group { ... material = m }`), which a shape without its own shows; empty in
+  // scenes without group materials, which pay nothing for them.
+  std::vector<MaterialId> inherited;
+
+  void add_shape(uint32_t shape, const Mat4& to_world, MaterialId inherited_material = kNoId) {
     FlatShape fs{shape, kNoId};
     if (to_world != Mat4(1.0)) {
       fs.transform = static_cast<uint32_t>(transforms.size());
       transforms.push_back(to_world);
     }
+    if (inherited_material != kNoId || !inherited.empty()) {
+      inherited.resize(shapes.size(), kNoId);
+      inherited.push_back(inherited_material);
+    }
     shapes.push_back(fs);
+  }
+  // What shapes[i] shows: its own material, else its group's (kNoId: the default).
+  MaterialId material(const SceneDesc& scene, std::size_t i) const {
+    const MaterialId own = scene.shapes[shapes[i].shape].material;
+    return own != kNoId || i >= inherited.size() ? own : inherited[i];
   }
   const Mat4& to_world(const FlatShape& fs) const {
     static const Mat4 identity(1.0);

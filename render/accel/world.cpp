@@ -81,7 +81,8 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
       csg.tree.nodes.push_back(n);
     };
     if (node.kind == NodeKind::Group) {
-      add_op(CsgOp::Union, scene.groups[node.index].children, inherited, false);
+      const GroupDesc& g = scene.groups[node.index];
+      add_op(CsgOp::Union, g.children, g.material != kNoId ? g.material : inherited, false);
       return;
     }
     if (node.kind == NodeKind::Csg) {
@@ -116,7 +117,7 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
   {
     std::vector<uint32_t> top;
     for (const Child& c : d.children) {
-      add_node(add_node, c.node, block.to_world * c.transform, d.material, 0);
+      add_node(add_node, c.node, block.to_world * c.transform, d.material != kNoId ? d.material : block.inherited, 0);
       top.push_back(static_cast<uint32_t>(csg.tree.nodes.size() - 1));
     }
     CsgNode n;
@@ -137,11 +138,11 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
 }
 
 bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, const Mat4& to_world, Instance& inst,
-                               AABB& bounds, bool& unbounded) {
+                               AABB& bounds, bool& unbounded, MaterialId material) {
   const ShapeDesc& shape = scene.shapes[shape_index];
-  inst.material = shape.material;
-  if (shape.material < scene.materials.size()) {
-    const Color& t = scene.materials[shape.material].transmit;
+  inst.material = material;  // its own, else its group's
+  if (material < scene.materials.size()) {
+    const Color& t = scene.materials[material].transmit;
     inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
     has_transmissive_ = has_transmissive_ || inst.transmissive;
   }
@@ -169,11 +170,14 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   bounded.reserve(objects);
   boxes.reserve(objects);
   transforms_.reserve(flat.transforms.size());
-  for (const FlatShape& fs : flat.shapes) {
+  for (std::size_t i = 0; i < flat.shapes.size(); ++i) {
+    const FlatShape& fs = flat.shapes[i];
     Instance inst;
     AABB world_bounds;
     bool unbounded_shape = false;
-    if (!add_shape_instance(scene, fs.shape, flat.to_world(fs), inst, world_bounds, unbounded_shape)) continue;
+    if (!add_shape_instance(scene, fs.shape, flat.to_world(fs), inst, world_bounds, unbounded_shape,
+                            flat.material(scene, i)))
+      continue;
     if (unbounded_shape) {
       unbounded.push_back(inst);
       continue;

@@ -195,8 +195,9 @@ class World {
   bool intersect_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit& hit) const;
   // One shape placement (top level or inside a group): its instance and bounds in the
   // placement's parent space; false when it can never be hit (singular, empty, not finite).
+  // `material`: what it shows (its own, else its group's: FlatScene::material).
   bool add_shape_instance(const SceneDesc& scene, uint32_t shape_index, const Mat4& to_world, Instance& inst,
-                          AABB& bounds, bool& unbounded);
+                          AABB& bounds, bool& unbounded, MaterialId material);
   // Instanced groups (world_groups.cpp): builds group `group`'s contents once (its parts go
   // to `parts`), returning its index in groups_; `built` maps group index → groups_ index.
   uint32_t group_accel(const SceneDesc& scene, const std::vector<bool>& instanced, uint32_t group, int level,

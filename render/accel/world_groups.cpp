@@ -24,7 +24,10 @@ uint32_t World::group_accel(const SceneDesc& scene, const std::vector<bool>& ins
     AABB box;
     bool unbounded = false;
     // instanced_groups admits bounded shapes only; a shape that cannot be hit is left out.
-    if (!add_shape_instance(scene, fs.shape, local.to_world(fs), inst, box, unbounded) || unbounded) continue;
+    // An instanced group holds no group material: each shape shows its own.
+    if (!add_shape_instance(scene, fs.shape, local.to_world(fs), inst, box, unbounded, scene.shapes[fs.shape].material) ||
+        unbounded)
+      continue;
     mine.push_back(inst);
     boxes.push_back(box);
   }

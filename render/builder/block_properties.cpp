@@ -154,6 +154,10 @@ constexpr PropertyInfo kCsg[] = {
     {"inverse", "bool", "`false`", "Swap inside and outside."},
 };
 
+constexpr PropertyInfo kGroup[] = {
+    {"material", "material", "none", "The material of the members that have none of their own (POV-Ray's texture on a union)."},
+};
+
 constexpr BlockInfo kBlocks[] = {
     {"settings", "Image size, samples, background, integrator and other render settings.", kSettings},
     {"camera", "Where the image is seen from.", kCamera},
@@ -173,6 +177,7 @@ constexpr BlockInfo kBlocks[] = {
     {"intersection", "CSG: what is inside every shape.", kCsg},
     {"difference", "CSG: the first shape minus the others.", kCsg},
     {"merge", "CSG: the shapes together, inner surfaces removed.", kCsg},
+    {"group", "Objects placed together (any shapes, meshes, lights, CSG).", kGroup},
 };
 
 constexpr PropertyInfo kShapeMaterial{"material", "material", "none", "The shape's material."};

@@ -94,6 +94,7 @@ const std::vector<std::string_view> kDirectionalLightNames = names_of_block("dir
 const std::vector<std::string_view> kAreaLightNames = names_of_block("area_light");
 
 const std::vector<std::string_view> kCsgNames = names_of_block("union");
+const std::vector<std::string_view> kGroupNames = names_of_block("group");
 
 // The names a shape, light or CSG kind takes, or null for other kinds.
 const std::vector<std::string_view>* names_of(std::string_view kind) {
@@ -102,7 +103,7 @@ const std::vector<std::string_view>* names_of(std::string_view kind) {
   static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
       {"point_light", &kPointLightNames},  {"spot_light", &kSpotLightNames}, {"area_light", &kAreaLightNames},
       {"directional_light", &kDirectionalLightNames}, {"union", &kCsgNames}, {"intersection", &kCsgNames},
-      {"difference", &kCsgNames},          {"merge", &kCsgNames}};
+      {"difference", &kCsgNames},          {"merge", &kCsgNames},         {"group", &kGroupNames}};
   for (const auto& [name, names] : kTable)
     if (name == kind) return names;
   return nullptr;
@@ -922,8 +923,17 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
 }
 
 NodeId SceneBuilder::group(std::vector<Child> children, SourceRef loc) {
-  scene_.groups.push_back(GroupDesc{std::move(children)});
+  scene_.groups.push_back(GroupDesc{std::move(children), kNoId});
   return add_node(scene_, NodeKind::Group, scene_.groups.size() - 1, loc);
+}
+
+NodeId SceneBuilder::group(std::vector<Child> children, ParamSet& ps) {
+  ps.set_valid_names(&kGroupNames);
+  GroupDesc g{std::move(children), kNoId};
+  if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", "group", "material")) g.material = ref->id;
+  ps.check_unused(kGroupNames);
+  scene_.groups.push_back(std::move(g));
+  return add_node(scene_, NodeKind::Group, scene_.groups.size() - 1, ps.loc());
 }
 
 namespace {

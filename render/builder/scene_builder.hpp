@@ -51,6 +51,8 @@ class SceneBuilder {
   NodeId shape(std::string_view kind, ParamSet& params);      // not placed yet
   NodeId light(std::string_view kind, ParamSet& params);      // not placed yet
   NodeId group(std::vector<Child> children, SourceRef loc);
+  // A group with properties: `material`, the default of members that have none.
+  NodeId group(std::vector<Child> children, ParamSet& params);
   // `union`, `intersection`, `difference` or `merge` of the children (properties `material`,
   // the children's default, and `inverse`). Throws SceneError when a child cannot take part:
   // a light, or an open shape (no inside) in anything but a union.

@@ -328,6 +328,9 @@ struct Child {
 
 struct GroupDesc {
   std::vector<Child> children;
+  // The members' default (`group { ... material = m }`, POV-Ray's texture on a union): a
+  // member without a material of its own shows it; kNoId: none, the enclosing one's.
+  MaterialId material = kNoId;
 };
 
 struct CsgDesc {

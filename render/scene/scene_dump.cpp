@@ -237,6 +237,7 @@ void SceneDesc::dump(std::ostream& out) const {
         break;
       case NodeKind::Group:
         out << fmt::format("group children {}", groups[n.index].children.size());
+        if (groups[n.index].material != kNoId) out << fmt::format(" material {}", id(groups[n.index].material));
         break;
       case NodeKind::Csg: {
         static const char* kOps[] = {"union", "intersection", "difference", "merge"};

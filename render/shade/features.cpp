@@ -206,15 +206,17 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
     probe.material = material < scene.materials.size() ? &scene.materials[material] : &default_material;
     apply_rules(Scope::Shape, probe, f);
   };
-  for (const FlatShape& fs : flat.shapes) add_shape(scene.shapes[fs.shape], scene.shapes[fs.shape].material);
-  // An instanced group's shapes, once per group (not per placement).
+  for (std::size_t i = 0; i < flat.shapes.size(); ++i) add_shape(scene.shapes[flat.shapes[i].shape], flat.material(scene, i));
+  // An instanced group's shapes, once per group (not per placement; such a group holds no
+  // group material, so each shows its own).
   for_each_instanced_group(flat, [&](uint32_t g) {
     for_each_group_shape(scene, g, [&](const ShapeDesc& s) { add_shape(s, s.material); });
   });
-  // What a CSG block shows is its leaves, each with its own material or the block's.
+  // What a CSG block shows is its leaves, each with its own material or the block's (or the
+  // enclosing group's).
   for (const FlatCsg& fc : flat.csgs) {
     f.add(Feature::Csg);
-    for_each_csg_leaf(scene, fc.csg, add_shape);
+    for_each_csg_leaf(scene, fc.csg, add_shape, fc.inherited);
   }
   probe.shape = nullptr;
   probe.material = nullptr;
@@ -236,11 +238,11 @@ std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
     if (id < scene.materials.size())
       for_each_texture(scene.materials[id], [&](TextureId t) { if (t < used.size()) used[t] = true; });
   };
-  for (const FlatShape& fs : flat.shapes) use(scene.shapes[fs.shape], scene.shapes[fs.shape].material);
+  for (std::size_t i = 0; i < flat.shapes.size(); ++i) use(scene.shapes[flat.shapes[i].shape], flat.material(scene, i));
   for_each_instanced_group(flat, [&](uint32_t g) {
     for_each_group_shape(scene, g, [&](const ShapeDesc& s) { use(s, s.material); });
   });
-  for (const FlatCsg& fc : flat.csgs) for_each_csg_leaf(scene, fc.csg, use);
+  for (const FlatCsg& fc : flat.csgs) for_each_csg_leaf(scene, fc.csg, use, fc.inherited);
   if (scene.settings.environment < used.size()) used[scene.settings.environment] = true;
   return used;
 }

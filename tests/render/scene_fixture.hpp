@@ -24,8 +24,8 @@ inline NodeId add_light(SceneDesc& s, const LightDesc& l) {
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
-inline NodeId add_group(SceneDesc& s, std::vector<Child> children) {
-  s.groups.push_back(GroupDesc{std::move(children)});
+inline NodeId add_group(SceneDesc& s, std::vector<Child> children, MaterialId material = kNoId) {
+  s.groups.push_back(GroupDesc{std::move(children), material});
   s.nodes.push_back(Node{NodeKind::Group, static_cast<uint32_t>(s.groups.size() - 1), {}});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }

@@ -239,6 +239,33 @@ TEST_CASE("csg world: a child without material shows the block's", "[csg]") {
   CHECK(seen(s.scene, Ray{Vec3(0.8, 0, -5), Vec3(0, 0, 1)}) == red);
 }
 
+TEST_CASE("group world: a member without material shows the nearest group's, in CSG too", "[csg]") {
+  CsgScene s;
+  MaterialId red = s.mat(1, 0, 0), blue = s.mat(0, 0, 1), green = s.mat(0, 1, 0);
+  // group(red) { plain sphere at x=0, blue sphere at x=3, group(green) { plain sphere at x=6 },
+  //              union { plain box at x=9 }, union(blue) { plain box at x=12 } }
+  NodeId plain = add_shape(s.scene, Sphere{Vec3(0), 1.0});
+  NodeId own = add_shape(s.scene, Sphere{Vec3(3, 0, 0), 1.0}, blue);
+  NodeId inner = add_group(s.scene, {Child{add_shape(s.scene, Sphere{Vec3(6, 0, 0), 1.0}), Mat4(1.0), {}}}, green);
+  s.child(Box{Vec3(8, -1, -1), Vec3(10, 1, 1)}, kNoId);
+  NodeId csg = s.block(CsgOp::Union);
+  s.child(Box{Vec3(11, -1, -1), Vec3(13, 1, 1)}, kNoId);
+  NodeId csg_own = s.block(CsgOp::Union, blue);
+  std::vector<Child> members;
+  for (NodeId n : {plain, own, inner, csg, csg_own}) members.push_back(Child{n, Mat4(1.0), {}});
+  place(s.scene, add_group(s.scene, members, red));
+  auto at = [&](double x) { return seen(s.scene, Ray{Vec3(x, 0, -5), Vec3(0, 0, 1)}); };
+  CHECK(at(0) == red);
+  CHECK(at(3) == blue);
+  CHECK(at(6) == green);
+  CHECK(at(9) == red);
+  CHECK(at(12) == blue);
+  // The same shapes outside any group with a material keep none.
+  CsgScene bare;
+  place(bare.scene, add_shape(bare.scene, Sphere{Vec3(0), 1.0}));
+  CHECK(seen(bare.scene, Ray{Vec3(0, 0, -5), Vec3(0, 0, 1)}) == kNoId);
+}
+
 TEST_CASE("csg world: intersection of two spheres is a lens; transforms on block and child", "[csg]") {
   CsgScene s;
   MaterialId a = s.mat(1, 0, 0), b = s.mat(0, 1, 0);
