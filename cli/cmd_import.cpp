@@ -34,6 +34,7 @@ struct ImportCommandOptions {
   std::string format;
   std::vector<std::string> include_dirs;  // -I: POV-Ray's Library_Path
   bool strict = false;
+  std::string ini;  // POV-Ray: its render options (Width, Height, Antialias)
   std::vector<int> size;           // MIT a2 -size W H
   int bounces = 0;                 // MIT a2 -bounces N
   bool shadows = false;            // MIT a2 -shadows
@@ -112,6 +113,10 @@ int run_pov_import(const ImportCommandOptions& o) {
   opt.stdlib_dir = runtime::find_standard_library();
   import::pov::PovResult result;
   std::string why;
+  if (!o.ini.empty() && !read_pov_ini(o.ini, opt, why)) {
+    if (!why.empty()) std::cerr << "rts: " << why << "\n";
+    return why.empty() ? kExitLanguageError : kExitUsage;
+  }
   if (!import_pov_file(o.file, opt, result, why)) {
     if (!why.empty()) {
       std::cerr << "rts: " << why << "\n";
@@ -242,6 +247,7 @@ void add_import_command(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::IsMember({"mit", "csci420", "uw", "pov"}));
   cmd->add_option("-I", opts->include_dirs, "POV-Ray: a folder searched for #include files (Library_Path)");
   cmd->add_flag("--strict", opts->strict, "POV-Ray: what rts cannot express is an error, not a warning");
+  cmd->add_option("--ini", opts->ini, "POV-Ray: an .ini file whose Width, Height and Antialias go into the scene's settings");
   // The course programs' flags, written into the scene as settings (docs/from-courses.md).
   cmd->add_option("--size", opts->size, "MIT a2 -size: the image's width and height")
       ->expected(2)

@@ -188,6 +188,7 @@ void add_render_command(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--bits", c->bits, "Bits per channel: png 8 (default) or 16; exr 32 (default) or 16 (half)")
       ->check(CLI::IsMember({8, 16, 32}));
   cmd->add_flag("--strict", c->strict, "A POV-Ray scene (.pov): what rts cannot express is an error, not a warning");
+  cmd->add_option("--ini", c->ini, "A POV-Ray scene (.pov): its .ini file (Width, Height, Antialias become settings)");
   cmd->add_flag("--linear", c->linear, "PNG: store linear values, not sRGB (as the courses do)");
   cmd->add_flag("--aov-files", c->aov_files, "EXR: write AOVs as separate files, not layers");
   cmd->add_option("--depth-range", c->depth_range, "Depth AOV: NEAR,FAR map linearly to black..white")

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "import/pov/render_options.hpp"
+
 namespace rts::cli {
 
 namespace fs = std::filesystem;
@@ -51,6 +53,26 @@ bool import_pov_file(const std::string& path, const import::pov::PovOptions& opt
     return false;
   }
   for (const import::pov::Diagnostic& w : result.warnings) print_pov_diagnostic(w, "warning");
+  return true;
+}
+
+bool read_pov_ini(const std::string& path, import::pov::PovOptions& options, std::string& why) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    why = fmt::format("cannot open the .ini file '{}'", path);
+    return false;
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  std::vector<import::pov::Diagnostic> warnings;
+  try {
+    import::pov::read_render_options(buffer.str(), path, options, warnings);
+  } catch (const import::pov::PovError& e) {
+    print_pov_diagnostic(e.where, "error");
+    why.clear();
+    return false;
+  }
+  for (const import::pov::Diagnostic& w : warnings) print_pov_diagnostic(w, "warning");
   return true;
 }
 

@@ -22,4 +22,8 @@ void print_pov_diagnostic(const import::pov::Diagnostic& d, const char* severity
 bool import_pov_file(const std::string& path, const import::pov::PovOptions& options,
                      import::pov::PovResult& result, std::string& why);
 
+// Reads POV-Ray's render options from the .ini file `path` (--ini) into `options`, printing
+// its warnings. False (with `why`, or with the located error printed) when it cannot.
+bool read_pov_ini(const std::string& path, import::pov::PovOptions& options, std::string& why);
+
 }  // namespace rts::cli

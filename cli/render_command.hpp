@@ -48,6 +48,7 @@ struct RenderCommand {
   std::string progress = "auto";  // --progress: auto, bar, lines, none
   bool no_specialize = false;
   bool strict = false;  // a POV-Ray scene: what rts cannot express is an error
+  std::string ini;      // a POV-Ray scene: its .ini file (Width, Height, Antialias)
   StatsOptions stats;
   EvalOptions eval;
   // Animation (cli/frames.hpp).

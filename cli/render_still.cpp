@@ -90,6 +90,10 @@ int import_pov_scene(const RenderCommand& c, EvalOptions& eval, PovScene& pov) {
   opt.stdlib_dir = c.eval.stdlib_dir.empty() ? runtime::find_standard_library() : c.eval.stdlib_dir;
   import::pov::PovResult result;
   std::string why;
+  if (!c.ini.empty() && !read_pov_ini(c.ini, opt, why)) {
+    if (!why.empty()) std::cerr << "rts: " << why << "\n";
+    return why.empty() ? kExitLanguageError : kExitUsage;
+  }
   if (!import_pov_file(c.scene, opt, result, why)) {
     if (!why.empty()) std::cerr << "rts: " << why << "\n";
     return kExitLanguageError;

@@ -32,13 +32,8 @@ using pegtl::until;
 struct space_char : one<' ', '\t', '\r', '\n', '\f', '\v', '\x1a'> {};
 // `// to the end of the line`
 struct line_comment : seq<string<'/', '/'>, until<eolf>> {};
-// `/* block */`: POV-Ray's block comments nest.
-struct block_comment_open : string<'/', '*'> {};
-struct block_comment_close : string<'*', '/'> {};
-struct block_comment;
-struct block_comment_body : sor<block_comment, seq<not_at<block_comment_close>, any>> {};
-struct block_comment : seq<block_comment_open, star<block_comment_body>, block_comment_close> {};
-struct comment : sor<line_comment, block_comment> {};
+// `/* block */` comments nest in POV-Ray; the lexer scans them with a depth count (a PEG rule
+// here retried every unterminated inner comment as text: exponential in their number).
 
 // A number: 12, 1.5, .5, 1e-3, 2.E4 (no sign: unary minus is an operator).
 struct exponent : seq<one<'e', 'E'>, opt<one<'+', '-'>>, plus<digit>> {};

@@ -25,9 +25,68 @@ Loc here(const Input& in) {
   return Loc{static_cast<int>(p.line), static_cast<int>(p.column)};
 }
 
+// A `/* ... */` comment at the input's position, nested ones inside it (POV-Ray's rule: each
+// `/*` needs its own `*/`), scanned once with a depth count. False when it is not closed.
+bool block_comment(Input& in, std::string& out) {
+  const char* start = in.current();
+  const char* p = start + 2;
+  const char* end = in.end();
+  int depth = 1;
+  while (p < end && depth > 0) {
+    if (p + 1 < end && p[0] == '/' && p[1] == '*') {
+      ++depth;
+      p += 2;
+    } else if (p + 1 < end && p[0] == '*' && p[1] == '/') {
+      --depth;
+      p += 2;
+    } else {
+      ++p;
+    }
+  }
+  if (depth > 0) return false;
+  out.assign(start, p);
+  in.bump(static_cast<std::size_t>(p - start));
+  return true;
+}
+
+// Text carried into the translation (comments, strings) as valid UTF-8, which rts requires:
+// a byte that does not start a valid UTF-8 sequence is read as Latin-1 (POV-Ray scenes of the
+// 1990s often are), and a NUL byte, which rts refuses, becomes a space.
+std::string to_utf8(const std::string& s) {
+  auto cont = [&](std::size_t i, unsigned char lo = 0x80, unsigned char hi = 0xBF) {
+    if (i >= s.size()) return false;
+    unsigned char c = static_cast<unsigned char>(s[i]);
+    return c >= lo && c <= hi;
+  };
+  std::string out;
+  out.reserve(s.size());
+  for (std::size_t i = 0; i < s.size();) {
+    unsigned char c = static_cast<unsigned char>(s[i]);
+    std::size_t n = 0;
+    if (c < 0x80) n = 1;
+    else if (c >= 0xC2 && c <= 0xDF && cont(i + 1)) n = 2;
+    else if (c == 0xE0 && cont(i + 1, 0xA0) && cont(i + 2)) n = 3;
+    else if (((c >= 0xE1 && c <= 0xEC) || c == 0xEE || c == 0xEF) && cont(i + 1) && cont(i + 2)) n = 3;
+    else if (c == 0xED && cont(i + 1, 0x80, 0x9F) && cont(i + 2)) n = 3;
+    else if (c == 0xF0 && cont(i + 1, 0x90) && cont(i + 2) && cont(i + 3)) n = 4;
+    else if (c >= 0xF1 && c <= 0xF3 && cont(i + 1) && cont(i + 2) && cont(i + 3)) n = 4;
+    else if (c == 0xF4 && cont(i + 1, 0x80, 0x8F) && cont(i + 2) && cont(i + 3)) n = 4;
+    if (n == 0) {  // Latin-1
+      out += static_cast<char>(0xC0 | (c >> 6));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+      ++i;
+      continue;
+    }
+    if (c == 0) out += ' ';
+    else out.append(s, i, n);
+    i += n;
+  }
+  return out;
+}
+
 // A comment's text without its markers and surrounding blanks.
 std::string comment_text(const std::string& c) {
-  std::string s = c.substr(2);
+  std::string s = to_utf8(c.substr(2));
   if (c[1] == '*') s = s.substr(0, s.size() >= 2 ? s.size() - 2 : 0);
   std::size_t b = s.find_first_not_of(" \t\r\n");
   std::size_t e = s.find_last_not_of(" \t\r\n");
@@ -48,7 +107,7 @@ std::vector<Token> tokenize(const std::string& text) {
       if (match<grammar::space_char>(in, m)) continue;
       if (in.size(2) >= 2 && in.peek_char(0) == '/' && in.peek_char(1) == '*') {
         Loc at = here(in);
-        if (!match<grammar::block_comment>(in, m)) throw SyntaxError{at, "unterminated comment: '/*' without '*/'"};
+        if (!block_comment(in, m)) throw SyntaxError{at, "unterminated comment: '/*' without '*/'"};
         // A long block comment (a licence header) is kept only in its first lines.
         std::string c = comment_text(m);
         for (std::size_t start = 0, lines = 0; start <= c.size() && lines < 40; ++lines) {
@@ -89,7 +148,7 @@ std::vector<Token> tokenize(const std::string& text) {
     } else if (in.peek_char() == '"') {
       if (!match<grammar::string_literal>(in, m)) throw SyntaxError{t.loc, "unterminated string: '\"' without a closing '\"' on its line"};
       t.kind = Token::String;
-      m = m.substr(1, m.size() - 2);
+      m = to_utf8(m.substr(1, m.size() - 2));
     } else if (match<grammar::punctuation>(in, m)) {
       t.kind = Token::Punct;
     } else {

@@ -16,7 +16,7 @@ constexpr int kMaxNesting = 200;
 // Blocks whose contents are POV-Ray's function or spline syntax: skipped as a whole (the
 // writer warns), never read as items.
 bool is_raw_block(const std::string& kind) {
-  static const std::set<std::string> raw = {"function", "spline", "lathe", "sor", "prism", "blob", "height_field",
+  static const std::set<std::string> raw = {"function", "spline", "lathe", "sor", "prism", "height_field",
                                             "isosurface", "text", "sphere_sweep", "polygon", "bicubic_patch",
                                             "julia_fractal", "parametric", "quadric", "poly", "cubic", "quartic",
                                             "ovus", "lemon", "mesh2", "polynomial"};
@@ -714,6 +714,10 @@ class Reader {
           if (!accept(">"))
             fail(peek().loc, fmt::format("expected ',' or '>' in the vector opened at line {}:{}, got {}", at.line,
                                          at.col, describe(peek())));
+          // POV-Ray's vectors have 2 to 5 components (a one-component <x> was written to rts,
+          // which cannot read it: fuzz_pov).
+          if (e->args.size() < 2 || e->args.size() > 5)
+            fail(at, fmt::format("a vector has 2 to 5 components, this one {}", e->args.size()));
           return e;
         }
         break;

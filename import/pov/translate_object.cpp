@@ -27,11 +27,11 @@ bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
                                               "triangle", "smooth_triangle", "mesh", "superellipsoid", "union",
                                               "intersection", "difference", "merge", "object"};
-  return kinds.count(k) > 0 || is_unsupported_shape(k);
+  return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
 }
 
 bool Translator::is_unsupported_shape(const std::string& k) {
-  static const std::set<std::string> kinds = {"lathe", "sor", "prism", "blob", "height_field", "isosurface", "text",
+  static const std::set<std::string> kinds = {"lathe", "sor", "prism", "height_field", "isosurface", "text",
                                               "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
                                               "parametric", "quadric", "poly", "cubic", "quartic", "ovus", "lemon",
                                               "mesh2", "polynomial"};
@@ -46,7 +46,7 @@ constexpr std::size_t kMaxTransformSteps = 10000;
 
 // The closest rts alternative for an unsupported shape, and whether it is planned.
 std::pair<std::string, bool> shape_alternative(const std::string& k) {
-  if (k == "lathe" || k == "sor" || k == "prism" || k == "blob" || k == "height_field" || k == "isosurface")
+  if (k == "lathe" || k == "sor" || k == "prism" || k == "height_field" || k == "isosurface")
     return {"a mesh from an OBJ file (issue 20 plans the shape)", true};
   if (k == "text" || k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
   if (k == "mesh2") return {"mesh { vertices = [...]  faces = [...] }", true};
@@ -55,7 +55,7 @@ std::pair<std::string, bool> shape_alternative(const std::string& k) {
 
 bool closed_kind(const std::string& k) {
   return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
-         k == "superellipsoid" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
+         k == "superellipsoid" || k == "blob" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
 }
 
 bool is_texture_part(const std::string& k) {
@@ -612,7 +612,13 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   MaterialProps mat;
   bool textured = false;
   std::string base;  // object { X }
-  for (const Item& it : b.items) {
+  Block blob_rest;   // a blob without its components (they are in props)
+  const Block* items_of = &b;
+  if (k == "blob") {
+    blob_rest = blob_components(b, props);
+    items_of = &blob_rest;
+  }
+  for (const Item& it : items_of->items) {
     switch (it.kind) {
       case Item::Value:
         if (k == "object" && base.empty()) {
@@ -777,12 +783,14 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
                         : lookup(b.items[0].args[0]->text);
       std::string ok = sym ? sym->object_kind : "";
       // A CSG value takes the material as a one-child union (children without their own
-      // material take the block's); a shape (or a macro's result) is derived with it.
+      // material take the block's); a group, a mesh or what a macro or an unknown name gives
+      // (often a union) as a one-member group with the material, which its members without
+      // their own take (POV-Ray's texture on a union); a shape is derived with it (POV-Ray's
+      // texture on a shape replaces the shape's).
       if (ok == "intersection" || ok == "difference" || ok == "merge" || ok == "union")
         s = fmt::format("union {{ {}  material = {} }}", base, m);
-      else if (ok == "mesh" || ok == "group")
-        // Declared as an rts group, which takes no material.
-        unsupported(b.loc, "texture on a reused union or mesh", "the texture inside the union's declaration", false);
+      else if (ok.empty() || ok == "object" || ok == "mesh" || ok == "group")
+        s = fmt::format("group {{ {}  material = {} }}", base, m);
       else
         s = fmt::format("{} with {{ material = {} }}", base, m);
     }

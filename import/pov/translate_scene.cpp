@@ -43,6 +43,11 @@ const std::set<std::string>& unshipped_includes() {
 // POV-Ray's camera vectors as literals, when they are.
 bool literal3(const Expr* e, glm::dvec3& out) {
   std::vector<double> v;
+  double k;
+  if (e && Translator::literal_number(*e, k)) {  // a float where a vector belongs: <k, k, k>
+    out = glm::dvec3(k);
+    return true;
+  }
   if (!e || !Translator::literal_vector(*e, v) || v.size() != 3) return false;
   out = glm::dvec3(v[0], v[1], v[2]);
   return true;
@@ -567,39 +572,74 @@ void Translator::camera(Writer& w, const Block& b) {
       lr = true;
     }
   }
+  camera_seen_ = true;
   std::vector<std::string> props;
   if (ortho) props.push_back("projection = \"orthographic\"");
   std::string pos = location ? vector_value(*location) : "<0, 0, 0>";
   props.push_back("position = " + pos);
-  if (look_at) props.push_back("look_at = " + vector_value(*look_at));
-  else props.push_back(fmt::format("look_at = {} + {}", pos, direction ? vector_value(*direction) : "<0, 0, 1>"));
-  if (sky) props.push_back("up = " + vector_value(*sky));
-  if (lr && lu && ld) {
-    if (R.x < 0) props.push_back("handedness = \"right\"");
-    double rl = glm::length(R), ul = glm::length(U), dl = glm::length(D);
-    if (ortho) {
-      props.push_back("view_width = " + num(rl));
-      if (angle) unsupported(b.loc, "orthographic angle", "view_width", false);
-    } else if (angle) {
-      double a;
-      if (literal_number(*angle, a) && a >= 180) {
-        unsupported(b.loc, fmt::format("angle {}", num(a)), "a perspective camera's fov below 180 (179 is used)", false);
-        props.push_back("fov = 179");
-      } else {
-        props.push_back("fov = " + value(*angle));
-      }
-    } else if (image_aspect) {
-      props.push_back("fov = " + num(2 * std::atan(ul / (2 * dl)) * 180 / M_PI));
-      props.push_back("fov_axis = \"vertical\"");
-    } else {
-      props.push_back("fov = " + num(2 * std::atan(rl / (2 * dl)) * 180 / M_PI));
+  // POV-Ray's camera is its three vectors: rts's camera takes them as given, so the picture is
+  // POV-Ray's, its 1.33 (not 4/3) default aspect included. With look_at they are first turned
+  // towards it, as POV-Ray does, keeping their lengths; `angle` sets direction's length.
+  glm::dvec3 L(0), A(0), S(0, 1, 0);
+  double angle_deg = 0;
+  const bool literal_view = lr && lu && ld && !image_aspect && (!location || literal3(location, L)) &&
+                            (!look_at || literal3(look_at, A)) && (!sky || literal3(sky, S)) &&
+                            (!angle || literal_number(*angle, angle_deg));
+  if (literal_view && !(ortho && angle) && !(angle && (angle_deg <= 0 || angle_deg >= 180))) {
+    if (angle) D = glm::normalize(D) * (0.5 * glm::length(R) / std::tan(angle_deg * M_PI / 360));
+    if (look_at && glm::length(A - L) > 1e-9) {
+      const double dl = glm::length(D), ul = glm::length(U), rl = glm::length(R);
+      const double handedness = glm::dot(glm::cross(U, D), R);
+      glm::dvec3 d = glm::normalize(A - L), r = glm::cross(S, d);
+      if (glm::length(r) < 1e-9) r = R;  // looking along the sky: POV-Ray keeps its right vector
+      r = glm::normalize(r);
+      glm::dvec3 u = glm::cross(d, r);
+      D = d * dl;
+      R = r * (handedness > 0 ? rl : -rl);
+      U = u * ul;
+      w.line(fmt::format("// POV-Ray's look_at {}: its direction, right and up turned towards it", vec(A)));
     }
-    if (!image_aspect && std::abs(rl / ul - 4.0 / 3.0) > 0.01 && !ortho)
-      warn(b.loc, fmt::format("the camera's right/up ratio is {} (POV-Ray's default 1.33); rts follows the "
-                              "image's aspect ratio (render at {}:1 for the same picture)", num(rl / ul), num(rl / ul)));
+    auto clean = [](glm::dvec3 v) {
+      for (int i = 0; i < 3; ++i)
+        if (std::abs(v[i]) < 1e-12) v[i] = 0;
+      return vec(v);
+    };
+    props.push_back("direction = " + clean(D));
+    props.push_back("right = " + clean(R));
+    props.push_back("up = " + clean(U));
   } else {
-    unsupported(b.loc, "computed right/up/direction", "fov written as a number", false);
-    if (angle) props.push_back("fov = " + value(*angle));
+    if (look_at) props.push_back("look_at = " + vector_value(*look_at));
+    else props.push_back(fmt::format("look_at = {} + {}", pos, direction ? vector_value(*direction) : "<0, 0, 1>"));
+    if (sky) props.push_back("up = " + vector_value(*sky));
+    if (lr && lu && ld) {
+      if (R.x < 0) props.push_back("handedness = \"right\"");
+      double rl = glm::length(R), ul = glm::length(U), dl = glm::length(D);
+      if (ortho) {
+        props.push_back("view_width = " + num(rl));
+        if (angle) unsupported(b.loc, "orthographic angle", "view_width", false);
+      } else if (angle) {
+        double a;
+        if (literal_number(*angle, a) && a >= 180) {
+          unsupported(b.loc, fmt::format("angle {}", num(a)), "a perspective camera's fov below 180 (179 is used)",
+                      false);
+          props.push_back("fov = 179");
+        } else {
+          props.push_back("fov = " + value(*angle));
+        }
+      } else if (image_aspect) {
+        props.push_back("fov = " + num(2 * std::atan(ul / (2 * dl)) * 180 / M_PI));
+        props.push_back("fov_axis = \"vertical\"");
+      } else {
+        props.push_back("fov = " + num(2 * std::atan(rl / (2 * dl)) * 180 / M_PI));
+      }
+      if (!image_aspect && std::abs(rl / ul - 4.0 / 3.0) > 0.01 && !ortho)
+        warn(b.loc, fmt::format("the camera's right/up ratio is {} (POV-Ray's default 1.33); rts follows the "
+                                "image's aspect ratio (render at {}:1 for the same picture)",
+                                num(rl / ul), num(rl / ul)));
+    } else {
+      unsupported(b.loc, "computed right/up/direction", "fov written as a number", false);
+      if (angle) props.push_back("fov = " + value(*angle));
+    }
   }
   props.insert(props.end(), extra.begin(), extra.end());
   w.open("camera");
@@ -658,6 +698,20 @@ void Translator::declare_library_file(const std::string& file) {
       library_names_.insert(n);
       Symbol s{line.find("rgb(") != std::string::npos ? Type::Color : Type::Unknown, nullptr, ""};
       if (line.find("material") != std::string::npos) s.type = Type::Material;
+      // `let Cube = box { ...`, `let Cone_Y = cone { ...`, `let Ellipsoid = Sphere`: an object of
+      // that kind (a texture on it then derives the shape, or wraps a CSG block).
+      std::size_t eq = line.find('=');
+      std::size_t w0 = eq == std::string::npos ? std::string::npos : line.find_first_not_of(' ', eq + 1);
+      if (w0 != std::string::npos) {
+        std::size_t w1 = line.find_first_of(" {", w0);
+        std::string word = line.substr(w0, w1 == std::string::npos ? std::string::npos : w1 - w0);
+        if (is_object_kind(word) && line.find('{', w0) != std::string::npos) {
+          s = Symbol{Type::Object, nullptr, word};
+        } else if (auto known = scopes_.front().find(word);
+                   known != scopes_.front().end() && known->second.type == Type::Object) {
+          s = known->second;
+        }
+      }
       scopes_.front()[n] = s;
       // A one-line material of literal properties: kept for finish { N } and interior { N }.
       std::size_t open = line.find("= material { "), close = line.find(" }");
@@ -768,6 +822,27 @@ void Translator::footer(Writer& w) {
   bool srgb = gamma_seen_ ? std::abs(assumed_gamma_ - 1.0) < 1e-9 : version_ >= 3.7;
   if (gamma_seen_ && !srgb && std::abs(assumed_gamma_ - 2.2) > 1e-6)
     warn(Loc{}, fmt::format("assumed_gamma {} is taken as 2.2 (no output gamma encoding)", num(assumed_gamma_)));
+  if (opt_.width > 0 || opt_.height > 0 || opt_.antialias_threshold >= 0) {
+    // POV-Ray's render options (an .ini file): the image size, and +A as a fixed sample count.
+    std::string s;
+    if (opt_.width > 0) s += fmt::format("  width = {}", opt_.width);
+    if (opt_.height > 0) s += fmt::format("  height = {}", opt_.height);
+    w.blank();
+    if (opt_.antialias_threshold >= 0) {
+      s += "  samples = 9";
+      w.line(fmt::format("// POV-Ray's +A{}: it supersamples a pixel that differs from its neighbours by more than {}",
+                         num(opt_.antialias_threshold), num(opt_.antialias_threshold)));
+      w.line("// with up to 3x3 rays (Antialias_Depth 3); here 9 samples in every pixel (or --target-error).");
+    } else {
+      w.line("// POV-Ray's render options (its .ini file).");
+    }
+    w.line("settings {" + s.substr(1) + " }");
+  }
+  if (!camera_seen_) {
+    w.blank();
+    w.line("// POV-Ray's default camera: at the origin looking along +z, its 1.33 wide right vector.");
+    w.line("camera { position = <0, 0, 0>  direction = <0, 0, 1>  right = <1.33, 0, 0>  up = <0, 1, 0> }");
+  }
   w.blank();
   w.line(srgb ? "// POV-Ray 3.7 with assumed_gamma 1.0: the image is sRGB-encoded."
               : "// POV-Ray without #version 3.7 / assumed_gamma 1.0 writes the image without gamma encoding.");

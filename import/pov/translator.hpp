@@ -85,6 +85,9 @@ class Translator {
   // a placement in the world (objects without a texture get POV-Ray's default one).
   void object(Writer& w, const Block& b, const std::string& prefix, bool place);
   bool has_texture(const Block& b) const;
+  // A blob's components (translate_shapes.cpp) as rts's blob properties, added to `props`;
+  // returns the block without them (its texture and transforms).
+  Block blob_components(const Block& b, std::vector<std::string>& props);
   // The material a POV-Ray texture-like block (texture, pigment, finish, normal, interior,
   // material) adds to `m`.
   void texture_part(const Item& it, MaterialProps& m);
@@ -140,6 +143,7 @@ class Translator {
   double version_ = 0;             // #version, 0 when none
   double assumed_gamma_ = 0;       // 0 when none
   bool gamma_seen_ = false;
+  bool camera_seen_ = false;       // a camera block was translated (else POV-Ray's default is written)
   MaterialProps default_texture_;  // #default { ... }
   Writer* pending_comment_ = nullptr;
   int include_depth_ = 0;
