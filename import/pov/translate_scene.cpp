@@ -474,6 +474,10 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
       unsupported(it.loc, k, "see docs/rendering.md#lights", false);
     }
   }
+  // POV-Ray's light_source begins with its location; without one there is nothing to write
+  // (fuzz_pov: `light_source { nt { ... } }` gave `position =` with no value).
+  if (position.empty())
+    error(b.loc, "a light_source begins with its location vector: light_source { <x, y, z> color rgb <r, g, b> }");
   if (kind == "spot_area") {
     unsupported(b.loc, "spotlight area_light", "area_light or spot_light", false);
     kind = "spot_light";
