@@ -6,6 +6,7 @@
 // locals are trivially destructible, state is kept in caller-owned structs, and the C++
 // exception (RenderError) is thrown only after the libpng call chain has been left.
 #include <png.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -42,6 +43,12 @@ constexpr double kSrgbOffset = 0.055;
 // Images larger than this many pixels are refused when reading (a corrupt or hostile header
 // must not make us allocate gigabytes).
 constexpr std::size_t kMaxReadPixels = 100'000'000;
+
+// Deflate expands at most 1032:1 (a 258-byte match coded in 2 bits), so a file of N bytes holds
+// at most ~1032 N bytes of raw pixel rows; a header that claims more describes data the file
+// cannot contain, and is refused before any row buffer is allocated (a 100-byte file must not
+// make us allocate gigabytes only to fail on its missing data). 1100 leaves room above the bound.
+constexpr std::size_t kMaxDeflateExpansion = 1100;
 
 constexpr int kPngSignatureBytes = 8;
 // libdeflate level for writing (1 fastest .. 12 smallest). See encode_png.
@@ -288,6 +295,8 @@ struct DecodedPng {
   std::vector<unsigned char> pixels;      // RGB rows, big-endian samples when 16-bit
   std::vector<png_bytep> row_pointers;
   bool too_large = false;
+  std::size_t file_bytes = 0;             // in: the file's size, for the deflate bound
+  bool more_than_data = false;            // out: the header claims more rows than the file holds
   std::size_t max_memory = 0;             // in: --max-memory (0: no limit)
   std::size_t needed = 0;                 // out, when over_memory: bytes decoding would take
   bool over_memory = false;
@@ -315,6 +324,15 @@ bool decode_png(PngIo& io, DecodedPng& out) {
   const png_uint_32 height = png_get_image_height(png, info);
   if (static_cast<std::size_t>(width) * height > kMaxReadPixels) {
     out.too_large = true;
+    out.width = width;
+    out.height = height;
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
+  // Before any transformation rowbytes is the stored (compressed) row's size; the filter bytes
+  // and interlacing only add to what the data must hold, so this is a lower bound.
+  if (static_cast<std::size_t>(png_get_rowbytes(png, info)) * height > kMaxDeflateExpansion * out.file_bytes) {
+    out.more_than_data = true;
     out.width = width;
     out.height = height;
     png_destroy_read_struct(&png, &info, nullptr);
@@ -408,9 +426,17 @@ Image read_png(const std::string& path, SourceRef where, Encoding encoding, std:
   io.file = file;
   DecodedPng decoded;
   decoded.max_memory = max_memory;
+  struct stat st {};
+  decoded.file_bytes = fstat(fileno(file), &st) == 0 ? static_cast<std::size_t>(st.st_size)
+                                                   : SIZE_MAX / kMaxDeflateExpansion;  // unknown: no bound
   if (!decode_png(io, decoded)) {
     if (decoded.too_large) {
       throw fail(fmt::format("image too large ({}x{})", decoded.width, decoded.height));
+    }
+    if (decoded.more_than_data) {
+      throw fail(fmt::format("its header claims {}x{} pixels, more than its {} of data can hold "
+                             "(a damaged or truncated file)",
+                             decoded.width, decoded.height, size_in_words(decoded.file_bytes)));
     }
     if (decoded.over_memory)
       throw image_over_memory(path, where, decoded.width, decoded.height, decoded.needed, max_memory);

@@ -492,6 +492,31 @@ TEST_CASE("read_png survives damaged data behind valid CRCs", "[png][corrupt]") 
     write_bytes(path, huge);
     CHECK_THROWS_AS(read_png(path), RenderError);
   }
+  SECTION("a header claiming more rows than the file's data can hold is refused by name") {
+    // 5000x5000 RGB is 75 MB of rows: past what deflate can pack into this ~4 kB file (at most
+    // 1032:1), though under the 100-megapixel cap. Refused before the rows are allocated.
+    auto claims = bytes;
+    for (std::size_t field : {ihdr + 8, ihdr + 12}) {
+      claims[field] = 0;
+      claims[field + 1] = 0;
+      claims[field + 2] = static_cast<char>(0x13);
+      claims[field + 3] = static_cast<char>(0x88);
+    }
+    fix_crc(claims, ihdr);
+    write_bytes(path, claims);
+    CHECK_THROWS_WITH(read_png(path), Catch::Contains("claims 5000x5000 pixels, more than its") &&
+                                          Catch::Contains("damaged or truncated"));
+  }
+  SECTION("a highly compressible image near deflate's best ratio still reads") {
+    // 3000x1000 gray zeros through libpng's zlib: ~3 MB of rows in a few kB of file, close to
+    // deflate's 1032:1, must not be taken for a lying header.
+    write_simplified_png(path, PNG_FORMAT_GRAY, 3000, 1000, std::vector<unsigned char>(3000 * 1000, 0));
+    REQUIRE(3000.0 * 1000.0 / static_cast<double>(file_bytes(path).size()) > 500.0);
+    const Image back = read_png(path);
+    CHECK(back.width == 3000);
+    CHECK(back.height == 1000);
+    CHECK(*std::max_element(back.rgb.begin(), back.rgb.end()) == 0.0f);
+  }
   SECTION("random damage to the compressed pixels: an error or an image, never a crash") {
     std::mt19937 rng(1234);
     const std::size_t data_begin = idat + 8;
