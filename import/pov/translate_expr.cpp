@@ -20,15 +20,25 @@ std::string rts_escaped(const std::string& pov) {
   std::string out = "\"";
   for (std::size_t i = 0; i < pov.size(); ++i) {
     char c = pov[i];
-    if (c == '\\' && i + 1 < pov.size()) {
-      char n = pov[i + 1];
+    if (c == '\\') {
+      const char n = i + 1 < pov.size() ? pov[i + 1] : '\0';
       if (n == 'n' || n == 't' || n == 'r' || n == '\\' || n == '"') {
         out += c;
         out += n;
         ++i;
         continue;
       }
-      out += "\\\\";
+      out += "\\\\";  // a lone backslash (also the last character) is a character
+      continue;
+    }
+    // rts strings cannot hold a raw line break; POV-Ray reads a carriage return (or a newline
+    // after a backslash) inside one, so both are written as escapes.
+    if (c == '\r') {
+      out += "\\r";
+      continue;
+    }
+    if (c == '\n') {
+      out += "\\n";
       continue;
     }
     if (c == '"') out += '\\';
