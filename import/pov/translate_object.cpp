@@ -180,7 +180,6 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
   std::string pattern;       // a pattern block's name (checker, marble, ...)
   std::vector<std::string> colors, pattern_props, xforms;
   std::string map;           // color_map as an rts list
-  std::vector<std::string> map_stops;  // its colours in order
   double filter = 0, transmit = 0;
   static const std::set<std::string> patterns = {"bozo", "spotted", "granite", "marble", "wood", "agate", "onion",
                                                  "leopard", "wrinkles", "crackle", "cells", "bumps", "dents",
@@ -283,18 +282,33 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
           }
           if (e.kind != Item::MapEntry) continue;
           std::vector<std::string> vals;
+          std::vector<double> clear;  // each value's filter + transmit (a colour's; 0 for numbers)
           for (const Item& v : e.block->items) {
-            if (v.kind == Item::Value) vals.push_back(value(*v.args[0]));
-            if (v.kind == Item::Keyword && (v.name == "color" || v.name == "colour") && !v.args.empty())
-              vals.push_back(color_value(*v.args[0]));
+            if (v.kind == Item::Value) {
+              const Text t = expr(*v.args[0]);
+              vals.push_back(t.s);
+              clear.push_back(t.filter + t.transmit);
+            }
+            if (v.kind == Item::Keyword && (v.name == "color" || v.name == "colour") && !v.args.empty()) {
+              double f = 0, t = 0;
+              vals.push_back(color_value(*v.args[0], &f, &t));
+              clear.push_back(f + t);
+            }
           }
-          if (vals.size() >= 2) map_stops.push_back(vals[1]);
-          if (vals.size() == 4) map_stops.push_back(vals[3]);
-          if (vals.size() >= 2) {
-            bool first = list.empty();
-            list += (first ? "[" : ", ") + ("[" + vals[0] + ", " + (vals.size() >= 2 ? vals[1] : "rgb(0)") + "]");
-            // The old form [a b color A color B]: a second stop.
-            if (vals.size() == 4) list += ", [" + vals[1] + ", " + vals[3] + "]";
+          // POV-Ray's filter and transmit as the entry's transmit, the third number of an rts
+          // colour map entry: a sky_sphere's layers show what is behind them through it (rts has
+          // no filter there: the light passes untinted); surfaces ignore it.
+          auto entry = [&](std::size_t at, std::size_t color) {
+            const double t = std::min(1.0, clear[color]);
+            return "[" + vals[at] + ", " + vals[color] + (t > 0 ? ", " + num(t) : "") + "]";
+          };
+          if (vals.size() < 2) continue;
+          list += list.empty() ? "[" : ", ";
+          if (vals.size() == 4) {
+            // The old form [a b color A color B]: A at a, B at b.
+            list += entry(0, 2) + ", " + entry(1, 3);
+          } else {
+            list += entry(0, 1);
           }
         }
         map = list.empty() || list[0] != '[' ? list : list + "]";
@@ -340,11 +354,8 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
                                   : fmt::format("checker {{ color1 = {}  color2 = {} }}{}", c1, c2, suffix));
   } else if (pattern == "unsupported") {
     m.set("color", colors.empty() ? "rgb(0.5)" : colors[0]);
-  } else if (pattern == "gradient") {
-    // rts's gradient runs color1 -> color2 (a color_map's first and last colours).
-    const std::vector<std::string>& stops = map_stops;
-    if (stops.size() > 2) unsupported(b.loc, "gradient color_map", "color1 and color2 (its first and last colours)", false);
-    if (!stops.empty()) colors = {stops.front(), stops.back()};
+  } else if (pattern == "gradient" && map.empty()) {
+    // Without a color_map: rts's two-colour gradient, color1 -> color2 (with one, the pattern below).
     std::string body;
     for (const std::string& p : pattern_props)
       if (p.rfind("axis", 0) == 0) body += "  " + p;

@@ -393,10 +393,7 @@ void Translator::place_block(Writer& w, const Block& b) {
     w.line("settings {" + props.substr(1) + " }");
     return;
   }
-  if (k == "sky_sphere") {
-    unsupported(b.loc, "sky_sphere", "settings { environment = sky_gradient(horizon, zenith) } from skies.rts", true);
-    return;
-  }
+  if (k == "sky_sphere") return sky_sphere(w, b);
   if (k == "radiosity") {
     unsupported(b.loc, "radiosity", "settings { integrator = \"path\" }", true);
     return;

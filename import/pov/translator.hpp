@@ -107,6 +107,7 @@ class Translator {
   void place_block(Writer& w, const Block& b);
   void light(Writer& w, const Block& b, const std::string& prefix);
   void camera(Writer& w, const Block& b);
+  void sky_sphere(Writer& w, const Block& b);  // translate_sky.cpp
   void global_settings(Writer& w, const Block& b);
   void include(Writer& w, const Item& it);
   void declare_library_file(const std::string& file);  // its names, and the files it includes
