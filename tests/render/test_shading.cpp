@@ -76,6 +76,26 @@ TEST_CASE("spot light: full inside radius, zero past falloff, smooth between", "
   CHECK(at_angle(12) > at_angle(18));
 }
 
+TEST_CASE("spot light of radius 90: full over the half-space in front, none behind", "[shading]") {
+  // POV-Ray scenes write `radius 90` (with falloff 90): a hemisphere light.
+  LightDesc d;
+  d.kind = LightKind::Spot;
+  d.position = Vec3(0, 10, 0);
+  d.point_at = Vec3(0, 0, 0);
+  d.radius = 90;
+  d.falloff = 90;
+  CompiledLight l = compile_lights({d})[0];
+  auto at_angle = [&](double deg) {
+    double a = deg * std::numbers::pi / 180.0;
+    Vec3 p = d.position + Vec3(std::sin(a), -std::cos(a), 0) * 10.0;
+    return sample_light(l, p, 0, glm::dvec2(0.5), 0).radiance.x;
+  };
+  CHECK(at_angle(0) == Approx(1.0));
+  CHECK(at_angle(89.9) == Approx(1.0));
+  CHECK(at_angle(90.1) == 0.0);
+  CHECK(at_angle(179) == 0.0);
+}
+
 TEST_CASE("directional light: no attenuation, direction reversed", "[shading]") {
   LightDesc d;
   d.kind = LightKind::Directional;
