@@ -120,6 +120,16 @@ void fix_crc(std::vector<char>& png, std::size_t at) {
   for (int i = 0; i < 4; ++i) png[at + 8 + length + i] = static_cast<char>((crc >> (24 - 8 * i)) & 0xFF);
 }
 
+// A copy of `png` whose header (the IHDR chunk at `ihdr`) claims width x height, with its CRC
+// fixed, so that libpng believes it.
+std::vector<char> with_claimed_size(const std::vector<char>& png, std::size_t ihdr, uint32_t width, uint32_t height) {
+  auto out = png;
+  for (auto [field, value] : {std::pair{ihdr + 8, width}, std::pair{ihdr + 12, height}})
+    for (int i = 0; i < 4; ++i) out[field + i] = static_cast<char>((value >> (24 - 8 * i)) & 0xFF);
+  fix_crc(out, ihdr);
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("sRGB transfer functions match the standard", "[png]") {
@@ -481,28 +491,14 @@ TEST_CASE("read_png survives damaged data behind valid CRCs", "[png][corrupt]") 
   const std::string path = dir.file("damaged.png");
 
   SECTION("a header claiming a gigantic image is refused before allocating it") {
-    auto huge = bytes;
-    for (std::size_t field : {ihdr + 8, ihdr + 12}) {   // width, then height: 60000 each
-      huge[field] = 0;
-      huge[field + 1] = 0;
-      huge[field + 2] = static_cast<char>(0xEA);
-      huge[field + 3] = static_cast<char>(0x60);
-    }
-    fix_crc(huge, ihdr);
+    const auto huge = with_claimed_size(bytes, ihdr, 60000, 60000);
     write_bytes(path, huge);
     CHECK_THROWS_AS(read_png(path), RenderError);
   }
   SECTION("a header claiming more rows than the file's data can hold is refused by name") {
     // 5000x5000 RGB is 75 MB of rows: past what deflate can pack into this ~4 kB file (at most
     // 1032:1), though under the 100-megapixel cap. Refused before the rows are allocated.
-    auto claims = bytes;
-    for (std::size_t field : {ihdr + 8, ihdr + 12}) {
-      claims[field] = 0;
-      claims[field + 1] = 0;
-      claims[field + 2] = static_cast<char>(0x13);
-      claims[field + 3] = static_cast<char>(0x88);
-    }
-    fix_crc(claims, ihdr);
+    const auto claims = with_claimed_size(bytes, ihdr, 5000, 5000);
     write_bytes(path, claims);
     CHECK_THROWS_WITH(read_png(path), Catch::Contains("claims 5000x5000 pixels, more than its") &&
                                           Catch::Contains("damaged or truncated"));

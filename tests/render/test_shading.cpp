@@ -54,19 +54,28 @@ TEST_CASE("attenuation 1/(c + l d + q d^2)", "[shading]") {
   CHECK(attenuation_factor(Vec3(0, 0, 0), 2.0) == 0.0);  // guarded, not inf
 }
 
-TEST_CASE("spot light: full inside radius, zero past falloff, smooth between", "[shading]") {
+// A spot light at (0, 10, 0) aimed straight down, and its radiance 10 away at `deg` degrees
+// off its axis.
+struct SpotAtAngle {
   LightDesc d;
-  d.kind = LightKind::Spot;
-  d.position = Vec3(0, 10, 0);
-  d.point_at = Vec3(0, 0, 0);
-  d.radius = 10;
-  d.falloff = 20;
-  CompiledLight l = compile_lights({d})[0];
-  auto at_angle = [&](double deg) {
+  CompiledLight l;
+  SpotAtAngle(double radius, double falloff) {
+    d.kind = LightKind::Spot;
+    d.position = Vec3(0, 10, 0);
+    d.point_at = Vec3(0, 0, 0);
+    d.radius = radius;
+    d.falloff = falloff;
+    l = compile_lights({d})[0];
+  }
+  double operator()(double deg) const {
     double a = deg * std::numbers::pi / 180.0;
     Vec3 p = d.position + Vec3(std::sin(a), -std::cos(a), 0) * 10.0;
     return sample_light(l, p, 0, glm::dvec2(0.5), 0).radiance.x;
-  };
+  }
+};
+
+TEST_CASE("spot light: full inside radius, zero past falloff, smooth between", "[shading]") {
+  const SpotAtAngle at_angle(10, 20);
   CHECK(at_angle(0) == Approx(1.0));
   CHECK(at_angle(9) == Approx(1.0));
   CHECK(at_angle(21) == 0.0);
@@ -78,18 +87,7 @@ TEST_CASE("spot light: full inside radius, zero past falloff, smooth between", "
 
 TEST_CASE("spot light of radius 90: full over the half-space in front, none behind", "[shading]") {
   // POV-Ray scenes write `radius 90` (with falloff 90): a hemisphere light.
-  LightDesc d;
-  d.kind = LightKind::Spot;
-  d.position = Vec3(0, 10, 0);
-  d.point_at = Vec3(0, 0, 0);
-  d.radius = 90;
-  d.falloff = 90;
-  CompiledLight l = compile_lights({d})[0];
-  auto at_angle = [&](double deg) {
-    double a = deg * std::numbers::pi / 180.0;
-    Vec3 p = d.position + Vec3(std::sin(a), -std::cos(a), 0) * 10.0;
-    return sample_light(l, p, 0, glm::dvec2(0.5), 0).radiance.x;
-  };
+  const SpotAtAngle at_angle(90, 90);
   CHECK(at_angle(0) == Approx(1.0));
   CHECK(at_angle(89.9) == Approx(1.0));
   CHECK(at_angle(90.1) == 0.0);
