@@ -50,6 +50,11 @@ constexpr std::size_t kMaxReadPixels = 100'000'000;
 // make us allocate gigabytes only to fail on its missing data). 1100 leaves room above the bound.
 constexpr std::size_t kMaxDeflateExpansion = 1100;
 
+// The largest buffer libpng may allocate for one chunk other than the pixels (text, ICC
+// profiles, unknown chunks): far above any real image's metadata; a larger ancillary chunk is
+// skipped with a warning, a larger critical one is an error.
+constexpr png_alloc_size_t kMaxChunkBytes = png_alloc_size_t(8) << 20;
+
 constexpr int kPngSignatureBytes = 8;
 // libdeflate level for writing (1 fastest .. 12 smallest). See encode_png.
 constexpr int kPngCompressionLevel = 1;
@@ -318,6 +323,9 @@ bool decode_png(PngIo& io, DecodedPng& out) {
   }
   png_set_read_fn(png, &io, read_callback);
   png_set_sig_bytes(png, kPngSignatureBytes);
+  // Debian's libpng sets no limit on one chunk's buffer: an ancillary chunk whose length field
+  // says 600 MB made png_read_info allocate it before finding the file ends (fuzz_png, seed 1).
+  png_set_chunk_malloc_max(png, kMaxChunkBytes);
   png_read_info(png, info);
 
   const png_uint_32 width = png_get_image_width(png, info);
