@@ -633,7 +633,13 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     switch (it.kind) {
       case Item::Value:
         if (k == "object" && base.empty()) {
-          if (it.args[0]->kind == Expr::Name && missing_name(it.loc, it.args[0]->text, "object")) return;
+          const Expr::Kind ek = it.args[0]->kind;
+          if (ek == Expr::Name && missing_name(it.loc, it.args[0]->text, "object")) return;
+          // What POV-Ray reuses: a declared object, a macro's, an array element. Anything else
+          // (fuzz_pov: `object { +x + UnitBox }`) is no object, in POV-Ray too, and written
+          // as rts it would be a statement that does not parse.
+          if (ek != Expr::Name && ek != Expr::Call && ek != Expr::Index)
+            error(it.loc, "'object' reuses a declared object, a macro's or an array element: object { Name ... }");
           base = value(*it.args[0]);
         } else if (k == "union" || k == "merge" || k == "intersection" || k == "difference" || k == "mesh") {
           children.push_back(&it);
