@@ -7,6 +7,7 @@
 
 #include "render/geometry/shapes/blob.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
+#include "render/geometry/shapes/sor.hpp"
 #include "render/geometry/function/compiled_function.hpp"
 #include "stability_support.hpp"
 
@@ -72,6 +73,15 @@ Blob necked_blob() {
   return b;
 }
 
+// A vase: a bulge, a narrow waist, a flared lip, closed by its discs.
+Sor vase() {
+  Sor s;
+  s.points = {Vec3(0.1, -1.3, 0), Vec3(0.5, -1, 0), Vec3(0.85, -0.5, 0), Vec3(0.25, 0.2, 0),
+              Vec3(0.3, 0.6, 0),  Vec3(0.7, 1, 0),  Vec3(0.9, 1.3, 0)};
+  sor_setup(s);
+  return s;
+}
+
 void check_stable(const SceneDesc& s, const std::string& name, const std::string& file) {
   RenderResult one = render_scene(s, 1), three = render_scene(s, 3);
   bool same = one.color.rgb == three.color.rgb;
@@ -134,4 +144,31 @@ TEST_CASE("a blob with a thin neck, near the origin and a million units away", "
   record("shapes", "blob at 1e6 vs at the origin", "pixels differing", diff, "<= 0.01", save(b.color, "shapes_blob_far"));
   CHECK(diff <= 0.01);
   CHECK(count_speckles(b.color) == 0);
+}
+
+TEST_CASE("a sor vase near the origin and a million units away, and cut flush at its top", "[shapes]") {
+  const Vec3 eye(0.9, 1.8, -3.2), at(0, 0, 0);
+  SceneDesc near = base(eye, at);
+  place(near, add_shape(near, vase(), add_material(near, matte(Color(0.8, 0.4, 0.2)))));
+  check_stable(near, "sor: a vase with a waist and a flared lip", "shapes_sor");
+  const Vec3 far(1e6, 1e6, -1e6);
+  SceneDesc away = base(eye + far, at + far);
+  place(away, add_shape(away, vase(), add_material(away, matte(Color(0.8, 0.4, 0.2)))), translate(far));
+  RenderResult a = render_scene(near, 2), b = render_scene(away, 2);
+  double diff = differing_fraction(a.color, b.color);
+  record("shapes", "sor at 1e6 vs at the origin", "pixels differing", diff, "<= 0.01", save(b.color, "shapes_sor_far"));
+  CHECK(diff <= 0.01);
+  CHECK(count_speckles(b.color) == 0);
+
+  SceneDesc s = base(eye, at);
+  MaterialId red = add_material(s, matte(Color(0.8, 0.2, 0.15)));
+  MaterialId green = add_material(s, matte(Color(0.2, 0.7, 0.2)));
+  CsgDesc d;
+  d.op = CsgOp::Difference;
+  d.children = {Child{add_shape(s, vase(), red), Mat4(1.0), {}},
+                Child{add_shape(s, Box{Vec3(-2, 0.6, -2), Vec3(0, 1, 0)}, green), Mat4(1.0), {}}};
+  s.csgs.push_back(std::move(d));
+  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
+  place(s, static_cast<NodeId>(s.nodes.size() - 1));
+  check_stable(s, "sor minus a box sharing its top disc's height", "shapes_sor_csg");
 }

@@ -21,6 +21,7 @@
 #include "render/geometry/shapes/plane.hpp"
 #include "render/geometry/shapes/quad.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/geometry/shapes/sor.hpp"
 #include "render/geometry/shapes/sphere.hpp"
 #include "render/geometry/shapes/superellipsoid.hpp"
 #include "render/geometry/shapes/torus.hpp"
