@@ -25,13 +25,13 @@ bool MaterialProps::has(const std::string& name) const {
 
 bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
-                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "union",
+                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "sor", "union",
                                               "intersection", "difference", "merge", "object"};
   return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
 }
 
 bool Translator::is_unsupported_shape(const std::string& k) {
-  static const std::set<std::string> kinds = {"lathe", "sor", "prism", "height_field", "isosurface", "text",
+  static const std::set<std::string> kinds = {"lathe", "prism", "height_field", "isosurface", "text",
                                               "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
                                               "parametric", "quadric", "poly", "cubic", "quartic", "ovus", "lemon",
                                               "mesh2", "polynomial"};
@@ -46,7 +46,7 @@ constexpr std::size_t kMaxTransformSteps = 10000;
 
 // The closest rts alternative for an unsupported shape, and whether it is planned.
 std::pair<std::string, bool> shape_alternative(const std::string& k) {
-  if (k == "lathe" || k == "sor" || k == "prism" || k == "height_field" || k == "isosurface")
+  if (k == "lathe" || k == "prism" || k == "height_field" || k == "isosurface")
     return {"a mesh from an OBJ file (issue 20 plans the shape)", true};
   if (k == "text" || k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
   if (k == "mesh2") return {"mesh { vertices = [...]  faces = [...] }", true};
@@ -55,7 +55,7 @@ std::pair<std::string, bool> shape_alternative(const std::string& k) {
 
 bool closed_kind(const std::string& k) {
   return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
-         k == "superellipsoid" || k == "blob" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
+         k == "superellipsoid" || k == "sor" || k == "blob" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
 }
 
 bool is_texture_part(const std::string& k) {
@@ -653,7 +653,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         if (!t.empty()) {
           xforms.insert(xforms.end(), t.begin(), t.end());
         } else if (it.name == "open") {
-          props.push_back("capped = false");
+          props.push_back(k == "sor" ? "open = true" : "capped = false");
         } else if (it.name == "inverse") {
           props.push_back("inverse = true");
         } else if (it.name == "hollow" || it.name == "sturm" || it.name == "smooth" || it.name == "double_illuminate" ||
@@ -732,6 +732,23 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
       std::string p = value(*v(0));
       props.insert(props.begin(), {"e = " + p + ".x", "n = " + p + ".y"});
     }
+  } else if (k == "sor") {
+    need(5, "a count and at least four points: sor { 4, <r0, h0>, <r1, h1>, <r2, h2>, <r3, h3> }");
+    double count;
+    if (literal_number(*v(0), count) && count != static_cast<double>(values.size() - 1))
+      error(values[0]->loc, fmt::format("sor says {} points but lists {}", num(count), values.size() - 1));
+    std::string pts;
+    for (std::size_t i = 1; i < values.size(); ++i) {
+      std::vector<double> q;
+      pts += i > 1 ? ", " : "";
+      if (literal_vector(*v(i), q) && q.size() >= 2) {
+        pts += fmt::format("[{}, {}]", num(q[0]), num(q[1]));
+      } else {
+        std::string p = value(*v(i));
+        pts += fmt::format("[{}.x, {}.y]", p, p);
+      }
+    }
+    props.insert(props.begin(), "points = [" + pts + "]");
   } else if (k == "mesh") {
     kind = "group";
     comments.push_back("POV-Ray's mesh: its triangles in a group");
@@ -749,7 +766,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
               if (!s || !closed_kind(s->object_kind)) closed = false;
               break;
             }
-        } else if (!closed_kind(ck) || (ck == "cylinder" || ck == "cone")) {
+        } else if (!closed_kind(ck) || (ck == "cylinder" || ck == "cone" || ck == "sor")) {
           // open cylinders/cones are open shapes too
           if (!closed_kind(ck)) closed = false;
           for (const Item& r : c->block->items)
