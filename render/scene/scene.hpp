@@ -203,8 +203,18 @@ struct Sor {
   bool open = false;                 // no discs at the bottom and top
 };
 
+// POV-Ray's lathe with linear_spline: the profile's straight segments turned about the y axis
+// (render/geometry/shapes/lathe.hpp traces it).
+inline constexpr int kMaxLathePoints = 4096;
+struct Lathe {
+  std::vector<Vec3> points;          // <r, h, 0> as given
+  double radius = 0.0, h_min = 0.0, h_max = 0.0;
+  bool closed = false;               // the profile ends where it starts, or both ends on the axis
+  double orientation = 1.0;          // +1: the profile (closed along the axis) runs counter-clockwise
+};
+
 using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,
-                                   Isosurface, Blob, HeightField, Sor>;
+                                   Isosurface, Blob, HeightField, Sor, Lathe>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;

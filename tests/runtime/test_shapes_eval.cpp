@@ -5,6 +5,7 @@
 #include "eval_helpers.hpp"
 #include "render/geometry/shapes/blob.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
+#include "render/geometry/shapes/lathe.hpp"
 #include "render/geometry/shapes/sor.hpp"
 
 using namespace rts;
@@ -203,4 +204,27 @@ TEST_CASE("a sor from the language: pairs or vectors, open, and bad points are l
   CHECK(d.message == "sor needs property 'points'");
   d = eval_diagnostic("difference { sor { points = [[1, 0], [1, 1], [1, 2], [1, 3]]  open = true } sphere { radius = 1 } }");
   CHECK(d.message.find("an uncapped sor cannot be part of 'difference'") != std::string::npos);
+}
+
+TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad points are located errors", "[shapes]") {
+  render::SceneDesc s = eval_text("lathe { points = [[0, 0], [1, 0], [1, 1], [0, 1]] }\n");
+  const render::Lathe* g = nullptr;
+  for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Lathe>(&d.geometry);
+  REQUIRE(g);
+  CHECK(g->closed);
+  render::SurfaceHit h;
+  REQUIRE(intersect(*g, render::Ray{render::Vec3(0, 0.5, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(4.0).epsilon(1e-12));
+  CHECK(h.normal.z == Approx(-1.0).epsilon(1e-12));
+  eval_text("difference { lathe { points = [[0, 0], [1, 0], [1, 1], [0, 1]] } sphere { radius = 0.5 } }\n");
+
+  Diagnostic d = eval_diagnostic("lathe {\n  points = [[1, 0]] }");
+  CHECK(d.message == "lathe needs at least 2 points, got 1");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
+  d = eval_diagnostic("lathe {\n  points = [[1, 0], [-1, 1]] }");
+  CHECK(d.message == "lathe point 2 [-1, 1]: the radius must be >= 0");
+  CHECK(d.loc.line == 2);
+  d = eval_diagnostic("difference { lathe { points = [[1, 0], [1, 1]] } sphere { radius = 1 } }");
+  CHECK(d.message.find("lathe cannot be part of 'difference'") != std::string::npos);
 }

@@ -17,6 +17,7 @@
 #include "render/geometry/shapes/disc.hpp"
 #include "render/geometry/shapes/height_field.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
+#include "render/geometry/shapes/lathe.hpp"
 #include "render/geometry/shapes/mesh.hpp"
 #include "render/geometry/shapes/plane.hpp"
 #include "render/geometry/shapes/quad.hpp"
