@@ -421,6 +421,23 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
           rows.rows.push_back(std::move(r));
         }
         return rows;
+      } else if (*p.name == "points" && items.front().type == Type::List && !as_list(items.front()).empty() &&
+                 std::all_of(as_list(items.front()).begin(), as_list(items.front()).end(),
+                             [](const Value& x) { return x.type == Type::Number; })) {
+        // Rows of numbers: a sor's `points = [[0.5, 0], [0.8, 1], ...]` (only a `points`
+        // property: elsewhere [[0.5, 1]] is a color map missing its color, and says so).
+        render::RowsParam rows;
+        for (const Value& x : items) {
+          const auto* row = x.type == Type::List ? &as_list(x) : nullptr;
+          if (!row || !std::all_of(row->begin(), row->end(), [](const Value& e) { return e.type == Type::Number; }))
+            fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: each entry is a list of numbers, "
+                                    "e.g. [0.5, 1]",
+                                    *p.name, kind));
+          render::RowsParam::Row r;
+          for (const Value& e : *row) r.numbers.push_back(e.v.x);
+          rows.rows.push_back(std::move(r));
+        }
+        return rows;
       } else if (items.front().type == Type::List) {
         // A color map: [[value, color], ...].
         render::ColorMapParam map;

@@ -25,8 +25,6 @@ constexpr Hint kHints[] = {
     {"local", "'let'"},
     {"smooth_triangle", "'triangle { ... n0 = ... n1 = ... n2 = ... }'"},
     {"mesh2", "'mesh { vertices = [...] faces = [...] }'"},
-    {"lathe", "not yet available"},
-    {"sor", "not yet available"},
     {"prism", "not yet available"},
 };
 

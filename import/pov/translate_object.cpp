@@ -25,13 +25,13 @@ bool MaterialProps::has(const std::string& name) const {
 
 bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
-                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "union",
+                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "sor", "lathe", "union",
                                               "intersection", "difference", "merge", "object"};
   return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
 }
 
 bool Translator::is_unsupported_shape(const std::string& k) {
-  static const std::set<std::string> kinds = {"lathe", "sor", "prism", "height_field", "isosurface", "text",
+  static const std::set<std::string> kinds = {"prism", "height_field", "isosurface", "text",
                                               "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
                                               "parametric", "quadric", "poly", "cubic", "quartic", "ovus", "lemon",
                                               "mesh2", "polynomial"};
@@ -46,7 +46,7 @@ constexpr std::size_t kMaxTransformSteps = 10000;
 
 // The closest rts alternative for an unsupported shape, and whether it is planned.
 std::pair<std::string, bool> shape_alternative(const std::string& k) {
-  if (k == "lathe" || k == "sor" || k == "prism" || k == "height_field" || k == "isosurface")
+  if (k == "prism" || k == "height_field" || k == "isosurface")
     return {"a mesh from an OBJ file (issue 20 plans the shape)", true};
   if (k == "text" || k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
   if (k == "mesh2") return {"mesh { vertices = [...]  faces = [...] }", true};
@@ -55,7 +55,7 @@ std::pair<std::string, bool> shape_alternative(const std::string& k) {
 
 bool closed_kind(const std::string& k) {
   return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
-         k == "superellipsoid" || k == "blob" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
+         k == "superellipsoid" || k == "sor" || k == "lathe" || k == "blob" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
 }
 
 bool is_texture_part(const std::string& k) {
@@ -602,6 +602,17 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     w.line(fmt::format("{}group {{ }}  // POV-Ray's {} is not translated (rts import warned)", prefix, k));
     return;
   }
+  if (k == "lathe") {
+    // Only POV-Ray's linear_spline (its default) has an rts lathe so far.
+    for (const Item& it : b.items)
+      if (it.kind == Item::Keyword &&
+          (it.name == "quadratic_spline" || it.name == "cubic_spline" || it.name == "bezier_spline")) {
+        unsupported(it.loc, it.name, "a lathe with straight segments (linear_spline), or a mesh from an OBJ file", true);
+        w.line(fmt::format("{}group {{ }}  // POV-Ray's lathe with {} is not translated (rts import warned)", prefix,
+                           it.name));
+        return;
+      }
+  }
   if (k == "object") {
     // object { sphere { ... } modifiers }: the inner object with the modifiers after its own.
     const Item* inner = nullptr;
@@ -628,6 +639,25 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   if (k == "blob") {
     blob_rest = blob_components(b, props);
     items_of = &blob_rest;
+  }
+  Block lathe_rest;  // `linear_spline N, <a>, ...` reads as a keyword with the values as its arguments
+  if (k == "lathe") {
+    lathe_rest = b;
+    lathe_rest.items.clear();
+    for (const Item& it : b.items) {
+      if (it.kind == Item::Keyword && it.name == "linear_spline" && !it.args.empty()) {
+        for (const ExprPtr& a : it.args) {
+          Item value;
+          value.kind = Item::Value;
+          value.loc = a->loc;
+          value.args.push_back(a);
+          lathe_rest.items.push_back(std::move(value));
+        }
+        continue;
+      }
+      lathe_rest.items.push_back(it);
+    }
+    items_of = &lathe_rest;
   }
   for (const Item& it : items_of->items) {
     switch (it.kind) {
@@ -670,9 +700,11 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         if (!t.empty()) {
           xforms.insert(xforms.end(), t.begin(), t.end());
         } else if (it.name == "open") {
-          props.push_back("capped = false");
+          props.push_back(k == "sor" ? "open = true" : "capped = false");
         } else if (it.name == "inverse") {
           props.push_back("inverse = true");
+        } else if (k == "lathe" && it.name == "linear_spline") {
+          // rts's lathe is made of straight segments
         } else if (it.name == "hollow" || it.name == "sturm" || it.name == "smooth" || it.name == "double_illuminate" ||
                    it.name == "no_reflection" || it.name == "no_radiosity" || it.name == "cutaway_textures" ||
                    it.name == "split_union") {
@@ -749,6 +781,24 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
       std::string p = value(*v(0));
       props.insert(props.begin(), {"e = " + p + ".x", "n = " + p + ".y"});
     }
+  } else if (k == "sor" || k == "lathe") {
+    if (k == "lathe") need(3, "a count and at least two points: lathe { linear_spline 2, <r0, h0>, <r1, h1> }");
+    else need(5, "a count and at least four points: sor { 4, <r0, h0>, <r1, h1>, <r2, h2>, <r3, h3> }");
+    double count;
+    if (literal_number(*v(0), count) && count != static_cast<double>(values.size() - 1))
+      error(values[0]->loc, fmt::format("{} says {} points but lists {}", k, num(count), values.size() - 1));
+    std::string pts;
+    for (std::size_t i = 1; i < values.size(); ++i) {
+      std::vector<double> q;
+      pts += i > 1 ? ", " : "";
+      if (literal_vector(*v(i), q) && q.size() >= 2) {
+        pts += fmt::format("[{}, {}]", num(q[0]), num(q[1]));
+      } else {
+        std::string p = value(*v(i));
+        pts += fmt::format("[{}.x, {}.y]", p, p);
+      }
+    }
+    props.insert(props.begin(), "points = [" + pts + "]");
   } else if (k == "mesh") {
     kind = "group";
     comments.push_back("POV-Ray's mesh: its triangles in a group");
@@ -766,7 +816,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
               if (!s || !closed_kind(s->object_kind)) closed = false;
               break;
             }
-        } else if (!closed_kind(ck) || (ck == "cylinder" || ck == "cone")) {
+        } else if (!closed_kind(ck) || (ck == "cylinder" || ck == "cone" || ck == "sor" || ck == "lathe")) {
           // open cylinders/cones are open shapes too
           if (!closed_kind(ck)) closed = false;
           for (const Item& r : c->block->items)

@@ -192,8 +192,29 @@ struct HeightField {
   double water_level = 0.0;           // below it nothing is drawn (the solid is filled up to it)
 };
 
+// POV-Ray's sor: about the y axis, radius^2 a cubic in the height on each segment between
+// the profile's points 2 .. N-1 (render/geometry/shapes/sor.hpp fits and traces it).
+struct SorSegment { double h0 = 0.0, h1 = 1.0; double c[4] = {0, 0, 0, 0}; double r2_max = 0.0; };  // r^2 = sum c_k (y - h0)^k
+inline constexpr int kMaxSorPoints = 256;  // bounds the per-ray stack arrays
+struct Sor {
+  std::vector<Vec3> points;          // <r, h, 0> as given
+  std::vector<SorSegment> segments;  // points.size() - 3 of them, bottom to top
+  double radius = 0.0, h_min = 0.0, h_max = 0.0, base_r2 = 0.0, cap_r2 = 0.0;
+  bool open = false;                 // no discs at the bottom and top
+};
+
+// POV-Ray's lathe with linear_spline: the profile's straight segments turned about the y axis
+// (render/geometry/shapes/lathe.hpp traces it).
+inline constexpr int kMaxLathePoints = 4096;
+struct Lathe {
+  std::vector<Vec3> points;          // <r, h, 0> as given
+  double radius = 0.0, h_min = 0.0, h_max = 0.0;
+  bool closed = false;               // the profile ends where it starts, or both ends on the axis
+  double orientation = 1.0;          // +1: the profile (closed along the axis) runs counter-clockwise
+};
+
 using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,
-                                   Isosurface, Blob, HeightField>;
+                                   Isosurface, Blob, HeightField, Sor, Lathe>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;

@@ -104,6 +104,16 @@ std::string shape_text(const ShapeDesc& s) {
                           : fmt::format(" sphere {} {} {}", vec(c.a), num(c.radius), num(c.strength));
       return out;
     }
+    std::string operator()(const Sor& g) {
+      std::string out = "sor points";
+      for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
+      return out + (g.open ? " open true" : "");
+    }
+    std::string operator()(const Lathe& g) {
+      std::string out = "lathe points";
+      for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
+      return out;
+    }
     std::string operator()(const HeightField& g) {
       if (!g.data) return "height_field empty";
       return fmt::format("height_field {}x{} heights {}..{} smooth {} water_level {}", g.data->nx, g.data->nz,

@@ -95,6 +95,20 @@ T sample(SceneDesc& s) {
     g.smooth = true;
     g.water_level = 0.2;
     return g;
+  } else if constexpr (std::is_same_v<T, Sor>) {
+    // A vase: a bulge, a waist, a flared lip, closed by its discs.
+    Sor g;
+    g.points = {Vec3(0.2, -1.2, 0), Vec3(0.6, -1, 0),  Vec3(0.9, -0.5, 0), Vec3(0.5, 0.2, 0),
+                Vec3(0.4, 0.6, 0),  Vec3(0.7, 1, 0),   Vec3(0.8, 1.2, 0)};
+    sor_setup(g);
+    return g;
+  } else if constexpr (std::is_same_v<T, Lathe>) {
+    // A closed profile: a cup with a wall, a rim, a hollow inside and a foot.
+    Lathe g;
+    g.points = {Vec3(0, -1, 0),      Vec3(0.6, -1, 0), Vec3(0.4, -0.8, 0), Vec3(0.9, 0.9, 0),
+                Vec3(0.8, 1, 0),     Vec3(0.7, 0.8, 0), Vec3(0, -0.5, 0)};
+    lathe_setup(g);
+    return g;
   } else {
     static_assert(kNoSample<T>, "a new shape kind needs a sample in test_error_bounds.cpp");
   }

@@ -5,6 +5,8 @@
 #include "eval_helpers.hpp"
 #include "render/geometry/shapes/blob.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
+#include "render/geometry/shapes/lathe.hpp"
+#include "render/geometry/shapes/sor.hpp"
 
 using namespace rts;
 using rts::test::eval_diagnostic;
@@ -166,4 +168,63 @@ TEST_CASE("bad blob parameters are located errors", "[shapes]") {
   CHECK(d.message == "blob cylinders entry 1: 'from' and 'to' must differ (use a sphere)");
   d = eval_diagnostic("blob { spheres = [[<0, 0, 0>, \"big\", 1]] }");
   CHECK(d.message.find("each entry is a list of vectors then numbers") != std::string::npos);
+}
+
+TEST_CASE("a sor from the language: pairs or vectors, open, and bad points are located errors", "[shapes]") {
+  render::SceneDesc s = eval_text("sor { points = [[1, -1], [1, 0], [1, 1], [1, 2]]  open = true }\n");
+  const render::Sor* g = nullptr;
+  for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Sor>(&d.geometry);
+  REQUIRE(g);
+  CHECK(g->open);
+  REQUIRE(g->segments.size() == 1);
+  render::SurfaceHit h;
+  REQUIRE(intersect(*g, render::Ray{render::Vec3(0, 0.5, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(4.0).epsilon(1e-12));
+  CHECK(h.normal.z == Approx(-1.0).epsilon(1e-12));
+  s = eval_text("sor { points = [<1, -1, 0>, <1, 0, 0>, <1, 1, 0>, <1, 2, 0>] }\n");
+  CHECK(s.shapes.size() == 1);
+
+  Diagnostic d = eval_diagnostic("sor {\n  points = [[1, 0], [1, 1], [1, 2]] }");
+  CHECK(d.message == "sor needs at least 4 points (the first and last set the end slopes), got 3");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
+  d = eval_diagnostic("sor {\n  points = [[1, 0], [1, 1], [1, 1], [1, 2]] }");
+  CHECK(d.message == "sor point 3 [1, 1]: the heights must increase from point 2 to point 3, but 1 follows 1");
+  CHECK(d.loc.line == 2);
+  d = eval_diagnostic("sor { points = [[1, 0], [1, 2], [1, 1], [1, 3]] }");
+  CHECK(d.message == "sor point 3 [1, 1]: the heights must increase from point 2 to point 3, but 1 follows 2");
+  d = eval_diagnostic("sor {\n  points = [[1, 0], [-0.5, 1], [1, 2], [1, 3]] }");
+  CHECK(d.message == "sor point 2 [-0.5, 1]: the radius must be >= 0");
+  CHECK(d.loc.line == 2);
+  d = eval_diagnostic("sor { points = [[1, 1], [1, 0], [1, 1], [1, 2]] }");
+  CHECK(d.message == "sor points 1 and 3 must differ in height (they set the bottom slope)");
+  d = eval_diagnostic("sor { points = [[1, 0], [1], [1, 1], [1, 2]] }");
+  CHECK(d.message == "sor point 2 must be a pair [r, h]");
+  d = eval_diagnostic("sor { open = true }");
+  CHECK(d.message == "sor needs property 'points'");
+  d = eval_diagnostic("difference { sor { points = [[1, 0], [1, 1], [1, 2], [1, 3]]  open = true } sphere { radius = 1 } }");
+  CHECK(d.message.find("an uncapped sor cannot be part of 'difference'") != std::string::npos);
+}
+
+TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad points are located errors", "[shapes]") {
+  render::SceneDesc s = eval_text("lathe { points = [[0, 0], [1, 0], [1, 1], [0, 1]] }\n");
+  const render::Lathe* g = nullptr;
+  for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Lathe>(&d.geometry);
+  REQUIRE(g);
+  CHECK(g->closed);
+  render::SurfaceHit h;
+  REQUIRE(intersect(*g, render::Ray{render::Vec3(0, 0.5, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
+  CHECK(h.t == Approx(4.0).epsilon(1e-12));
+  CHECK(h.normal.z == Approx(-1.0).epsilon(1e-12));
+  eval_text("difference { lathe { points = [[0, 0], [1, 0], [1, 1], [0, 1]] } sphere { radius = 0.5 } }\n");
+
+  Diagnostic d = eval_diagnostic("lathe {\n  points = [[1, 0]] }");
+  CHECK(d.message == "lathe needs at least 2 points, got 1");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
+  d = eval_diagnostic("lathe {\n  points = [[1, 0], [-1, 1]] }");
+  CHECK(d.message == "lathe point 2 [-1, 1]: the radius must be >= 0");
+  CHECK(d.loc.line == 2);
+  d = eval_diagnostic("difference { lathe { points = [[1, 0], [1, 1]] } sphere { radius = 1 } }");
+  CHECK(d.message.find("lathe cannot be part of 'difference'") != std::string::npos);
 }

@@ -14,7 +14,9 @@
 #include "render/geometry/shapes/cylinder.hpp"
 #include "render/geometry/shapes/height_field.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
+#include "render/geometry/shapes/lathe.hpp"
 #include "render/geometry/shapes/plane.hpp"
+#include "render/geometry/shapes/sor.hpp"
 #include "render/geometry/shapes/sphere.hpp"
 #include "render/geometry/shapes/superellipsoid.hpp"
 #include "render/geometry/shapes/torus.hpp"
@@ -79,6 +81,41 @@ inline void leaf_crossings(const Blob& b, const Ray& ray, CsgLeafCrossings& out)
 
 inline bool leaf_hit(const Blob& b, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
   blob_hit_at(b, ray, c.t[k], hit);
+  return true;
+}
+
+// A sor's crossings come from one walk along the ray; the chosen one's part (cap or curve
+// segment) is found by walking again (the walk is deterministic).
+inline void leaf_crossings(const Sor& s, const Ray& ray, CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  SorCrossing cs[kMaxLeafCrossings];
+  out.count = sor_crossings(s, ray, cs, kMaxLeafCrossings);
+  if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
+  for (int i = 0; i < out.count; ++i) out.t[i] = cs[i].t;
+}
+
+inline bool leaf_hit(const Sor& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  SorCrossing cs[kMaxLeafCrossings];
+  int n = sor_crossings(s, ray, cs, kMaxLeafCrossings);
+  if (k >= n) return false;
+  sor_hit_at(s, ray, cs[k], hit);
+  return true;
+}
+
+// A lathe with a closed profile: its crossings alternate in and out (POV-Ray's even-odd inside).
+inline void leaf_crossings(const Lathe& l, const Ray& ray, CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  LatheCrossing cs[kMaxLeafCrossings];
+  out.count = lathe_crossings(l, ray, cs, kMaxLeafCrossings);
+  if (out.count % 2 == 1) --out.count;  // more crossings than kept, or a joint counted oddly: drop the unpaired one
+  for (int i = 0; i < out.count; ++i) out.t[i] = cs[i].t;
+}
+
+inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  LatheCrossing cs[kMaxLeafCrossings];
+  int n = lathe_crossings(l, ray, cs, kMaxLeafCrossings);
+  if (k >= n) return false;
+  lathe_hit_at(l, ray, cs[k], hit);
   return true;
 }
 
