@@ -44,7 +44,7 @@ constexpr double kSrgbOffset = 0.055;
 // must not make us allocate gigabytes).
 constexpr std::size_t kMaxReadPixels = 100'000'000;
 
-// Deflate expands at most 1032:1 (a 258-byte match coded in 2 bits), so a file of N bytes holds
+// Deflate expands at most 1032:1 (its best case, long runs of one byte), so a file of N bytes holds
 // at most ~1032 N bytes of raw pixel rows; a header that claims more describes data the file
 // cannot contain, and is refused before any row buffer is allocated (a 100-byte file must not
 // make us allocate gigabytes only to fail on its missing data). 1100 leaves room above the bound.
@@ -337,7 +337,7 @@ bool decode_png(PngIo& io, DecodedPng& out) {
     png_destroy_read_struct(&png, &info, nullptr);
     return false;
   }
-  // Before any transformation rowbytes is the stored (compressed) row's size; the filter bytes
+  // Before any transformation rowbytes is one stored row's size once inflated; the filter bytes
   // and interlacing only add to what the data must hold, so this is a lower bound.
   if (static_cast<std::size_t>(png_get_rowbytes(png, info)) * height > kMaxDeflateExpansion * out.file_bytes) {
     out.more_than_data = true;
