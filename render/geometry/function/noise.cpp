@@ -7,6 +7,15 @@
 #include <array>
 #include <cmath>
 
+// x86-64 builds carry a second vector_turbulence for CPUs with AVX, chosen at run time (the
+// build itself targets the SSE2 baseline). See vector_turbulence_avx.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define RTS_NOISE_AVX 1
+#include <immintrin.h>
+#else
+#define RTS_NOISE_AVX 0
+#endif
+
 namespace rts::render::pattern {
 
 namespace {
@@ -218,11 +227,96 @@ namespace {
   return {std::clamp(r01[0], -1.0, 1.0), std::clamp(r01[1], -1.0, 1.0), std::clamp(r2, -1.0, 1.0)};
 }
 
+#if RTS_NOISE_AVX
+// vector_turbulence on CPUs with AVX: the three components side by side in one 256-bit
+// register (the fourth lane is unused), so each corner's ramp is 3 multiplies and 2 adds for
+// all three and each lerp one operation, where the SSE2 code above needs a pair register for
+// components 0 and 1 and another, corner below with corner above, for component 2. Profile
+// finding (callgrind, bench/race/patterns.rts at 800x600): vector_turbulence was 21% of the
+// process's instructions, 2,160 a wood sample (six octaves of the warp); this form takes 26-30%
+// less time per call (a loop over 300,000 points). The same IEEE operations, in the same
+// order, on each lane as vector_noise_inline does on each component, AVX has no fused
+// multiply-add (and -ffp-contract=off forbids contracting), and the clamp keeps std::clamp's
+// operand order: the same bits (tests/render/test_noise.cpp compares it with
+// vector_turbulence_portable).
+struct alignas(32) CornerRow4 {
+  double x[4], y[4], z[4];   // components 0, 1, 2 (and 0) of the gradients at a corner hash
+};
+struct CornerTable4 {
+  CornerRow4 row[256];
+};
+CornerTable4 make_corner_table4() {
+  CornerTable4 t{};
+  for (int h = 0; h < 256; ++h) {
+    const double* g[3] = {kGrad[h & 15], kGrad[kPerm[(h + kComponentOffset[1]) & 255] & 15],
+                          kGrad[kPerm[(h + kComponentOffset[2]) & 255] & 15]};
+    for (int c = 0; c < 3; ++c) {
+      t.row[h].x[c] = g[c][0];
+      t.row[h].y[c] = g[c][1];
+      t.row[h].z[c] = g[c][2];
+    }
+  }
+  return t;
+}
+const CornerTable4 kCornerTable4 = make_corner_table4();
+
+[[gnu::target("avx")]] inline __m256d lerp4(__m256d t, __m256d a, __m256d b) {
+  return _mm256_add_pd(a, _mm256_mul_pd(t, _mm256_sub_pd(b, a)));
+}
+
+[[gnu::target("avx")]] Vec3 vector_turbulence_avx(const Vec3& p0, int octaves, double lambda, double omega) {
+  __m256d sum = _mm256_setzero_pd();
+  const __m256d lo = _mm256_set1_pd(-1.0), hi = _mm256_set1_pd(1.0);
+  double amp = 1.0, freq = 1.0;
+  for (int o = 0; o < octaves; ++o) {
+    const Vec3 p = p0 * freq;
+    __m256d n = _mm256_setzero_pd();
+    if (usable(p)) {
+      const double fx = fast_floor(p.x), fy = fast_floor(p.y), fz = fast_floor(p.z);
+      const int X = lattice(fx), Y = lattice(fy), Z = lattice(fz);
+      const double x = p.x - fx, y = p.y - fy, z = p.z - fz;
+      const Pair2 uv = fade2(Pair2{x, y});
+      const __m256d u = _mm256_set1_pd(uv[0]), v = _mm256_set1_pd(uv[1]), w = _mm256_set1_pd(fade(z));
+      const int A = kPerm[X] + Y, AA = kPerm[A] + Z, AB = kPerm[A + 1] + Z;
+      const int B = kPerm[X + 1] + Y, BA = kPerm[B] + Z, BB = kPerm[B + 1] + Z;
+      const int corner[8] = {kPerm[AA], kPerm[BA], kPerm[AB], kPerm[BB], kPerm[AA + 1], kPerm[BA + 1], kPerm[AB + 1], kPerm[BB + 1]};
+      const __m256d xs[2] = {_mm256_set1_pd(x), _mm256_set1_pd(x - 1)};
+      const __m256d ys[2] = {_mm256_set1_pd(y), _mm256_set1_pd(y - 1)};
+      const __m256d zs[2] = {_mm256_set1_pd(z), _mm256_set1_pd(z - 1)};
+      __m256d d[8];
+#pragma GCC unroll 8
+      for (int i = 0; i < 8; ++i) {
+        const CornerRow4& g = kCornerTable4.row[corner[i]];
+        d[i] = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_load_pd(g.x), xs[i & 1]),
+                                           _mm256_mul_pd(_mm256_load_pd(g.y), ys[(i >> 1) & 1])),
+                             _mm256_mul_pd(_mm256_load_pd(g.z), zs[i >> 2]));
+      }
+      const __m256d r = lerp4(w, lerp4(v, lerp4(u, d[0], d[1]), lerp4(u, d[2], d[3])),
+                              lerp4(v, lerp4(u, d[4], d[5]), lerp4(u, d[6], d[7])));
+      // std::clamp(r, -1, 1) is r < -1 ? -1 : (1 < r ? 1 : r); max_pd(a, b) is a > b ? a : b
+      // and min_pd(a, b) is a < b ? a : b, so the constants go first.
+      n = _mm256_min_pd(hi, _mm256_max_pd(lo, r));
+    }
+    sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(amp), n));
+    amp *= omega;
+    freq *= lambda;
+  }
+  alignas(32) double out[4];
+  _mm256_store_pd(out, sum);
+  return {out[0], out[1], out[2]};
+}
+
+bool cpu_has_avx() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx");
+}
+#endif
+
 }  // namespace
 
 Vec3 vector_noise(const Vec3& p) { return vector_noise_inline(p); }
 
-Vec3 vector_turbulence(const Vec3& p, int octaves, double lambda, double omega) {
+Vec3 vector_turbulence_portable(const Vec3& p, int octaves, double lambda, double omega) {
   octaves = std::clamp(octaves, 1, kMaxOctaves);
   Vec3 sum(0.0);
   double amp = 1.0, freq = 1.0;
@@ -232,6 +326,14 @@ Vec3 vector_turbulence(const Vec3& p, int octaves, double lambda, double omega) 
     freq *= lambda;
   }
   return sum;
+}
+
+Vec3 vector_turbulence(const Vec3& p, int octaves, double lambda, double omega) {
+#if RTS_NOISE_AVX
+  static const bool avx = cpu_has_avx();
+  if (avx) return vector_turbulence_avx(p, std::clamp(octaves, 1, kMaxOctaves), lambda, omega);
+#endif
+  return vector_turbulence_portable(p, octaves, lambda, omega);
 }
 
 double cells(const Vec3& p) {

@@ -45,6 +45,9 @@ Vec3 vector_noise(const Vec3& p);
 // sum_i omega^i * vector_noise(lambda^i * p), unnormalised (POV-Ray's DTurbulence): the
 // displacement a `turbulence` warp scales.
 Vec3 vector_turbulence(const Vec3& p, int octaves, double lambda, double omega);
+// The same sum by the SSE2 code every x86-64 CPU runs; vector_turbulence takes an AVX form of
+// it where the CPU has AVX, which must give the same bits (the tests compare the two).
+Vec3 vector_turbulence_portable(const Vec3& p, int octaves, double lambda, double omega);
 double cells(const Vec3& p);
 double worley(const Vec3& p);
 void worley2(const Vec3& p, double& f1, double& f2);
