@@ -112,11 +112,7 @@ const MaterialDesc& Integrator::material(uint32_t instance) const {
 template <unsigned F>
 Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
   if ((F & trace_flags::kTexture) && m.texture != kNoId && m.texture < textures_.size()) {
-    TexturePoint p;
-    p.object_point = hit.object_point;
-    p.has_uv = hit.has_uv;
-    if (p.has_uv) p.uv = world_.surface_uv(hit);
-    return to_rgb(textures_[m.texture].eval(p));
+    return to_rgb(textures_[m.texture].eval(texture_point(world_, hit, textures_[m.texture])));
   }
   return to_rgb(m.color);
 }

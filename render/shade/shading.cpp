@@ -27,11 +27,11 @@ void tangent_frame(const WorldHit& hit, const Vec3& n, Vec3& t, Vec3& b) {
 
 }  // namespace
 
-TexturePoint texture_point(const World& world, const WorldHit& hit) {
+TexturePoint texture_point(const World& world, const WorldHit& hit, bool want_uv) {
   TexturePoint p;
   p.object_point = hit.object_point;
   p.has_uv = hit.has_uv;
-  if (p.has_uv) p.uv = world.surface_uv(hit);
+  if (p.has_uv && want_uv) p.uv = world.surface_uv(hit);
   return p;
 }
 
@@ -57,7 +57,9 @@ const MaterialDesc& varying_material(const MaterialDesc& m, const World& world, 
     if (vm.has_shininess) scratch.shininess = std::max(0.0, vm.shininess);
   }
   if (has_channel_textures(m)) {
-    const TexturePoint p = texture_point(world, hit);
+    auto reads_uv = [&](TextureId id) { return valid(id, textures) && textures[id].uses_uv(); };
+    const TexturePoint p = texture_point(world, hit, reads_uv(m.specular_texture) || reads_uv(m.reflect_texture) ||
+                                                         reads_uv(m.transmit_texture) || reads_uv(m.emission_texture));
     auto eval = [&](TextureId id) { return textures[id].eval(p); };
     if (valid(m.specular_texture, textures)) {
       // The texture is the highlight's color, channel by channel (UW's map() on specular).
@@ -76,7 +78,8 @@ Rgb textured_diffuse(const MaterialDesc& m, const World& world, const WorldHit& 
   if (!valid(m.diffuse_texture, textures)) return Rgb(0.0);
   // The texture is the diffuse color itself: the builder sets `diffuse` to 1, so the
   // integrator's diffuse * color * (N·L) becomes texture * (N·L).
-  return rgb(textures[m.diffuse_texture].eval(texture_point(world, hit)));
+  const CompiledTexture& texture = textures[m.diffuse_texture];
+  return rgb(texture.eval(texture_point(world, hit, texture)));
 }
 
 Vec3 perturbed_normal(const MaterialDesc& m, const World& world, const WorldHit& hit, const Vec3& n,
@@ -85,7 +88,7 @@ Vec3 perturbed_normal(const MaterialDesc& m, const World& world, const WorldHit&
   if (!bump && !normal_map) return n;
   Vec3 t, b;
   tangent_frame(hit, n, t, b);
-  TexturePoint p = texture_point(world, hit);
+  TexturePoint p = texture_point(world, hit, textures[normal_map ? m.normal_map : m.bump]);
   Vec3 out = n;
   if (normal_map) {
     // Tangent-space normal stored as rgb = (n + 1) / 2 (read the file with color_space "linear").

@@ -13,7 +13,13 @@
 namespace rts::render {
 
 // Where a texture is looked up for a hit (object point, and uv when the surface has them).
-TexturePoint texture_point(const World& world, const WorldHit& hit);
+// With `want_uv` false the uv is left 0 (has_uv still says whether the surface has them):
+// for textures that do not read it (CompiledTexture::uses_uv).
+TexturePoint texture_point(const World& world, const WorldHit& hit, bool want_uv = true);
+// The point for looking up `texture`: its uv only when it reads them.
+inline TexturePoint texture_point(const World& world, const WorldHit& hit, const CompiledTexture& texture) {
+  return texture_point(world, hit, texture.uses_uv());
+}
 
 // True when `m` has anything to evaluate per point (a channel texture).
 inline bool has_channel_textures(const MaterialDesc& m) {

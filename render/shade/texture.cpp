@@ -173,6 +173,7 @@ CompiledTexture::CompiledTexture(const TextureDesc& desc,
       throw RenderError(desc_.loc, fmt::format("unknown image mapping '{}' (expected \"uv\", "
                                                "\"planar\" or \"spherical\")", desc_.mapping));
     }
+    uses_uv_ = desc_.mapping == "uv";
   }
 }
 

@@ -55,6 +55,10 @@ class CompiledTexture {
   }
   // The size of one texel in uv units (0 for procedural textures), for bump-map differences.
   double texel_size() const;
+  // Whether eval() reads TexturePoint::uv (an image with `mapping = "uv"`); every other kind
+  // reads the point alone, so the caller need not compute a sphere's uv (two libm inverse
+  // trigonometric calls) for it.
+  bool uses_uv() const { return uses_uv_; }
 
  private:
   Color sample(const Image& image, double u, double v) const;
@@ -66,6 +70,7 @@ class CompiledTexture {
   std::vector<std::shared_ptr<const Image>> images_;   // image kinds only (linear RGB)
   std::vector<CompiledTexture> sky_layers_;            // SkySphere only, bottom first
   Color sky_background_{0.0};                          // SkySphere: behind every layer
+  bool uses_uv_ = false;
 };
 
 // Loads each distinct image once. Throws RenderError located at the texture's SourceRef when

@@ -93,7 +93,7 @@ void PathIntegrator::describe(std::vector<std::string>& used, std::vector<std::s
 Lobes PathIntegrator::lobes(const MaterialDesc& m, uint32_t material_id, const WorldHit& hit) const {
   Rgb albedo = to_rgb(m.color);
   if (m.texture != kNoId && m.texture < textures_.size())
-    albedo = to_rgb(textures_[m.texture].eval(texture_point(world_, hit)));
+    albedo = to_rgb(textures_[m.texture].eval(texture_point(world_, hit, textures_[m.texture])));
   double s = material_id < scale_.size() ? scale_[material_id] : 1.0;
   Lobes lb;
   lb.diffuse = s * std::max(m.diffuse, 0.0) * unit_clamp(diffuse_color(m, albedo, world_, hit, textures_));
