@@ -155,7 +155,7 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
   out.normal = hit.shading_normal;
   out.depth = hit.t * glm::length(ray.direction);
   out.bounded = world_.instance(hit.instance).kind != kPrimKind<Plane>;
-  std::optional<MaterialDesc> scratch;   // vertex colors are the albedo too
+  MaterialScratch scratch;   // vertex colors are the albedo too
   out.albedo = albedo(shading_material(material(hit.instance), world_, hit, textures_, scratch), hit);
   return out;
 }
@@ -195,7 +195,7 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
     WorldHit hit;
     if (!world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true)) return t;
-    std::optional<MaterialDesc> scratch;
+    MaterialScratch scratch;
     Rgb kt = to_rgb(shading_material(material(hit.instance), world_, hit, textures_, scratch).transmit);
     t *= glm::clamp(kt, 0.0, 1.0);
     if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
@@ -292,7 +292,11 @@ Integrator::Interface Integrator::interface(const MediumStack& media, uint32_t i
 template <unsigned F>
 Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const {
   const Ray& ray = pr.ray;
-  WorldHit hit;
+  // One hit record per thread, reused: a fresh WorldHit's default member initialisers are a
+  // 216-byte `rep stos` on every shaded ray (profile finding: see MaterialScratch). Safe because
+  // shade is never re-entered and World::intersect writes every field of a hit it returns
+  // (tests/render/test_instancing.cpp checks it); a miss reads nothing from it.
+  thread_local WorldHit hit;
   if (!world_.intersect(ray, Interval::positive(), hit)) {
     if (!fog_on_) return background(ray.direction);
     double t = fog_.transmittance(ray.origin, ray.direction, std::numeric_limits<double>::infinity());
@@ -302,7 +306,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   // fog); the rest of the segment's light is the fog's colour.
   const double fog_t = fog_on_ ? fog_.transmittance(ray.origin, ray.direction, hit.t) : 1.0;
   auto fogged = [&](const Rgb& c) { return fog_on_ ? fog_t * c + (1.0 - fog_t) * fog_color_ : c; };
-  std::optional<MaterialDesc> scratch;
+  MaterialScratch scratch;
   const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
   Vec3 incident = glm::normalize(ray.direction);
 

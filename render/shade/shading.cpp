@@ -37,7 +37,7 @@ TexturePoint texture_point(const World& world, const WorldHit& hit, bool want_uv
 
 const MaterialDesc& varying_material(const MaterialDesc& m, const World& world, const WorldHit& hit,
                                      const std::vector<CompiledTexture>& textures,
-                                     std::optional<MaterialDesc>& slot) {
+                                     MaterialScratch& slot) {
   VertexMaterial vm;
   const bool per_vertex = world.vertex_material(hit, vm);
   if (!per_vertex && !has_channel_textures(m)) return m;

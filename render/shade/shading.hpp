@@ -3,7 +3,8 @@
 // apart from the integrator so its recursion reads as Whitted's algorithm only.
 #pragma once
 
-#include <optional>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 #include "render/shade/lights.hpp"
@@ -27,16 +28,33 @@ inline bool has_channel_textures(const MaterialDesc& m) {
          m.transmit_texture != kNoId || m.emission_texture != kNoId;
 }
 
+// Room for the MaterialDesc a hit's varying material is written into (varying_material), left
+// unset until then. Not std::optional: libstdc++'s optional<MaterialDesc> zeroes its 256 bytes
+// when constructed, which GCC does with a `rep stos`; profile finding (perf, the pattern race
+// scene): that and WorldHit's initialisation were 40% of Integrator::shade's own samples, on
+// every shaded hit, for a slot that is empty unless a channel texture or per-vertex values vary.
+class MaterialScratch {
+ public:
+  MaterialScratch() noexcept {}   // value_ stays unset
+  MaterialDesc& emplace(const MaterialDesc& m) { return *::new (static_cast<void*>(&value_)) MaterialDesc(m); }
+
+ private:
+  static_assert(std::is_trivially_destructible_v<MaterialDesc>, "MaterialScratch never destroys its value");
+  union {
+    MaterialDesc value_;
+  };
+};
+
 // `m` itself when nothing varies over the surface; otherwise `scratch`, a copy with the
 // channel textures evaluated and the mesh's per-vertex values interpolated into it.
 // `diffuse_color`: the color the diffuse term uses (diffuse texture, else the albedo given).
 // `scratch` is filled only when needed, so the common case costs two inline tests.
 const MaterialDesc& varying_material(const MaterialDesc& m, const World& world, const WorldHit& hit,
                                      const std::vector<CompiledTexture>& textures,
-                                     std::optional<MaterialDesc>& scratch);
+                                     MaterialScratch& scratch);
 inline const MaterialDesc& shading_material(const MaterialDesc& m, const World& world, const WorldHit& hit,
                                             const std::vector<CompiledTexture>& textures,
-                                            std::optional<MaterialDesc>& scratch) {
+                                            MaterialScratch& scratch) {
   if (!has_channel_textures(m) && !world.has_vertex_material(hit)) return m;
   return varying_material(m, world, hit, textures, scratch);
 }

@@ -107,6 +107,57 @@ TEST_CASE("an instanced group gives the hits of its copies", "[instancing]") {
   CHECK(instanced.memory().instances * 3 < copies.memory().instances);
 }
 
+TEST_CASE("World::intersect writes every field of the hit it returns", "[instancing]") {
+  // Integrator::shade keeps one WorldHit per thread instead of initialising a fresh one per
+  // ray (render/shade/integrator.cpp): that is only right while a returned hit owes nothing to
+  // what the record held before. A record full of sentinels must come back equal, field by
+  // field, to a fresh one, for plain shapes, transformed ones, instanced groups and a plane.
+  std::mt19937_64 rng(77);
+  SceneDesc s;
+  const NodeId g = random_group(s, rng, 60);
+  place(s, g, translate(Vec3(3, 0, 1)) * rotate_deg(30.0, Vec3(0, 1, 0)));
+  place(s, g);
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), -6.0}));
+  const FlatScene flat = flatten_scene(s);
+  const World instanced(s, flat), copies(s, copied(s));
+  auto sentinel = [] {
+    WorldHit h;
+    h.t = h.error = 1234.5;
+    h.instance = h.medium = h.triangle = 0xDEADBEEF;
+    h.point = h.normal = h.shading_normal = h.object_point = h.dpdu = h.dpdv = Vec3(-777.25);
+    h.uv = h.bary = glm::dvec2(99.5);
+    h.has_uv = true;
+    return h;
+  };
+  int hits = 0;
+  for (const World* world : {&instanced, &copies}) {
+    for (int r = 0; r < 2000; ++r) {
+      const Vec3 o = random_point(rng, 20.0);
+      const Ray ray{o, random_point(rng, 8.0) - o};
+      WorldHit fresh, reused = sentinel();
+      const bool a = world->intersect(ray, Interval::positive(), fresh);
+      REQUIRE(a == world->intersect(ray, Interval::positive(), reused));
+      if (!a) continue;
+      ++hits;
+      CHECK(reused.t == fresh.t);
+      CHECK(reused.instance == fresh.instance);
+      CHECK(reused.medium == fresh.medium);
+      CHECK(reused.point == fresh.point);
+      CHECK(reused.error == fresh.error);
+      CHECK(reused.normal == fresh.normal);
+      CHECK(reused.shading_normal == fresh.shading_normal);
+      CHECK(reused.object_point == fresh.object_point);
+      CHECK(reused.uv == fresh.uv);
+      CHECK(reused.has_uv == fresh.has_uv);
+      CHECK(reused.dpdu == fresh.dpdu);
+      CHECK(reused.dpdv == fresh.dpdv);
+      CHECK(reused.triangle == fresh.triangle);
+      CHECK(reused.bary == fresh.bary);
+    }
+  }
+  CHECK(hits > 1000);
+}
+
 TEST_CASE("nested instanced groups and groups without a BVH", "[instancing]") {
   std::mt19937_64 rng(77);
   SceneDesc s;

@@ -129,7 +129,7 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
     }
     const uint32_t material_id = world_.instance(hit.instance).material;
     const MaterialDesc& base = material_id < materials_.size() ? materials_[material_id] : default_material_;
-    std::optional<MaterialDesc> scratch;
+    MaterialScratch scratch;
     const MaterialDesc& m = shading_material(base, world_, hit, textures_, scratch);
 
     // Emission found by the ray: all of it after a delta lobe or from an emitter NEE does not
