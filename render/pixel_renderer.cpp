@@ -51,9 +51,12 @@ PixelEstimate estimate_pixel(const PixelAccum& acc, int batches) {
 }
 
 void PixelRenderer::add_samples(int x, int y, uint32_t count, PixelAccum& acc, RayCounters& counters) const {
+  // Sample s is index s / batches of batch s % batches; both are stepped instead of divided per
+  // sample (profile finding, perf on the pattern race scene at 1 spp: the 32-bit division was a
+  // sixth of this function's own time).
+  uint32_t batch = acc.taken % batches_, index = acc.taken / batches_;
   for (uint32_t s = acc.taken, end = acc.taken + count; s < end; ++s) {
-    const uint32_t batch = s % batches_;
-    Sampler sampler(pattern_, static_cast<uint32_t>(x), static_cast<uint32_t>(y), batch, s / batches_);
+    Sampler sampler(pattern_, static_cast<uint32_t>(x), static_cast<uint32_t>(y), batch, index);
     glm::dvec2 offset = centre_single_ ? glm::dvec2(0.5) : sampler.next2();
     // Without depth of field the lens point is ignored: step over its two dimensions instead of
     // computing them (the Sobol pair was 13% of a 1-spp diffuse render's instructions, callgrind),
@@ -74,6 +77,10 @@ void PixelRenderer::add_samples(int x, int y, uint32_t count, PixelAccum& acc, R
     acc.sum[batch][1] += c.y;
     acc.sum[batch][2] += c.z;
     ++acc.count[batch];
+    if (++batch == batches_) {
+      batch = 0;
+      ++index;
+    }
   }
   acc.taken += count;
 }
