@@ -58,4 +58,25 @@ sphere { radius = 1  material = material { reflect = 0.5 } }
 RTS
 expect_exit 0 "render a sky_sphere" -- "$RTS" render sky.rts -o sky.png "${size[@]}" --stats
 expect_grep "$TMP/err" "features: .*used .*sky_sphere.*left_out" "--stats lists sky_sphere as used"
+
+# Procedural patterns (docs/textures.md#determinism-cost-and-leave-out): (a) has none, so
+# `pattern` is left out; a marble texture or a bumps bump map puts it among the used. The sky
+# above is a pattern on the environment, which counts as sky_sphere, not as pattern.
+expect_grep "$TMP/err" "features: .*left_out .*pattern" "--stats lists pattern as left out for a sky_sphere only"
+cat > marble.rts <<'RTS'
+sphere { radius = 1  material = material { texture = marble { turbulence = 0.5 } scale 0.3 } }
+RTS
+cat > bumpy.rts <<'RTS'
+sphere { radius = 1  material = material { color = rgb(0.8)  bump = bumps { } scale 0.2  bump_scale = 0.1 } }
+RTS
+for v in marble bumpy; do
+  expect_exit 0 "render ($v)" -- "$RTS" render "$v.rts" -o "$v.png" "${size[@]}" --stats-json "$v.json"
+done
+python3 - a.json marble.json bumpy.json <<'PY' || FAILS=$((FAILS + 1))
+import json, sys
+none, *patterned = [json.load(open(p))["features"] for p in sys.argv[1:]]
+assert "pattern" in none["left_out"] and "pattern" not in none["used"], none
+for path, f in zip(sys.argv[2:], patterned):
+    assert "pattern" in f["used"] and "pattern" not in f["left_out"], (path, f)
+PY
 finish
