@@ -9,6 +9,7 @@
 #include "eval_helpers.hpp"
 #include "render/geometry/function/compiled_function.hpp"
 #include "render/geometry/function/noise.hpp"
+#include "render/shade/pattern/patterns.hpp"
 
 using namespace rts;
 using rts::test::eval_diagnostic;
@@ -62,6 +63,55 @@ TEST_CASE("pattern blocks build pattern textures with POV-Ray's defaults", "[pat
   REQUIRE(s.textures[2].pattern.color_map.size() == 2);
   CHECK(s.textures[2].pattern.color_map[1].color == glm::dvec3(1.0));
   CHECK(s.materials[1].bump == 2);
+}
+
+TEST_CASE("omega and lambda reach the pattern: marble's and wood's turbulence as the noise functions predict",
+          "[patterns]") {
+  // Marble adds POV-Ray's scalar turbulence T(p) = noise01(p) + sum_{i>=1} omega^i noise01(lambda^i p)
+  // to x; wood takes the vector warp p + turbulence * vector_turbulence(p, octaves, lambda, omega)
+  // first. Each block's omega and lambda must reach both, from the language to the value.
+  namespace pat = render::pattern;
+  auto pattern_of = [](const std::string& block) {
+    const render::SceneDesc s = eval_text("plane { normal = <0, 1, 0>  material = material { texture = " + block + " } }");
+    REQUIRE(s.textures.size() == 1);
+    return s.textures[0].pattern;
+  };
+  auto pov_turbulence = [](const glm::dvec3& p, int octaves, double lambda, double omega) {
+    double v = pat::noise01(p), l = lambda, o = omega;
+    for (int i = 2; i <= octaves; ++i, l *= lambda, o *= omega) v += o * pat::noise01(p * l);
+    return v;
+  };
+  const glm::dvec3 points[] = {{0.3, 0.2, 0.1}, {-1.7, 2.25, 0.8}, {4.1, -0.35, 2.2}, {0.05, 0.9, -3.3}, {2.6, 1.3, 7.7}};
+  struct Params { double omega, lambda; };
+  for (const Params& k : {Params{0.5, 2.0}, Params{0.8, 2.0}, Params{0.5, 3.1}, Params{0.3, 1.7}}) {
+    const std::string props = fmt::format("octaves = 4  omega = {}  lambda = {}", k.omega, k.lambda);
+    INFO(props);
+    const render::PatternDesc marble = pattern_of("marble { turbulence = 0.7  " + props + " }");
+    const render::PatternDesc wood = pattern_of("wood { turbulence = <0.4, 0.3, 0.2>  " + props + " }");
+    CHECK(marble.omega == k.omega);
+    CHECK(marble.lambda == k.lambda);
+    for (const glm::dvec3& p : points) {
+      INFO("p = " << p.x << ", " << p.y << ", " << p.z);
+      CHECK(pat::raw_value(marble, p) == Approx(p.x + 0.7 * pov_turbulence(p, 4, k.lambda, k.omega)).epsilon(1e-13));
+      const glm::dvec3 q = p + glm::dvec3(0.4, 0.3, 0.2) * pat::vector_turbulence(p, 4, k.lambda, k.omega);
+      CHECK(pat::raw_value(wood, p) == Approx(std::sqrt(q.x * q.x + q.y * q.y)).epsilon(1e-13));
+    }
+  }
+  // And the change is not lost in the noise: each parameter moves both patterns' values.
+  const render::PatternDesc m0 = pattern_of("marble { turbulence = 0.7 }");
+  const render::PatternDesc m_omega = pattern_of("marble { turbulence = 0.7  omega = 0.8 }");
+  const render::PatternDesc m_lambda = pattern_of("marble { turbulence = 0.7  lambda = 3.1 }");
+  const render::PatternDesc w0 = pattern_of("wood { turbulence = 0.5 }");
+  const render::PatternDesc w_omega = pattern_of("wood { turbulence = 0.5  omega = 0.8 }");
+  const render::PatternDesc w_lambda = pattern_of("wood { turbulence = 0.5  lambda = 3.1 }");
+  double moved[4] = {0, 0, 0, 0};
+  for (const glm::dvec3& p : points) {
+    moved[0] += std::fabs(pat::raw_value(m_omega, p) - pat::raw_value(m0, p));
+    moved[1] += std::fabs(pat::raw_value(m_lambda, p) - pat::raw_value(m0, p));
+    moved[2] += std::fabs(pat::raw_value(w_omega, p) - pat::raw_value(w0, p));
+    moved[3] += std::fabs(pat::raw_value(w_lambda, p) - pat::raw_value(w0, p));
+  }
+  for (double m : moved) CHECK(m / 5 > 0.01);
 }
 
 TEST_CASE("pattern block errors are located and say what to do", "[patterns]") {
