@@ -90,6 +90,43 @@ TEST_CASE("gradient noise is zero on the lattice and has mean zero", "[noise]") 
   CHECK(sd > 0.1);   // not flat
 }
 
+TEST_CASE("noise repeats every 256 units along each axis, exactly", "[noise]") {
+  // The lattice hashes floor(p) modulo 256 (noise.cpp's lattice()), so gradient noise, the
+  // vector noise and their octave sums at lambda 2 (each octave's shift a multiple of 256 too)
+  // repeat with period 256 on every axis: bit for bit when p + 256 is exact, as here (points
+  // on a 2^-32 grid in [-300, 300]^3). cells and worley hash the whole cell index and do not.
+  Points pts;
+  auto grid = [](double v) { return std::round(v * 0x1.0p32) * 0x1.0p-32; };
+  auto same = [](const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  int moved_by_128 = 0;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 r = pts.next(300.0);
+    const Vec3 p(grid(r.x), grid(r.y), grid(r.z));
+    for (int axis = 0; axis < 3; ++axis) {
+      Vec3 shift(0.0);
+      shift[axis] = 256.0;
+      const Vec3 q = p + shift;
+      REQUIRE(q - shift == p);   // the shift is exact
+      INFO("p = " << p.x << ", " << p.y << ", " << p.z << ", axis " << axis);
+      REQUIRE(pat::gradient_noise(q) == pat::gradient_noise(p));
+      REQUIRE(pat::gradient_noise(p - shift) == pat::gradient_noise(p));
+      REQUIRE(pat::noise01(q) == pat::noise01(p));
+      REQUIRE(same(pat::vector_noise(q), pat::vector_noise(p)));
+      if (i % 10 == 0) {
+        REQUIRE(pat::fbm(q, 6, 2.0, 0.5) == pat::fbm(p, 6, 2.0, 0.5));
+        REQUIRE(pat::turbulence(q, 6, 2.0, 0.5) == pat::turbulence(p, 6, 2.0, 0.5));
+        REQUIRE(same(pat::vector_turbulence(q, 6, 2.0, 0.5), pat::vector_turbulence(p, 6, 2.0, 0.5)));
+      }
+      Vec3 half(0.0);
+      half[axis] = 128.0;
+      if (pat::gradient_noise(p + half) != pat::gradient_noise(p)) ++moved_by_128;
+    }
+  }
+  // 256 is the period, not a multiple of a shorter one: half of it moves nearly every value.
+  CHECK(moved_by_128 > 3 * n * 99 / 100);
+}
+
 TEST_CASE("noise is continuous and its gradient stays under the documented bound", "[noise]") {
   Points pts;
   constexpr double h = 1e-5;
