@@ -281,6 +281,63 @@ TEST_CASE("patterns mean what POV-Ray's mean", "[patterns]") {
   }
 }
 
+TEST_CASE("gradient with a color map: the ramped coordinate along its axis, warped by turbulence", "[patterns]") {
+  // POV-Ray's `gradient y color_map { ... } turbulence t`: the value is the point's y (ramp wave:
+  // it repeats every unit), after the warp p + t * vector_turbulence(p); the color map turns it
+  // into a color. Checked through the compiled texture, as a surface evaluates it.
+  const glm::dvec3 red(1, 0, 0), green(0, 1, 0), blue(0, 0, 1);
+  TextureDesc t;
+  t.kind = TextureKind::Pattern;
+  t.pattern.kind = PatternKind::Gradient;
+  t.pattern.wave = WaveKind::Ramp;   // the builder's default for gradient
+  t.pattern.color_map = {{0.0, red}, {0.5, green}, {1.0, blue}};
+  auto color_at = [&](const Vec3& q) {
+    const CompiledTexture tex(t, nullptr);
+    TexturePoint p;
+    p.object_point = q;
+    const Color c = tex.eval(p);
+    return glm::dvec3(c.r, c.g, c.b);
+  };
+  auto near = [](const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b) < 1e-9; };
+  for (int axis = 0; axis < 3; ++axis) {
+    INFO("axis " << axis);
+    t.pattern.axis = axis;
+    t.pattern.turbulence = Vec3(0.0);
+    auto along = [&](double v, const Vec3& other) {
+      Vec3 q = other;
+      q[axis] = v;
+      return q;
+    };
+    // Only the axis' coordinate counts; the ramp repeats it every unit (negative values too).
+    CHECK(near(color_at(along(0.0, Vec3(3, -7, 2))), red));
+    CHECK(near(color_at(along(0.25, Vec3(3, -7, 2))), 0.5 * (red + green)));
+    CHECK(near(color_at(along(0.25, Vec3(-40, 5, 0.5))), 0.5 * (red + green)));
+    CHECK(near(color_at(along(0.5, Vec3(1, 1, 1))), green));
+    CHECK(near(color_at(along(2.75, Vec3(1, 2, 3))), 0.5 * (green + blue)));
+    CHECK(near(color_at(along(-0.25, Vec3(1, 2, 3))), 0.5 * (green + blue)));
+    CHECK(near(color_at(along(0.9, Vec3(0, 0, 0))), 0.2 * green + 0.8 * blue));
+
+    // Turbulence: the same lookup at the warped point's coordinate, and the bands now wander
+    // across the other axes (without it the color is constant there).
+    const Vec3 turb(0.3, 0.4, 0.5);
+    t.pattern.turbulence = turb;
+    t.pattern.octaves = 4;
+    Points pts;
+    double wander = 0.0;
+    const int n = 500;
+    for (int i = 0; i < n; ++i) {
+      const Vec3 q = pts.next(3.0);
+      const Vec3 w = q + turb * pat::vector_turbulence(q, 4, 2.0, 0.5);
+      const double v = w[axis] - std::floor(w[axis]);
+      REQUIRE(near(color_at(q), pat::color_map_lookup(t.pattern.color_map, v)));
+      Vec3 q2 = q + Vec3(0.7, 0.7, 0.7);
+      q2[axis] = q[axis];   // the same coordinate along the axis: the same color without turbulence
+      wander += glm::length(color_at(q2) - color_at(q));
+    }
+    CHECK(wander / n > 0.1);
+  }
+}
+
 TEST_CASE("ripples and waves as colors wrap as POV-Ray's do; as heights they stay smooth", "[patterns]") {
   // POV-Ray applies frequency and phase inside ripples and waves (rings per unit) and again to
   // the color map's index, so at frequency 2 the color jumps where the value crosses 0.5: its

@@ -1,6 +1,7 @@
 // Pattern textures and noise in the language: the noise builtins, pattern blocks and their
 // errors, and user functions compiled once (runtime/function_compiler.cpp) agreeing exactly
 // with the interpreter.
+#include <cmath>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -112,6 +113,25 @@ TEST_CASE("omega and lambda reach the pattern: marble's and wood's turbulence as
     moved[3] += std::fabs(pat::raw_value(w_lambda, p) - pat::raw_value(w0, p));
   }
   for (double m : moved) CHECK(m / 5 > 0.01);
+}
+
+TEST_CASE("a gradient block with a color_map is the gradient pattern, with its axis, turbulence and wave",
+          "[patterns]") {
+  const render::SceneDesc s = eval_text(
+      "plane { normal = <0, 1, 0>  material = material { texture = gradient { axis = \"z\"  turbulence = 0.3  octaves = 3  "
+      "color_map = [[0, rgb(1, 0, 0)], [1, rgb(0, 0, 1)]] } } }");
+  REQUIRE(s.textures.size() == 1);
+  const render::PatternDesc& d = s.textures[0].pattern;
+  CHECK(s.textures[0].kind == render::TextureKind::Pattern);
+  CHECK(d.kind == render::PatternKind::Gradient);
+  CHECK(d.axis == 2);
+  CHECK(d.turbulence == glm::dvec3(0.3));
+  CHECK(d.octaves == 3);
+  CHECK(d.wave == render::WaveKind::Ramp);
+  // Its value: the warped point's z, ramped (render test "gradient with a color map: ...").
+  const glm::dvec3 p(0.4, -1.2, 2.35);
+  const glm::dvec3 w = p + 0.3 * render::pattern::vector_turbulence(p, 3, 2.0, 0.5);
+  CHECK(render::pattern::wave(d, render::pattern::raw_value(d, p)) == Approx(w.z - std::floor(w.z)).margin(1e-12));
 }
 
 TEST_CASE("pattern block errors are located and say what to do", "[patterns]") {
