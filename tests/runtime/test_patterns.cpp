@@ -1,6 +1,7 @@
 // Pattern textures and noise in the language: the noise builtins, pattern blocks and their
 // errors, and user functions compiled once (runtime/function_compiler.cpp) agreeing exactly
 // with the interpreter.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -11,6 +12,8 @@
 #include "render/geometry/function/compiled_function.hpp"
 #include "render/geometry/function/noise.hpp"
 #include "render/shade/pattern/patterns.hpp"
+#include "render/geometry/shapes/height_field.hpp"
+#include "render/geometry/shapes/isosurface.hpp"
 
 using namespace rts;
 using rts::test::eval_diagnostic;
@@ -132,6 +135,93 @@ TEST_CASE("a gradient block with a color_map is the gradient pattern, with its a
   const glm::dvec3 p(0.4, -1.2, 2.35);
   const glm::dvec3 w = p + 0.3 * render::pattern::vector_turbulence(p, 3, 2.0, 0.5);
   CHECK(render::pattern::wave(d, render::pattern::raw_value(d, p)) == Approx(w.z - std::floor(w.z)).margin(1e-12));
+}
+
+TEST_CASE("noise in a height_field function: the grid holds the language's noise, and rays meet it there",
+          "[patterns][height_field]") {
+  // h(p) = noise(4 p + <0.3, 0, 0.7>) stays in [0, 1], so the height field stores it unclamped
+  // (as a float) at x = ix / (nx - 1), z = iz / (nz - 1); a ray straight down at a grid point
+  // lands on that height.
+  const std::string prelude = "macro terrain(p) { return noise(p * 4 + <0.3, 0, 0.7>) }\n";
+  const render::SceneDesc s = eval_text(prelude + "height_field { function = terrain  resolution = [9, 7] }\n");
+  const render::HeightField* f = nullptr;
+  for (const render::ShapeDesc& d : s.shapes)
+    if (const auto* g = std::get_if<render::HeightField>(&d.geometry)) f = g;
+  REQUIRE(f != nullptr);
+  REQUIRE(f->data->nx == 9);
+  REQUIRE(f->data->nz == 7);
+  double spread_lo = 1, spread_hi = 0;
+  for (int iz = 0; iz < 7; ++iz)
+    for (int ix = 0; ix < 9; ++ix) {
+      const double x = ix / 8.0, z = iz / 6.0;
+      const double h = f->data->height[iz * 9 + ix];
+      INFO("grid point " << ix << ", " << iz);
+      CHECK(h == Approx(render::pattern::noise01(glm::dvec3(x, 0, z) * 4.0 + glm::dvec3(0.3, 0, 0.7))).margin(1e-6));
+      spread_lo = std::min(spread_lo, h);
+      spread_hi = std::max(spread_hi, h);
+      if ((ix + iz) % 4 == 0) {
+        // The language's own noise() at that point (read back exactly), and the traced surface.
+        const double lang = value_of(prelude, fmt::format("terrain(<{:.17g}, 0, {:.17g}>)", x, z));
+        CHECK(h == Approx(lang).margin(1e-6));
+        render::SurfaceHit hit;
+        // Just inside the square's edges, so the ray stays in the column.
+        const double rx = std::clamp(x, 1e-9, 1 - 1e-9), rz = std::clamp(z, 1e-9, 1 - 1e-9);
+        REQUIRE(intersect(*f, render::Ray{render::Vec3(rx, 5, rz), render::Vec3(0, -1, 0)}, render::Interval::positive(), hit));
+        CHECK(hit.point.y == Approx(lang).margin(1e-5));
+      }
+    }
+  // Noise, not a constant: the grid spans a good part of [0, 1].
+  CHECK(spread_hi - spread_lo > 0.2);
+}
+
+TEST_CASE("noise in an isosurface function: rays stop where f crosses the threshold, not before", "[patterns]") {
+  // f(p) = |p| - 1 + 0.3 noise(3 p): a lumpy ball. |grad f| <= 1 + 0.3 * 3 * 0.5 * kNoiseGradientBound
+  // = 2.8, so max_gradient 3 is safe. Each probe ray from outside must stop where f = threshold
+  // (|f| <= max_gradient * accuracy) and f must stay above the threshold on the way in.
+  namespace pat = render::pattern;
+  const render::SceneDesc s = eval_text(
+      "macro lumpy(p) { return length(p) - 1 + 0.3 * noise(p * 3) }\n"
+      "isosurface { function = lumpy  threshold = 0  max_gradient = 3  accuracy = 1e-6\n"
+      "             contained_by = sphere { center = <0, 0, 0>  radius = 2 } }\n");
+  const render::Isosurface* iso = nullptr;
+  for (const render::ShapeDesc& d : s.shapes)
+    if (const auto* g = std::get_if<render::Isosurface>(&d.geometry)) iso = g;
+  REQUIRE(iso != nullptr);
+  auto f = [](const glm::dvec3& p) { return glm::length(p) - 1 + 0.3 * pat::noise01(p * 3.0); };
+  double r_lo = 10, r_hi = 0;
+  const int n = 40;
+  for (int i = 0; i < n; ++i) {
+    // Directions spread over the sphere (a golden-angle spiral), rays from radius 5 inwards,
+    // offset a little so they do not all pass through the origin.
+    const double y = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - y * y), phi = 2.399963229728653 * i;
+    const glm::dvec3 dir(r * std::cos(phi), y, r * std::sin(phi));
+    const glm::dvec3 origin = dir * 5.0 + glm::dvec3(0.05, -0.03, 0.02);
+    const render::Ray ray{origin, -dir};
+    render::SurfaceHit hit;
+    INFO("ray " << i);
+    REQUIRE(intersect(*iso, ray, render::Interval::positive(), hit));
+    CHECK(std::fabs(f(hit.point)) < 3 * 1e-6 * 2);
+    for (int k = 1; k < 400; ++k) {   // outside all the way from the container to the hit
+      const double t = 3.0 + (hit.t - 3.0) * k / 400.0;
+      REQUIRE(f(origin - dir * t) > 0.0);
+    }
+    r_lo = std::min(r_lo, glm::length(hit.point));
+    r_hi = std::max(r_hi, glm::length(hit.point));
+  }
+  // The noise shapes it: radii between 0.7 and 1, not one sphere's.
+  CHECK(r_lo >= 0.7 - 1e-6);
+  CHECK(r_hi <= 1.0 + 1e-6);
+  CHECK(r_hi - r_lo > 0.05);
+}
+
+TEST_CASE("noise in a placement loop places each copy at its noise value", "[patterns]") {
+  const render::SceneDesc s = eval_text("for i in 0 .. 6 { sphere { center = <i, noise(<i * 0.37, 0.5, 0>), 0>  radius = 0.1 } }\n");
+  REQUIRE(s.shapes.size() == 6);
+  for (int i = 0; i < 6; ++i) {
+    const auto* sp = std::get_if<render::Sphere>(&s.shapes[i].geometry);
+    REQUIRE(sp != nullptr);
+    CHECK(sp->center.y == render::pattern::noise01(glm::dvec3(i * 0.37, 0.5, 0)));
+  }
 }
 
 TEST_CASE("pattern block errors are located and say what to do", "[patterns]") {
