@@ -25,7 +25,6 @@ constexpr Hint kHints[] = {
     {"local", "'let'"},
     {"smooth_triangle", "'triangle { ... n0 = ... n1 = ... n2 = ... }'"},
     {"mesh2", "'mesh { vertices = [...] faces = [...] }'"},
-    {"prism", "not yet available"},
 };
 
 }  // namespace

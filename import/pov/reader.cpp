@@ -16,7 +16,7 @@ constexpr int kMaxNesting = 200;
 // Blocks whose contents are POV-Ray's function or spline syntax: skipped as a whole (the
 // writer warns), never read as items.
 bool is_raw_block(const std::string& kind) {
-  static const std::set<std::string> raw = {"function", "spline", "prism", "height_field",
+  static const std::set<std::string> raw = {"function", "spline", "height_field",
                                             "isosurface", "text", "sphere_sweep", "polygon", "bicubic_patch",
                                             "julia_fractal", "parametric", "quadric", "poly", "cubic", "quartic",
                                             "ovus", "lemon", "mesh2", "polynomial"};

@@ -25,13 +25,13 @@ bool MaterialProps::has(const std::string& name) const {
 
 bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
-                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "sor", "lathe", "union",
+                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "sor", "lathe", "prism", "union",
                                               "intersection", "difference", "merge", "object"};
   return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
 }
 
 bool Translator::is_unsupported_shape(const std::string& k) {
-  static const std::set<std::string> kinds = {"prism", "height_field", "isosurface", "text",
+  static const std::set<std::string> kinds = {"height_field", "isosurface", "text",
                                               "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
                                               "parametric", "quadric", "poly", "cubic", "quartic", "ovus", "lemon",
                                               "mesh2", "polynomial"};
@@ -46,7 +46,7 @@ constexpr std::size_t kMaxTransformSteps = 10000;
 
 // The closest rts alternative for an unsupported shape, and whether it is planned.
 std::pair<std::string, bool> shape_alternative(const std::string& k) {
-  if (k == "prism" || k == "height_field" || k == "isosurface")
+  if (k == "height_field" || k == "isosurface")
     return {"a mesh from an OBJ file (issue 20 plans the shape)", true};
   if (k == "text" || k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
   if (k == "mesh2") return {"mesh { vertices = [...]  faces = [...] }", true};
@@ -55,7 +55,7 @@ std::pair<std::string, bool> shape_alternative(const std::string& k) {
 
 bool closed_kind(const std::string& k) {
   return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
-         k == "superellipsoid" || k == "sor" || k == "lathe" || k == "blob" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
+         k == "superellipsoid" || k == "sor" || k == "lathe" || k == "prism" || k == "blob" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
 }
 
 bool is_texture_part(const std::string& k) {
@@ -602,6 +602,18 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     w.line(fmt::format("{}group {{ }}  // POV-Ray's {} is not translated (rts import warned)", prefix, k));
     return;
   }
+  if (k == "prism") {
+    // Only POV-Ray's linear_spline and linear_sweep (its defaults) have an rts prism so far.
+    for (const Item& it : b.items)
+      if (it.kind == Item::Keyword && (it.name == "quadratic_spline" || it.name == "cubic_spline" ||
+                                       it.name == "bezier_spline" || it.name == "conic_sweep")) {
+        unsupported(it.loc, it.name, "a prism with straight edges swept straight (linear_spline, linear_sweep), or a "
+                    "mesh from an OBJ file", true);
+        w.line(fmt::format("{}group {{ }}  // POV-Ray's prism with {} is not translated (rts import warned)", prefix,
+                           it.name));
+        return;
+      }
+  }
   if (k == "lathe") {
     // Only POV-Ray's linear_spline (its default) has an rts lathe so far.
     for (const Item& it : b.items)
@@ -641,11 +653,11 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     items_of = &blob_rest;
   }
   Block lathe_rest;  // `linear_spline N, <a>, ...` reads as a keyword with the values as its arguments
-  if (k == "lathe") {
+  if (k == "lathe" || k == "prism") {
     lathe_rest = b;
     lathe_rest.items.clear();
     for (const Item& it : b.items) {
-      if (it.kind == Item::Keyword && it.name == "linear_spline" && !it.args.empty()) {
+      if (it.kind == Item::Keyword && (it.name == "linear_spline" || it.name == "linear_sweep") && !it.args.empty()) {
         for (const ExprPtr& a : it.args) {
           Item value;
           value.kind = Item::Value;
@@ -700,11 +712,13 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         if (!t.empty()) {
           xforms.insert(xforms.end(), t.begin(), t.end());
         } else if (it.name == "open") {
-          props.push_back(k == "sor" ? "open = true" : "capped = false");
+          props.push_back(k == "sor" || k == "prism" ? "open = true" : "capped = false");
         } else if (it.name == "inverse") {
           props.push_back("inverse = true");
-        } else if (k == "lathe" && it.name == "linear_spline") {
-          // rts's lathe is made of straight segments
+        } else if ((k == "lathe" || k == "prism") && it.name == "linear_spline") {
+          // rts's lathe and prism are made of straight segments
+        } else if (k == "prism" && it.name == "linear_sweep") {
+          // rts's prism is swept straight
         } else if (it.name == "hollow" || it.name == "sturm" || it.name == "smooth" || it.name == "double_illuminate" ||
                    it.name == "no_reflection" || it.name == "no_radiosity" || it.name == "cutaway_textures" ||
                    it.name == "split_union") {
@@ -799,6 +813,23 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
       }
     }
     props.insert(props.begin(), "points = [" + pts + "]");
+  } else if (k == "prism") {
+    need(6, "two heights, a count and at least three points: prism { 0, 1, 3, <x0, z0>, <x1, z1>, <x2, z2> }");
+    double count;
+    if (literal_number(*v(2), count) && count != static_cast<double>(values.size() - 3))
+      error(values[2]->loc, fmt::format("prism says {} points but lists {}", num(count), values.size() - 3));
+    std::string pts;
+    for (std::size_t i = 3; i < values.size(); ++i) {
+      std::vector<double> q;
+      pts += i > 3 ? ", " : "";
+      if (literal_vector(*v(i), q) && q.size() >= 2) {
+        pts += fmt::format("[{}, {}]", num(q[0]), num(q[1]));
+      } else {
+        std::string p = value(*v(i));
+        pts += fmt::format("[{}.x, {}.y]", p, p);
+      }
+    }
+    props.insert(props.begin(), {"points = [" + pts + "]", "height1 = " + value(*v(0)), "height2 = " + value(*v(1))});
   } else if (k == "mesh") {
     kind = "group";
     comments.push_back("POV-Ray's mesh: its triangles in a group");
@@ -816,7 +847,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
               if (!s || !closed_kind(s->object_kind)) closed = false;
               break;
             }
-        } else if (!closed_kind(ck) || (ck == "cylinder" || ck == "cone" || ck == "sor" || ck == "lathe")) {
+        } else if (!closed_kind(ck) || (ck == "cylinder" || ck == "cone" || ck == "sor" || ck == "lathe" || ck == "prism")) {
           // open cylinders/cones are open shapes too
           if (!closed_kind(ck)) closed = false;
           for (const Item& r : c->block->items)

@@ -37,6 +37,10 @@ inline constexpr double kHeightFieldCellMargin = 1e-9;
 // cells: its point carries this relative rounding per cell of the grid (generous: 64 ulp).
 inline constexpr double kHeightFieldRootRelative = 1.4e-14;
 
+// Two prism points are the same (one closes its sub-polygon) when both coordinates differ by
+// less than this: POV-Ray's EPSILON for the same test, so its point lists split alike.
+inline constexpr double kPrismSamePoint = 1e-10;
+
 // A ray parallel to a plane/disc/cap within this cosine is treated as missing it.
 inline constexpr double kParallelCosine = 1e-14;
 

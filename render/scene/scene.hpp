@@ -213,8 +213,23 @@ struct Lathe {
   double orientation = 1.0;          // +1: the profile (closed along the axis) runs counter-clockwise
 };
 
+// POV-Ray's prism with linear_spline and linear_sweep: polygons in the x-z plane (several,
+// even-odd) extruded along y (render/geometry/shapes/prism.hpp traces it).
+inline constexpr int kMaxPrismPoints = 4096;
+struct PrismEdge {
+  double x0, z0, x1, z1;
+  double outward;                    // +1 when (dz, -dx) points out of the polygon, else -1
+};
+struct Prism {
+  std::vector<Vec3> points;          // <x, z, 0> as given
+  std::vector<PrismEdge> edges;      // the closed sub-polygons' edges (the last one closed if it was not)
+  double height1 = 0.0, height2 = 1.0;
+  double y_min = 0.0, y_max = 1.0, x_min = 0.0, x_max = 0.0, z_min = 0.0, z_max = 0.0;
+  bool open = false;                 // no caps at the two heights
+};
+
 using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,
-                                   Isosurface, Blob, HeightField, Sor, Lathe>;
+                                   Isosurface, Blob, HeightField, Sor, Lathe, Prism>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;

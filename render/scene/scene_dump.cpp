@@ -114,6 +114,11 @@ std::string shape_text(const ShapeDesc& s) {
       for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
       return out;
     }
+    std::string operator()(const Prism& g) {
+      std::string out = fmt::format("prism height1 {} height2 {} points", num(g.height1), num(g.height2));
+      for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
+      return out + (g.open ? " open true" : "");
+    }
     std::string operator()(const HeightField& g) {
       if (!g.data) return "height_field empty";
       return fmt::format("height_field {}x{} heights {}..{} smooth {} water_level {}", g.data->nx, g.data->nz,

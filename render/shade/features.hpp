@@ -19,7 +19,7 @@ namespace rts::render {
 enum class Feature : uint8_t {
   // primitive kinds, in ShapeGeometry's order (a shape's feature is its variant index; its
   // name is its block kind's): checked below
-  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad, Torus, Superellipsoid, Isosurface, Blob, HeightField, Sor, Lathe,
+  Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad, Torus, Superellipsoid, Isosurface, Blob, HeightField, Sor, Lathe, Prism,
   // material channels
   Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Pattern, Emission, Specular, Ambient,
   // lights
@@ -58,7 +58,8 @@ static_assert(Feature::Sphere == shape_feature(shape_index<Sphere>()) &&
                   Feature::Blob == shape_feature(shape_index<Blob>()) &&
                   Feature::HeightField == shape_feature(shape_index<HeightField>()) &&
                   Feature::Sor == shape_feature(shape_index<Sor>()) &&
-                  Feature::Lathe == shape_feature(shape_index<Lathe>()),
+                  Feature::Lathe == shape_feature(shape_index<Lathe>()) &&
+                  Feature::Prism == shape_feature(shape_index<Prism>()),
               "the shape Features follow ShapeGeometry's order");
 
 // "sphere", "reflection", "area_light"... (the names --stats and the JSON report use).

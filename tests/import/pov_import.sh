@@ -55,14 +55,18 @@ expect_grep "$TMP/err" "^bad_syntax.pov:3:34: error: expected '}' to close the '
 expect_grep "$TMP/err" "^ +\^" "caret line"
 expect_exit 1 "render: the same error" -- "$RTS" render bad_syntax.pov -o "$TMP/bad.png"
 expect_grep "$TMP/err" "^bad_syntax.pov:3:34: error:" "located error"
+expect_exit 0 "a prism's conic_sweep and cubic_spline are warnings" -- "$RTS" import prism_splines.pov
+expect_grep "$TMP/err" "^prism_splines.pov:3:9: warning: POV-Ray's 'conic_sweep' is not translated" "located at the sweep"
+expect_grep "$TMP/err" "^prism_splines.pov:4:22: warning: POV-Ray's 'cubic_spline' is not translated" "located at the spline"
+expect_grep "$TMP/out" "^prism \\{" "the linear prism is translated"
 expect_exit 0 "an unsupported shape is a warning" -- "$RTS" import unsupported.pov
-expect_grep "$TMP/err" "^unsupported.pov:4:1: warning: POV-Ray's 'prism' is not translated; closest in rts: a mesh" "located warning with the alternative"
+expect_grep "$TMP/err" "^unsupported.pov:4:1: warning: POV-Ray's 'sphere_sweep' is not translated; closest in rts: a mesh" "located warning with the alternative"
 expect_grep "$TMP/err" "\(planned\)" "says whether it is planned"
 expect_grep "$TMP/out" "sphere \{" "the rest is translated"
 expect_exit 0 "render: the rest renders" -- "$RTS" render unsupported.pov -o "$TMP/rest.png" --width 16 --height 12
 expect_grep "$TMP/err" "^unsupported.pov:4:1: warning:" "render prints the warning"
 expect_exit 1 "--strict makes it an error" -- "$RTS" import --strict unsupported.pov
-expect_grep "$TMP/err" "^unsupported.pov:4:1: error: POV-Ray's 'prism'" "located error"
+expect_grep "$TMP/err" "^unsupported.pov:4:1: error: POV-Ray's 'sphere_sweep'" "located error"
 expect_exit 1 "render --strict" -- "$RTS" render --strict unsupported.pov -o "$TMP/strict.png"
 
 # Recognised by content under another name, and with --format pov.

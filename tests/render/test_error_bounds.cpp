@@ -109,6 +109,15 @@ T sample(SceneDesc& s) {
                 Vec3(0.8, 1, 0),     Vec3(0.7, 0.8, 0), Vec3(0, -0.5, 0)};
     lathe_setup(g);
     return g;
+  } else if constexpr (std::is_same_v<T, Prism>) {
+    // Two sub-polygons: a concave outline with a square hole (even-odd), closed by caps.
+    Prism g;
+    g.points = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(0, 0.3, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0),
+                Vec3(-0.4, -0.6, 0), Vec3(0.4, -0.6, 0), Vec3(0.4, -0.2, 0), Vec3(-0.4, -0.2, 0), Vec3(-0.4, -0.6, 0)};
+    g.height1 = -0.5;
+    g.height2 = 0.8;
+    prism_setup(g);
+    return g;
   } else {
     static_assert(kNoSample<T>, "a new shape kind needs a sample in test_error_bounds.cpp");
   }

@@ -6,6 +6,7 @@
 #include "render/geometry/shapes/blob.hpp"
 #include "render/geometry/shapes/isosurface.hpp"
 #include "render/geometry/shapes/lathe.hpp"
+#include "render/geometry/shapes/prism.hpp"
 #include "render/geometry/shapes/sor.hpp"
 
 using namespace rts;
@@ -227,4 +228,49 @@ TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad poi
   CHECK(d.loc.line == 2);
   d = eval_diagnostic("difference { lathe { points = [[1, 0], [1, 1]] } sphere { radius = 1 } }");
   CHECK(d.message.find("lathe cannot be part of 'difference'") != std::string::npos);
+}
+
+TEST_CASE("a prism from the language: sub-polygons, open, and bad points, heights and splines are located errors",
+          "[shapes]") {
+  render::SceneDesc s = eval_text(
+      "prism { points = [[-2, -2], [2, -2], [2, 2], [-2, 2], [-2, -2], [-1, -1], [1, -1], [1, 1], [-1, 1]]\n"
+      "        height1 = 1  height2 = -1 }\n");
+  const render::Prism* g = nullptr;
+  for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Prism>(&d.geometry);
+  REQUIRE(g);
+  CHECK(!g->open);
+  CHECK(g->edges.size() == 8);  // the hole closed by its missing last edge
+  CHECK(g->y_min == -1.0);
+  render::SurfaceHit h;
+  REQUIRE(intersect(*g, render::Ray{render::Vec3(-5, 0, 0.5), render::Vec3(1, 0, 0)}, render::Interval::positive(), h));
+  CHECK(h.t == 3.0);
+  CHECK(h.normal == render::Vec3(-1, 0, 0));
+  REQUIRE(intersect(*g, render::Ray{render::Vec3(0, 0, 0.5), render::Vec3(1, 0, 0)}, render::Interval::positive(), h));
+  CHECK(h.t == 1.0);  // from inside the hole, into the frame
+  CHECK(h.normal == render::Vec3(-1, 0, 0));
+  eval_text("difference { prism { points = [[0, 0], [1, 0], [0, 1]] } sphere { radius = 0.5 } }\n");
+  s = eval_text("prism { points = [[0, 0], [1, 0], [0, 1]]  open = true  sweep = \"linear\"  spline = \"linear\" }\n");
+  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry).open);
+
+  Diagnostic d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0]] }");
+  CHECK(d.message == "prism needs at least 3 points, got 2");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
+  d = eval_diagnostic("prism { points = [[0, 0], [1, 0, 2], [0, 1]] }");
+  CHECK(d.message == "prism point 2 must be a pair [x, z]");
+  d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  height1 = 2  height2 = 2 }");
+  CHECK(d.message == "prism height1 and height2 must differ (both are 2)");
+  CHECK(d.loc.line == 3);
+  CHECK(d.loc.col == 16);
+  d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  spline = \"bezier\" }");
+  CHECK(d.message.find("prism spline \"bezier\" is not supported: only \"linear\"") == 0);
+  CHECK(d.loc.line == 3);
+  CHECK(d.loc.col == 3);
+  d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  sweep = \"conic\" }");
+  CHECK(d.message == "prism sweep \"conic\" (POV-Ray's conic_sweep) is not supported yet; only \"linear\" is");
+  CHECK(d.loc.line == 3);
+  d = eval_diagnostic("prism { height1 = 0 }");
+  CHECK(d.message == "prism needs property 'points'");
+  d = eval_diagnostic("difference { prism { points = [[0, 0], [1, 0], [0, 1]]  open = true } sphere { radius = 1 } }");
+  CHECK(d.message.find("an uncapped prism cannot be part of 'difference'") != std::string::npos);
 }

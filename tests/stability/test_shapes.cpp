@@ -2,6 +2,8 @@
 // threads, has no speckles (pixels unlike all four agreeing neighbours), no NaN and no black
 // pixels; the same view a million units from the origin differs in at most 1% of pixels;
 // a shape cut flush by a CSG box (coincident surfaces) does not speckle.
+#include <cmath>
+
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
@@ -9,6 +11,7 @@
 #include "render/geometry/shapes/isosurface.hpp"
 #include "render/geometry/shapes/sor.hpp"
 #include "render/geometry/shapes/lathe.hpp"
+#include "render/geometry/shapes/prism.hpp"
 #include "render/geometry/function/compiled_function.hpp"
 #include "stability_support.hpp"
 
@@ -93,6 +96,24 @@ Lathe cup() {
               Vec3(0.9, 0.55, 0), Vec3(0, -0.35, 0)};
   lathe_setup(l);
   return l;
+}
+
+// A five-pointed star with a pentagonal hole (two sub-polygons, even-odd), closed by its caps.
+Prism star() {
+  Prism p;
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i <= 10; ++i) {
+    double a = 2 * pi * (i % 10) / 10.0 + pi / 2, r = i % 2 == 0 ? 1.2 : 0.5;
+    p.points.emplace_back(r * std::cos(a), r * std::sin(a), 0.0);
+  }
+  for (int i = 0; i <= 5; ++i) {
+    double a = 2 * pi * (i % 5) / 5.0 + pi / 2;
+    p.points.emplace_back(0.25 * std::cos(a), 0.25 * std::sin(a), 0.0);
+  }
+  p.height1 = -0.4;
+  p.height2 = 0.3;
+  prism_setup(p);
+  return p;
 }
 
 void check_stable(const SceneDesc& s, const std::string& name, const std::string& file) {
@@ -212,4 +233,32 @@ TEST_CASE("a lathe cup near the origin and a million units away, and cut flush a
   s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
   place(s, static_cast<NodeId>(s.nodes.size() - 1));
   check_stable(s, "lathe minus a box sharing its rim's height", "shapes_lathe_csg");
+}
+
+TEST_CASE("a prism star with a hole near the origin and a million units away, and cut flush at its top", "[shapes]") {
+  const Vec3 eye(0.9, 2.2, -2.6), at(0, 0, 0);
+  SceneDesc near = base(eye, at);
+  place(near, add_shape(near, star(), add_material(near, matte(Color(0.8, 0.6, 0.2)))));
+  check_stable(near, "prism: a star with a pentagonal hole", "shapes_prism");
+  const Vec3 far(1e6, -1e6, 1e6);
+  SceneDesc away = base(eye + far, at + far);
+  place(away, add_shape(away, star(), add_material(away, matte(Color(0.8, 0.6, 0.2)))), translate(far));
+  RenderResult a = render_scene(near, 2), b = render_scene(away, 2);
+  double diff = differing_fraction(a.color, b.color);
+  record("shapes", "prism at 1e6 vs at the origin", "pixels differing", diff, "<= 0.01",
+         save(b.color, "shapes_prism_far"));
+  CHECK(diff <= 0.01);
+  CHECK(count_speckles(b.color) == 0);
+
+  SceneDesc s = base(eye, at);
+  MaterialId red = add_material(s, matte(Color(0.8, 0.2, 0.15)));
+  MaterialId green = add_material(s, matte(Color(0.2, 0.7, 0.2)));
+  CsgDesc d;
+  d.op = CsgOp::Difference;
+  d.children = {Child{add_shape(s, star(), red), Mat4(1.0), {}},
+                Child{add_shape(s, Box{Vec3(-2, 0.0, -2), Vec3(0, 0.3, 0)}, green), Mat4(1.0), {}}};
+  s.csgs.push_back(std::move(d));
+  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
+  place(s, static_cast<NodeId>(s.nodes.size() - 1));
+  check_stable(s, "prism minus a box sharing its top cap's height", "shapes_prism_csg");
 }

@@ -16,6 +16,7 @@
 #include "render/geometry/shapes/isosurface.hpp"
 #include "render/geometry/shapes/lathe.hpp"
 #include "render/geometry/shapes/plane.hpp"
+#include "render/geometry/shapes/prism.hpp"
 #include "render/geometry/shapes/sor.hpp"
 #include "render/geometry/shapes/sphere.hpp"
 #include "render/geometry/shapes/superellipsoid.hpp"
@@ -116,6 +117,23 @@ inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings& c, 
   int n = lathe_crossings(l, ray, cs, kMaxLeafCrossings);
   if (k >= n) return false;
   lathe_hit_at(l, ray, cs[k], hit);
+  return true;
+}
+
+// A closed prism: its crossings alternate in and out (the caps follow the walls' parity).
+inline void leaf_crossings(const Prism& p, const Ray& ray, CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  PrismCrossing cs[kMaxLeafCrossings];
+  out.count = prism_crossings(p, ray, cs, kMaxLeafCrossings);
+  if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
+  for (int i = 0; i < out.count; ++i) out.t[i] = cs[i].t;
+}
+
+inline bool leaf_hit(const Prism& p, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  PrismCrossing cs[kMaxLeafCrossings];
+  int n = prism_crossings(p, ray, cs, kMaxLeafCrossings);
+  if (k >= n) return false;
+  prism_hit_at(p, ray, cs[k], hit);
   return true;
 }
 
