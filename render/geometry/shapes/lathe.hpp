@@ -20,6 +20,7 @@
 
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/ray.hpp"
+#include "render/geometry/shapes/keep_crossings.hpp"
 #include "render/geometry/shapes/poly_roots.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/surface_hit.hpp"
@@ -106,21 +107,6 @@ struct LatheCrossing {
   int segment;
 };
 
-namespace detail {
-
-// Keeps the smallest `max_out` crossings, ascending.
-inline void lathe_keep(LatheCrossing* out, int& count, int max_out, LatheCrossing c) {
-  if (count == max_out && !(c.t < out[count - 1].t)) return;
-  int i = count < max_out ? count++ : count - 1;
-  while (i > 0 && out[i - 1].t > c.t) {
-    out[i] = out[i - 1];
-    --i;
-  }
-  out[i] = c;
-}
-
-}  // namespace detail
-
 // The crossings of the profile's surfaces along the whole line beyond t_after: the first
 // max_out, ascending; returns how many. Closed profile, whole line: in and out alternately.
 inline int lathe_crossings(const Lathe& l, const Ray& ray, LatheCrossing* out, int max_out,
@@ -155,7 +141,7 @@ inline int lathe_crossings(const Lathe& l, const Ray& ray, LatheCrossing* out, i
   int count = 0;
   auto emit = [&](double off, int seg) {
     double t = (sc + off) / len;
-    if (t > t_after && max_out > 0) detail::lathe_keep(out, count, max_out, LatheCrossing{t, seg});
+    if (t > t_after) detail::keep_first_crossings(out, count, max_out, LatheCrossing{t, seg});
   };
   for (int j = 0; j + 1 < np; ++j) {
     const Vec3 &A = l.points[j], &B = l.points[j + 1];
@@ -220,7 +206,7 @@ inline int lathe_crossings(const Lathe& l, const Ray& ray, LatheCrossing* out, i
       double w = (y - A.y) / (B.y - A.y);
       if (!(w >= 0.0 && w < 1.0)) continue;
       if (count < max_out || t < out[count - 1].t)
-        if (t > t_after) detail::lathe_keep(out, count, max_out, LatheCrossing{t, j});
+        if (t > t_after) detail::keep_first_crossings(out, count, max_out, LatheCrossing{t, j});
     }
   }
   return count;

@@ -25,6 +25,7 @@
 
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/ray.hpp"
+#include "render/geometry/shapes/keep_crossings.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
 #include "render/geometry/surface_hit.hpp"
 #include "render/geometry/tolerances.hpp"
@@ -168,21 +169,6 @@ struct PrismCrossing {
   int edge;  // for a wall
 };
 
-namespace detail {
-
-// Keeps the smallest `max_out` crossings, ascending.
-inline void prism_keep(PrismCrossing* out, int& count, int max_out, PrismCrossing c) {
-  if (max_out <= 0 || (count == max_out && !(c.t < out[count - 1].t))) return;
-  int i = count < max_out ? count++ : count - 1;
-  while (i > 0 && out[i - 1].t > c.t) {
-    out[i] = out[i - 1];
-    --i;
-  }
-  out[i] = c;
-}
-
-}  // namespace detail
-
 // The crossings of the prism's surfaces along the whole line beyond t_after: the first max_out,
 // ascending; returns how many. A closed prism, whole line: in and out alternately.
 inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, int max_out,
@@ -216,7 +202,7 @@ inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, i
   int count = 0;
   auto emit = [&](double s, PrismPart part, int edge) {
     double t = (sc + s) / len;
-    if (t > t_after) detail::prism_keep(out, count, max_out, PrismCrossing{t, part, edge});
+    if (t > t_after) detail::keep_first_crossings(out, count, max_out, PrismCrossing{t, part, edge});
   };
   const double a = d.x * d.x + d.z * d.z;
   bool parity_a = false;  // inside the polygon where the line enters the slab
