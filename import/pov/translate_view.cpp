@@ -1,0 +1,310 @@
+// POV-Ray's lights, camera and global settings as rts statements (the camera's right/up/
+// direction vectors, the light kinds and their falloff, the settings rts has).
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "import/pov/reader.hpp"
+#include "import/pov/translator.hpp"
+
+namespace rts::import::pov {
+
+namespace {
+
+// POV-Ray's camera vectors as literals, when they are.
+bool literal3(const Expr* e, glm::dvec3& out) {
+  std::vector<double> v;
+  double k;
+  if (e && Translator::literal_number(*e, k)) {  // a float where a vector belongs: <k, k, k>
+    out = glm::dvec3(k);
+    return true;
+  }
+  if (!e || !Translator::literal_vector(*e, v) || v.size() != 3) return false;
+  out = glm::dvec3(v[0], v[1], v[2]);
+  return true;
+}
+
+}  // namespace
+
+void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
+  std::string position, color = "rgb(1)", point_at = "<0, 0, 0>", radius, falloff, kind = "point_light";
+  std::vector<std::string> extra, xforms;
+  std::string fade_distance;
+  const Expr* fade_power = nullptr;
+  int values = 0;
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Value) {
+      if (values == 0) position = vector_value(*it.args[0]);
+      else if (values == 1) color = color_value(*it.args[0]);
+      ++values;
+      continue;
+    }
+    if (it.kind == Item::Nested) {
+      if (it.block->kind == "looks_like" || it.block->kind == "projected_through")
+        unsupported(it.loc, it.block->kind, "an object placed at the light (with no shadows from the light)", false);
+      else if (it.block->kind == "photons" || it.block->kind == "media_interaction") {}
+      else for (std::string& t : transforms(it)) xforms.push_back(std::move(t));
+      continue;
+    }
+    if (it.kind != Item::Keyword) continue;
+    const std::string& k = it.name;
+    std::vector<std::string> t = transforms(it);
+    if (!t.empty()) {
+      xforms.insert(xforms.end(), t.begin(), t.end());
+    } else if ((k == "color" || k == "colour") && !it.args.empty()) {
+      color = color_value(*it.args[0]);
+    } else if (k == "spotlight") {
+      kind = "spot_light";
+    } else if (k == "parallel") {
+      kind = "directional_light";
+    } else if (k == "point_at" && !it.args.empty()) {
+      point_at = vector_value(*it.args[0]);
+    } else if (k == "radius" && !it.args.empty()) {
+      double r;
+      // POV-Ray allows a hot spot of 0 degrees; rts's radius must be above 0.
+      radius = literal_number(*it.args[0], r) && r <= 0 ? "0.01" : value(*it.args[0]);
+    } else if (k == "falloff" && !it.args.empty()) {
+      falloff = value(*it.args[0]);
+    } else if (k == "tightness" && !it.args.empty()) {
+      double v;
+      if (!literal_number(*it.args[0], v) || v != 0)
+        unsupported(it.loc, "tightness", "radius and falloff shape the spot's edge", false);
+    } else if (k == "area_light" && it.args.size() >= 4) {
+      kind = kind == "spot_light" ? "spot_area" : "area_light";
+      extra.push_back("u = " + vector_value(*it.args[0]));
+      extra.push_back("v = " + vector_value(*it.args[1]));
+      extra.push_back(fmt::format("samples = {} * {}", value(*it.args[2]), value(*it.args[3])));
+    } else if (k == "circular") {
+      extra.push_back("disc = true");
+    } else if (k == "adaptive" || k == "jitter" || k == "orient" || k == "media_attenuation" ||
+               k == "media_interaction") {
+      // sampling refinements: rts samples area lights stratified
+    } else if (k == "shadowless") {
+      extra.push_back("shadows = false");
+    } else if (k == "fade_distance" && !it.args.empty()) {
+      fade_distance = value(*it.args[0]);
+    } else if (k == "fade_power" && !it.args.empty()) {
+      fade_power = it.args[0].get();
+    } else if (k == "cylinder") {
+      unsupported(it.loc, "cylinder (light)", "spot_light", false);
+      kind = "spot_light";
+    } else {
+      unsupported(it.loc, k, "see docs/rendering.md#lights", false);
+    }
+  }
+  // POV-Ray's light_source begins with its location; without one there is nothing to write
+  // (fuzz_pov: `light_source { nt { ... } }` gave `position =` with no value).
+  if (position.empty())
+    error(b.loc, "a light_source begins with its location vector: light_source { <x, y, z> color rgb <r, g, b> }");
+  if (kind == "spot_area") {
+    unsupported(b.loc, "spotlight area_light", "area_light or spot_light", false);
+    kind = "spot_light";
+    extra.clear();
+  }
+  std::vector<std::string> props;
+  if (kind == "directional_light") {
+    props.push_back(fmt::format("direction = {} - {}", point_at, position));
+  } else {
+    props.push_back("position = " + position);
+  }
+  if (color != "rgb(1)") props.push_back("color = " + color);
+  if (kind == "spot_light") {
+    props.push_back("point_at = " + point_at);
+    if (!radius.empty()) props.push_back("radius = " + radius);
+    if (!falloff.empty()) props.push_back("falloff = " + falloff);
+  }
+  for (const std::string& e : extra) props.push_back(e);
+  if (!fade_distance.empty() && kind != "directional_light") {
+    // POV-Ray: 2 / (1 + (d / fade_distance)^fade_power); exact in rts's c + l d + q d^2 for
+    // powers 1 and 2.
+    double p = 0;
+    if (!fade_power) {
+      // no fade_power: POV-Ray does not fade
+    } else if (literal_number(*fade_power, p) && (p == 1 || p == 2)) {
+      props.push_back(p == 1 ? fmt::format("attenuation = <0.5, 0.5 / ({}), 0>", fade_distance)
+                             : fmt::format("attenuation = <0.5, 0, 0.5 / ({}) ^ 2>", fade_distance));
+    } else {
+      unsupported(b.loc, "fade_power " + value(*fade_power), "attenuation = <c, l, q> (powers 1 and 2 are exact)", false);
+    }
+  }
+  std::string s;
+  for (const std::string& p : props) s += (s.empty() ? " " : "  ") + p;
+  std::string suffix;
+  for (const std::string& t : xforms) suffix += " " + t;
+  w.line(fmt::format("{}{} {{{} }}{}", prefix, kind, s, suffix));
+}
+
+void Translator::camera(Writer& w, const Block& b) {
+  const Expr *location = nullptr, *look_at = nullptr, *angle = nullptr, *right = nullptr, *up = nullptr,
+             *direction = nullptr, *sky = nullptr;
+  bool ortho = false;
+  std::vector<std::string> extra;
+  const Block* src = &b;
+  // camera { Declared modifiers }: the declared camera's items first.
+  std::vector<Item> all;
+  for (const Item& it : src->items) {
+    if (it.kind == Item::Value && it.args[0]->kind == Expr::Name)
+      if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Camera && s->block) {
+        all.insert(all.end(), s->block->items.begin(), s->block->items.end());
+        continue;
+      }
+    all.push_back(it);
+  }
+  for (const Item& it : all) {
+    if (it.kind != Item::Keyword) continue;
+    const Expr* a = it.args.empty() ? nullptr : it.args[0].get();
+    const std::string& k = it.name;
+    if (k == "location") location = a;
+    else if (k == "look_at") look_at = a;
+    else if (k == "angle") angle = a;
+    else if (k == "right") right = a;
+    else if (k == "up") up = a;
+    else if (k == "direction") direction = a;
+    else if (k == "sky") sky = a;
+    else if (k == "orthographic") ortho = true;
+    else if (k == "perspective") ortho = false;
+    else if (k == "aperture" && a) extra.push_back("aperture = " + value(*a));
+    else if (k == "focal_point" && a) {
+      extra.push_back(fmt::format("focus_distance = length({} - {})", vector_value(*a),
+                                  location ? vector_value(*location) : "<0, 0, 0>"));
+    } else if (k == "blur_samples" || k == "confidence" || k == "variance") {
+      // rts's samples per pixel carry the blur: settings { samples }
+    } else if (k == "translate" || k == "rotate" || k == "scale" || k == "matrix" || k == "transform") {
+      unsupported(it.loc, "camera " + k, "location and look_at written moved", false);
+    } else if (k == "fisheye" || k == "panoramic" || k == "spherical" || k == "cylinder" || k == "omnimax" ||
+               k == "ultra_wide_angle") {
+      unsupported(it.loc, k, "a perspective camera", false);
+    } else {
+      unsupported(it.loc, k, "see docs/rendering.md#cameras", false);
+    }
+  }
+  glm::dvec3 R(1.33, 0, 0), U(0, 1, 0), D(0, 0, 1);
+  bool lr = !right || literal3(right, R), lu = !up || literal3(up, U), ld = !direction || literal3(direction, D);
+  bool image_aspect = false;  // right x*image_width/image_height: the image's own aspect
+  if (right && !lr) {
+    std::function<bool(const Expr&)> mentions = [&](const Expr& e) {
+      if (e.kind == Expr::Name && (e.text == "image_width" || e.text == "image_height")) return true;
+      for (const ExprPtr& c : e.args)
+        if (mentions(*c)) return true;
+      return false;
+    };
+    if (mentions(*right)) {
+      image_aspect = true;
+      R = glm::dvec3(4.0 / 3.0, 0, 0);
+      lr = true;
+    }
+  }
+  camera_seen_ = true;
+  std::vector<std::string> props;
+  if (ortho) props.push_back("projection = \"orthographic\"");
+  std::string pos = location ? vector_value(*location) : "<0, 0, 0>";
+  props.push_back("position = " + pos);
+  // POV-Ray's camera is its three vectors: rts's camera takes them as given, so the picture is
+  // POV-Ray's, its 1.33 (not 4/3) default aspect included. With look_at they are first turned
+  // towards it, as POV-Ray does, keeping their lengths; `angle` sets direction's length.
+  glm::dvec3 L(0), A(0), S(0, 1, 0);
+  double angle_deg = 0;
+  const bool literal_view = lr && lu && ld && !image_aspect && (!location || literal3(location, L)) &&
+                            (!look_at || literal3(look_at, A)) && (!sky || literal3(sky, S)) &&
+                            (!angle || literal_number(*angle, angle_deg));
+  if (literal_view && !(ortho && angle) && !(angle && (angle_deg <= 0 || angle_deg >= 180))) {
+    if (angle) D = glm::normalize(D) * (0.5 * glm::length(R) / std::tan(angle_deg * M_PI / 360));
+    if (look_at && glm::length(A - L) > 1e-9) {
+      const double dl = glm::length(D), ul = glm::length(U), rl = glm::length(R);
+      const double handedness = glm::dot(glm::cross(U, D), R);
+      glm::dvec3 d = glm::normalize(A - L), r = glm::cross(S, d);
+      if (glm::length(r) < 1e-9) r = R;  // looking along the sky: POV-Ray keeps its right vector
+      r = glm::normalize(r);
+      glm::dvec3 u = glm::cross(d, r);
+      D = d * dl;
+      R = r * (handedness > 0 ? rl : -rl);
+      U = u * ul;
+      w.line(fmt::format("// POV-Ray's look_at {}: its direction, right and up turned towards it", vec(A)));
+    }
+    auto clean = [](glm::dvec3 v) {
+      for (int i = 0; i < 3; ++i)
+        if (std::abs(v[i]) < 1e-12) v[i] = 0;
+      return vec(v);
+    };
+    props.push_back("direction = " + clean(D));
+    props.push_back("right = " + clean(R));
+    props.push_back("up = " + clean(U));
+  } else {
+    if (look_at) props.push_back("look_at = " + vector_value(*look_at));
+    else props.push_back(fmt::format("look_at = {} + {}", pos, direction ? vector_value(*direction) : "<0, 0, 1>"));
+    if (sky) props.push_back("up = " + vector_value(*sky));
+    if (lr && lu && ld) {
+      if (R.x < 0) props.push_back("handedness = \"right\"");
+      double rl = glm::length(R), ul = glm::length(U), dl = glm::length(D);
+      if (ortho) {
+        props.push_back("view_width = " + num(rl));
+        if (angle) unsupported(b.loc, "orthographic angle", "view_width", false);
+      } else if (angle) {
+        double a;
+        if (literal_number(*angle, a) && a >= 180) {
+          unsupported(b.loc, fmt::format("angle {}", num(a)), "a perspective camera's fov below 180 (179 is used)",
+                      false);
+          props.push_back("fov = 179");
+        } else {
+          props.push_back("fov = " + value(*angle));
+        }
+      } else if (image_aspect) {
+        props.push_back("fov = " + num(2 * std::atan(ul / (2 * dl)) * 180 / M_PI));
+        props.push_back("fov_axis = \"vertical\"");
+      } else {
+        props.push_back("fov = " + num(2 * std::atan(rl / (2 * dl)) * 180 / M_PI));
+      }
+      if (!image_aspect && std::abs(rl / ul - 4.0 / 3.0) > 0.01 && !ortho)
+        warn(b.loc, fmt::format("the camera's right/up ratio is {} (POV-Ray's default 1.33); rts follows the "
+                                "image's aspect ratio (render at {}:1 for the same picture)",
+                                num(rl / ul), num(rl / ul)));
+    } else {
+      unsupported(b.loc, "computed right/up/direction", "fov written as a number", false);
+      if (angle) props.push_back("fov = " + value(*angle));
+    }
+  }
+  props.insert(props.end(), extra.begin(), extra.end());
+  w.open("camera");
+  for (const std::string& p : props) w.line(p);
+  w.close();
+}
+
+void Translator::global_settings(Writer& w, const Block& b) {
+  std::vector<std::string> props;
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Nested) {
+      if (it.block->kind == "radiosity")
+        unsupported(it.loc, "radiosity", "settings { integrator = \"path\" }", true);
+      else if (it.block->kind != "photons")
+        unsupported(it.loc, it.block->kind, "see docs/rendering.md", false);
+      continue;
+    }
+    if (it.kind != Item::Keyword || it.args.empty()) continue;
+    const std::string& k = it.name;
+    if (k == "assumed_gamma") {
+      double g;
+      gamma_seen_ = true;
+      if (literal_number(*it.args[0], g)) assumed_gamma_ = g;
+      else unsupported(it.loc, "assumed_gamma (computed)", "output_gamma = \"srgb\" or \"linear\"", false);
+    } else if (k == "ambient_light") {
+      props.push_back("ambient_light = " + color_value(*it.args[0]));
+    } else if (k == "max_trace_level") {
+      props.push_back("max_depth = " + value(*it.args[0]));
+    } else if (k == "adc_bailout" || k == "number_of_waves" || k == "noise_generator" || k == "charset" ||
+               k == "max_intersections" || k == "hf_gray_16") {
+      // no effect on rts's picture (rts's noise is its own)
+    } else {
+      unsupported(it.loc, k, "see docs/rendering.md#settings", false);
+    }
+  }
+  if (!props.empty()) {
+    std::string s;
+    for (const std::string& p : props) s += (s.empty() ? " " : "  ") + p;
+    w.line("settings {" + s + " }");
+  }
+}
+
+}  // namespace rts::import::pov
