@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <random>
 
 #include <catch2/catch.hpp>
 
@@ -477,8 +478,51 @@ TEST_CASE("compiled functions evaluate straight-line code", "[patterns]") {
   CHECK(g.eval(p) == 0.0);
   // It is full at kMaxRegisters.
   CompiledFunction big;
-  uint16_t last = 0;
+  uint16_t last = CompiledFunction::kX;
   std::size_t made = 0;
-  while (big.emit(CompiledFunction::Op::Neg, {CompiledFunction::kX}, last)) ++made;
+  while (big.emit(CompiledFunction::Op::Neg, {last}, last)) ++made;
   CHECK(made == CompiledFunction::kMaxRegisters - 3);
+}
+
+TEST_CASE("compiled functions fold repeats, pow(a, 2) and sin/cos pairs without changing a bit", "[patterns]") {
+  using Op = CompiledFunction::Op;
+  // f = sin(6x) cos(6y) + sin(6y) cos(6z) + sin(6z) cos(6x) + pow(x - y, 2) + pow(z, 3), the
+  // gyroid's shape: every 6·coordinate is used by a sin and a cos, and the same products recur.
+  CompiledFunction f;
+  uint16_t six, two, three, c[3], s[3], co[3], t[3], r, d, sq, cube, again;
+  REQUIRE(f.constant(6.0, six));
+  REQUIRE(f.constant(2.0, two));
+  REQUIRE(f.constant(3.0, three));
+  for (uint16_t k = 0; k < 3; ++k) REQUIRE(f.emit(Op::Mul, {six, k}, c[k]));
+  REQUIRE(f.emit(Op::Mul, {six, CompiledFunction::kX}, again));
+  CHECK(again == c[0]);  // the same instruction reuses its register
+  for (int k = 0; k < 3; ++k) {
+    REQUIRE(f.emit(Op::Sin, {c[k]}, s[k]));
+    REQUIRE(f.emit(Op::Cos, {c[(k + 1) % 3]}, co[k]));
+    REQUIRE(f.emit(Op::Mul, {s[k], co[k]}, t[k]));
+  }
+  REQUIRE(f.emit(Op::Add, {t[0], t[1]}, r));
+  REQUIRE(f.emit(Op::Add, {r, t[2]}, r));
+  REQUIRE(f.emit(Op::Sub, {CompiledFunction::kX, CompiledFunction::kY}, d));
+  REQUIRE(f.emit(Op::Pow, {d, two}, sq));
+  REQUIRE(f.emit(Op::Pow, {CompiledFunction::kZ, three}, cube));
+  REQUIRE(f.emit(Op::Add, {r, sq}, r));
+  REQUIRE(f.emit(Op::Add, {r, cube}, r));
+  f.set_result(r);
+  const std::string listing = f.listing();
+  CHECK(listing.find("sincos") != std::string::npos);
+  CHECK(listing.find("cossin") != std::string::npos);  // cos(6y) is emitted before sin(6y)
+  CHECK(listing.find("pow") != std::string::npos);      // pow(z, 3) stays a pow
+  // 3 constants, 3 products, 3 sincos pairs (6), 3 products, 2 sums, the difference, its
+  // square (a Mul), the cube, 2 sums: 22 instructions, the second Mul(6, x) shared.
+  CHECK(f.instructions() == 22);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  for (int i = 0; i < 20000; ++i) {
+    double x = u(rng) * (i % 3 == 0 ? 2e6 : 8.0), y = u(rng) * 8.0, z = u(rng) * (i % 5 == 0 ? 1e-6 : 8.0);
+    const double want = std::sin(6 * x) * std::cos(6 * y) + std::sin(6 * y) * std::cos(6 * z) +
+                        std::sin(6 * z) * std::cos(6 * x) + std::pow(x - y, 2.0) + std::pow(z, 3.0);
+    const double got = f.eval(Vec3(x, y, z));
+    REQUIRE(std::memcmp(&got, &want, sizeof got) == 0);
+  }
 }

@@ -34,19 +34,51 @@ bool CompiledFunction::constant(double c, uint16_t& reg) {
   return true;
 }
 
+namespace {
+
+std::string key_of(CompiledFunction::Op op, const uint16_t* a) {
+  std::string k(1, static_cast<char>(op));
+  k.append(reinterpret_cast<const char*>(a), CompiledFunction::kMaxOperands * sizeof(uint16_t));
+  return k;
+}
+
+}  // namespace
+
+bool CompiledFunction::is_constant(uint16_t reg, double value) const {
+  if (reg < 3 || reg - 3u >= code_.size() || code_[reg - 3].op != Op::Const) return false;
+  return constants_[code_[reg - 3].a[0]] == value;
+}
+
 bool CompiledFunction::emit(Op op, std::initializer_list<uint16_t> operands, uint16_t& reg) {
-  if (registers() >= kMaxRegisters) return false;
   Instr in{op, {}};
   int i = 0;
   for (uint16_t o : operands) in.a[i++] = o;
+  if (op == Op::Pow && is_constant(in.a[1], 2.0)) in = Instr{Op::Mul, {in.a[0], in.a[0]}};
+  std::string key = key_of(in.op, in.a);
+  if (auto it = seen_.find(key); it != seen_.end()) {
+    reg = it->second;
+    return true;
+  }
+  if (registers() >= kMaxRegisters) return false;
+  // The other half of a sin/cos pair already emitted: that instruction computes both.
+  const Op partner = op == Op::Sin ? Op::Cos : op == Op::Cos ? Op::Sin : Op::Const;
+  Instr pk{partner, {in.a[0]}};
+  auto other = partner == Op::Const ? seen_.end() : seen_.find(key_of(pk.op, pk.a));
+  if (other != seen_.end() && code_[other->second - 3].op == partner) {
+    reg = static_cast<uint16_t>(registers());
+    code_[other->second - 3] = Instr{partner == Op::Sin ? Op::SinCos : Op::CosSin, {in.a[0], reg}};
+    in = Instr{Op::Preset, {}};
+  } else {
+    reg = static_cast<uint16_t>(registers());
+  }
   code_.push_back(in);
-  reg = static_cast<uint16_t>(registers() - 1);
+  seen_.emplace(std::move(key), reg);
   return true;
 }
 
 int CompiledFunction::arity(Op op) {
   switch (op) {
-    case Op::Const: return 0;
+    case Op::Const: case Op::Preset: return 0;
     case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Mod: case Op::Pow: case Op::Min:
     case Op::Max: case Op::Atan2: case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
     case Op::And: case Op::Or: return 2;
@@ -61,7 +93,8 @@ const char* CompiledFunction::name(Op op) {
       "const", "add",  "sub",  "mul",  "div",   "mod",   "pow",   "min",    "max",   "atan2", "lt",
       "le",    "gt",   "ge",   "eq",   "ne",    "and",   "or",    "neg",    "not",   "sin",   "cos",
       "tan",   "asin", "acos", "atan", "sqrt",  "exp",   "log",   "abs",    "floor", "ceil",  "round",
-      "select", "clamp", "mix", "noise", "fbm", "turbulence", "cells", "worley"};
+      "select", "clamp", "mix", "noise", "fbm", "turbulence", "cells", "worley", "sincos", "cossin",
+      "preset"};
   return names[static_cast<int>(op)];
 }
 
@@ -120,6 +153,9 @@ double CompiledFunction::eval(const glm::dvec3& p) const {
         break;
       case Op::Cells: v = pattern::cells({r[a[0]], r[a[1]], r[a[2]]}); break;
       case Op::Worley: v = pattern::worley({r[a[0]], r[a[1]], r[a[2]]}); break;
+      case Op::SinCos: ::sincos(r[a[0]], &v, &r[a[1]]); break;
+      case Op::CosSin: ::sincos(r[a[0]], &r[a[1]], &v); break;
+      case Op::Preset: v = *out; break;
       default: v = 0.0; break;
     }
     *out++ = v;
@@ -137,6 +173,7 @@ std::string CompiledFunction::listing() const {
       s += fmt::format(" {}", constants_[in.a[0]]);
     } else {
       for (int k = 0; k < arity(in.op); ++k) s += fmt::format(" r{}", in.a[k]);
+      if (in.op == Op::SinCos || in.op == Op::CosSin) s += fmt::format(" (and r{})", in.a[1]);
     }
     s += '\n';
   }

@@ -14,11 +14,21 @@
 // (kMaxRegisters bounds a function's size; the compiler reports a located error past it).
 // A non-finite intermediate result is allowed; eval() maps a NaN result to 0 (never a NaN
 // colour or a NaN isosurface step).
+//
+// Building folds what gives the same bits for less work (isosurfaces evaluate f hundreds of
+// times per ray, and an isosurface's time is mostly f): an instruction equal to an earlier one
+// (same op, same operands: every op is pure) reuses its register; `pow(a, 2)` is `a * a`
+// (glibc's pow is exact there); and a `sin` and a `cos` of the same register are one
+// `sincos` call (glibc computes both with the same code as `sin` and `cos`), the first of the
+// two becoming SinCos/CosSin, which also writes the second's register, and the second
+// Preset, which keeps the value already written. tests/render/test_noise.cpp checks each
+// against the unfolded functions bit for bit.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -40,6 +50,9 @@ class CompiledFunction {
     // the noise family: a point (a0, a1, a2) and, for the sums, octaves a3, lambda a4, omega a5
     Noise,    // noise01 in [0, 1]
     Fbm, Turbulence, Cells, Worley,
+    // folded forms (see above): a0 the argument, a1 the register that gets the other result
+    SinCos, CosSin,
+    Preset,   // the value is already in this instruction's register
   };
   static constexpr int kMaxOperands = 6;
   struct Instr {
@@ -55,7 +68,8 @@ class CompiledFunction {
   // ---- building (the compiler) ----
   // The register holding constant c (equal constants share one). Returns false when full.
   bool constant(double c, uint16_t& reg);
-  // Appends an instruction and gives the register it writes. Returns false when full.
+  // Appends an instruction and gives the register it writes (an earlier register when the
+  // same value is already computed: see the folding above). Returns false when full.
   bool emit(Op op, std::initializer_list<uint16_t> operands, uint16_t& reg);
   void set_result(uint16_t reg) { result_ = reg; }
   // The number of operands `op` reads.
@@ -74,6 +88,10 @@ class CompiledFunction {
   std::vector<uint16_t> constant_regs_;   // the register holding constants_[i]
   std::vector<Instr> code_;         // instruction i writes register 3 + i
   uint16_t result_ = kX;
+  // Building only: each instruction emitted so far (its op and operands as a key) -> the
+  // register holding its value, for the folding.
+  std::unordered_map<std::string, uint16_t> seen_;
+  bool is_constant(uint16_t reg, double value) const;
 };
 
 }  // namespace rts::render
