@@ -43,7 +43,16 @@ Bsdf::Bsdf(const Lobes& lobes, const Vec3& n, const Vec3& ng, const Vec3& wo)
   glossy_ggx_.alpha = std::max(lobes.glossy_alpha, tol::kMinMicrofacetAlpha);
   reflect_delta_ = !(lobes.reflect_alpha > 0.0);
   reflect_ggx_.alpha = std::max(lobes.reflect_alpha, tol::kMinMicrofacetAlpha);
-  if (mean(transmit_) > 0.0) {
+  rough_glass_ = lobes.transmit_alpha > 0.0 && mean(transmit_) > 0.0;
+  glass_ggx_.alpha = std::max(lobes.transmit_alpha, tol::kMinMicrofacetAlpha);
+  if (rough_glass_) {
+    // Rough glass: the split between reflection and transmission is made per facet (f, pdf,
+    // sample); the lobe is chosen by the split the macro surface would make.
+    double fr = fresnel_dielectric(cos_o, eta_);
+    glass_reflect_ = glm::max(reflect_, transmit_);
+    reflect_ = Rgb(0.0);
+    p_transmit_ = mean(glass_reflect_) * fr + mean(transmit_) * (1.0 - fr);
+  } else if (mean(transmit_) > 0.0) {
     // A dielectric: a fraction Fr of the light reflects (tinted by the larger of reflect and
     // transmit, as in Whitted mode with fresnel), 1 - Fr passes, filtered by transmit.
     double fr = fresnel_dielectric(cos_o, eta_);
@@ -64,7 +73,7 @@ Bsdf::Bsdf(const Lobes& lobes, const Vec3& n, const Vec3& ng, const Vec3& wo)
   p_diffuse_ = mean(diffuse_);
   p_glossy_ = mean(glossy_);
   p_reflect_ = mean(reflect_);
-  p_transmit_ = mean(transmit_);
+  if (!rough_glass_) p_transmit_ = mean(transmit_);
   total_ = p_diffuse_ + p_glossy_ + p_reflect_ + p_transmit_;
   if (total_ > 0.0) {
     p_diffuse_ /= total_;
@@ -75,22 +84,42 @@ Bsdf::Bsdf(const Lobes& lobes, const Vec3& n, const Vec3& ng, const Vec3& wo)
 }
 
 Rgb Bsdf::f(const Vec3& wi_world) const {
-  if (glm::dot(wi_world, ng_) <= 0.0) return Rgb(0.0);  // smooth lobes reflect only
   Vec3 wi = frame_.to_local(wi_world);
+  if (glm::dot(wi_world, ng_) <= 0.0) {
+    // Below the surface only rough glass passes light, and only into the shading frame's
+    // lower side.
+    Vec3 m;
+    if (!rough_glass_ || wi.z >= 0.0 || !Ggx::half_transmit(wo_local_, wi, eta_, m)) return Rgb(0.0);
+    double t = 1.0 - fresnel_dielectric(glm::dot(wo_local_, m), eta_);
+    return transmit_ * (t * glass_ggx_.f_transmit(wo_local_, wi, eta_));
+  }
   if (wi.z <= 0.0) return Rgb(0.0);
   Rgb f = diffuse_ * kInvPi;
   if (p_glossy_ > 0.0) f += glossy_ * glossy_ggx_.f_reflect(wo_local_, wi);
   if (!reflect_delta_ && p_reflect_ > 0.0) f += reflect_ * reflect_ggx_.f_reflect(wo_local_, wi);
+  if (rough_glass_) {
+    double r = fresnel_dielectric(glm::dot(wo_local_, glm::normalize(wo_local_ + wi)), eta_);
+    f += glass_reflect_ * (r * glass_ggx_.f_reflect(wo_local_, wi));
+  }
   return f;
 }
 
 double Bsdf::pdf(const Vec3& wi_world) const {
-  if (glm::dot(wi_world, ng_) <= 0.0) return 0.0;
   Vec3 wi = frame_.to_local(wi_world);
+  if (glm::dot(wi_world, ng_) <= 0.0) {
+    Vec3 m;
+    if (!rough_glass_ || wi.z >= 0.0 || !Ggx::half_transmit(wo_local_, wi, eta_, m)) return 0.0;
+    double t = 1.0 - fresnel_dielectric(glm::dot(wo_local_, m), eta_);
+    return p_transmit_ * t * glass_ggx_.pdf_transmit(wo_local_, wi, eta_);
+  }
   if (wi.z <= 0.0) return 0.0;
   double p = p_diffuse_ * wi.z * kInvPi;
   if (p_glossy_ > 0.0) p += p_glossy_ * glossy_ggx_.pdf_reflect(wo_local_, wi);
   if (!reflect_delta_ && p_reflect_ > 0.0) p += p_reflect_ * reflect_ggx_.pdf_reflect(wo_local_, wi);
+  if (rough_glass_) {
+    double r = fresnel_dielectric(glm::dot(wo_local_, glm::normalize(wo_local_ + wi)), eta_);
+    p += p_transmit_ * r * glass_ggx_.pdf_reflect(wo_local_, wi);
+  }
   return p;
 }
 
@@ -98,6 +127,28 @@ bool Bsdf::sample(double u_lobe, glm::dvec2 u, BsdfSample& out) const {
   if (total_ <= 0.0) return false;
   // The delta lobes first: each is sampled exactly, its weight divided by its probability.
   double edge = p_transmit_;
+  if (u_lobe < edge && rough_glass_) {
+    // Rough glass: a facet seen from wo, which reflects with its Fresnel probability (always
+    // on total internal reflection) and refracts otherwise. The estimate uses the mixture's
+    // f and pdf, as for the other smooth lobes.
+    const Vec3 m = glass_ggx_.sample_visible(wo_local_, u);
+    const double r = fresnel_dielectric(glm::dot(wo_local_, m), eta_);
+    Vec3 wi;
+    if (u_lobe < edge * r) {
+      wi = reflect_local(wo_local_, m);
+      if (wi.z <= 0.0) return false;
+    } else if (!refract_local(wo_local_, m, eta_, wi) || wi.z >= 0.0) {
+      return false;
+    }
+    out.wi = glm::normalize(frame_.to_world(wi));
+    out.transmitted = wi.z < 0.0;
+    if ((glm::dot(out.wi, ng_) < 0.0) != out.transmitted) return false;
+    out.pdf = pdf(out.wi);
+    if (!(out.pdf > 0.0)) return false;
+    out.weight = f(out.wi) * std::abs(glm::dot(out.wi, frame_.n)) / out.pdf;
+    out.delta = false;
+    return true;
+  }
   if (u_lobe < edge) {
     Vec3 wo = wo_local_;
     double sin2_t = eta_ * eta_ * std::max(0.0, 1.0 - wo.z * wo.z);

@@ -3,7 +3,10 @@
 //   diffuse   Lambert, albedo color x diffuse;
 //   glossy    specular/shininess as a normalised GGX lobe, alpha = sqrt(2 / (shininess + 2));
 //   reflect   a mirror (delta) or, with roughness > 0, a GGX lobe of alpha = roughness;
-//   transmit  a smooth dielectric (exact Fresnel, total internal reflection).
+//   transmit  a dielectric (exact Fresnel, total internal reflection): smooth, or with
+//             roughness > 0 rough glass: one GGX lobe that reflects or refracts at each facet
+//             by the facet's own Fresnel term (pbrt-v4's rough DielectricBxDF), so a facet
+//             that reflects totally inside sends its light back, not nowhere.
 // Delta lobes are sampled only; f and pdf cover the others, as MIS needs.
 #pragma once
 
@@ -24,6 +27,7 @@ struct Lobes {
   Rgb diffuse{0.0}, glossy{0.0}, reflect{0.0}, transmit{0.0};
   double glossy_alpha = 1.0;
   double reflect_alpha = 0.0;   // 0: a perfect mirror
+  double transmit_alpha = 0.0;  // 0: smooth refraction
   bool fresnel = false;         // opaque: `reflect` is the reflectance at normal incidence (Schlick)
   double eta = 1.0;             // transmissive: n_from / n_to across the surface
 };
@@ -41,11 +45,14 @@ class Bsdf {
   Bsdf(const Lobes& lobes, const Vec3& n, const Vec3& ng, const Vec3& wo);
 
   bool black() const { return total_ <= 0.0; }
-  // Only one lobe can be chosen: sample() ignores u_lobe.
+  // Only one lobe can be chosen: sample() ignores u_lobe (rough glass reads it to choose
+  // between a facet's reflection and refraction).
   bool single_lobe() const {
-    return (p_diffuse_ > 0.0) + (p_glossy_ > 0.0) + (p_reflect_ > 0.0) + (p_transmit_ > 0.0) == 1;
+    return !rough_glass_ && (p_diffuse_ > 0.0) + (p_glossy_ > 0.0) + (p_reflect_ > 0.0) + (p_transmit_ > 0.0) == 1;
   }
-  bool has_smooth() const { return p_diffuse_ + p_glossy_ + (reflect_delta_ ? 0.0 : p_reflect_) > 0.0; }
+  bool has_smooth() const {
+    return p_diffuse_ + p_glossy_ + (reflect_delta_ ? 0.0 : p_reflect_) + (rough_glass_ ? p_transmit_ : 0.0) > 0.0;
+  }
   Rgb f(const Vec3& wi) const;
   // |cos| between wi and the normal the lobes are shaded with.
   double cos_theta(const Vec3& wi) const { return std::abs(glm::dot(wi, frame_.n)); }
@@ -57,8 +64,12 @@ class Bsdf {
   Frame frame_;
   Vec3 ng_, wo_, wo_local_;
   Rgb diffuse_, glossy_, reflect_, transmit_;
-  Ggx glossy_ggx_, reflect_ggx_;
+  Ggx glossy_ggx_, reflect_ggx_, glass_ggx_;
   bool reflect_delta_ = true;
+  // Rough glass: its lobe's share is p_transmit_; the facets reflect glass_reflect_ and
+  // transmit transmit_, each times its Fresnel share.
+  bool rough_glass_ = false;
+  Rgb glass_reflect_{0.0};
   double eta_ = 1.0;
   double p_diffuse_ = 0, p_glossy_ = 0, p_reflect_ = 0, p_transmit_ = 0, total_ = 0;
 };

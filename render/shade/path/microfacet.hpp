@@ -1,5 +1,6 @@
 // The GGX (Trowbridge-Reitz) microfacet distribution, isotropic, in a local frame with the
-// macro normal along +z, with Heitz's (2018) sampling of the normals visible from wo.
+// macro normal along +z, with Heitz's (2018) sampling of the normals visible from wo; its
+// reflection lobe and its transmission lobe (rough glass).
 #pragma once
 
 #include <algorithm>
@@ -62,6 +63,51 @@ struct Ggx {
     h /= len;
     return d(h) * g2(wo, wi) / (4.0 * wo.z * wi.z);
   }
+
+  // ---- transmission (Walter et al. 2007, in pbrt-v4's form) ----
+  // wo above (wo.z > 0), wi below (wi.z < 0); eta = n_from / n_to (the side of wo over the
+  // side of wi). The microfacet normal that refracts wo into wi, facing +z; false when the
+  // pair cannot come from one refraction (either direction on the wrong side of it).
+  static bool half_transmit(const Vec3& wo, const Vec3& wi, double eta, Vec3& m) {
+    if (wo.z <= 0.0 || wi.z >= 0.0) return false;
+    m = wi + eta * wo;  // Snell: wi + eta wo is along the normal that refracts wo into wi
+    double len = glm::length(m);
+    if (!(len > 0.0)) return false;
+    m /= len;
+    if (m.z < 0.0) m = -m;
+    return glm::dot(m, wo) > 0.0 && glm::dot(m, wi) < 0.0;
+  }
+  // The Jacobian |d m / d wi| of the refraction's half vector: |wi.m| / (wi.m + eta wo.m)^2.
+  static double transmit_jacobian(const Vec3& wo, const Vec3& wi, const Vec3& m, double eta) {
+    double denom = glm::dot(wi, m) + eta * glm::dot(wo, m);
+    return std::abs(glm::dot(wi, m)) / (denom * denom);
+  }
+  // Density of wi when m is sampled with sample_visible(wo) and wo refracted through it.
+  double pdf_transmit(const Vec3& wo, const Vec3& wi, double eta) const {
+    Vec3 m;
+    if (!half_transmit(wo, wi, eta, m)) return 0.0;
+    return g1(wo) * d(m) * glm::dot(wo, m) / wo.z * transmit_jacobian(wo, wi, m, eta);
+  }
+  // The BTDF's shape D G2 |wi.m| |wo.m| / (|wi.z| wo.z (wi.m + eta wo.m)^2) times eta^2 (radiance
+  // is compressed entering a denser medium, as the smooth lobe's weight has it); no Fresnel:
+  // the lobe's weight stands for it, as for f_reflect.
+  double f_transmit(const Vec3& wo, const Vec3& wi, double eta) const {
+    Vec3 m;
+    if (!half_transmit(wo, wi, eta, m)) return 0.0;
+    return eta * eta * d(m) * g2(wo, wi) * glm::dot(wo, m) / (std::abs(wi.z) * wo.z) *
+           transmit_jacobian(wo, wi, m, eta);
+  }
 };
+
+// wo refracted through the facet of normal m (both local, wo.m > 0), eta = n_from / n_to;
+// false on total internal reflection.
+inline bool refract_local(const Vec3& wo, const Vec3& m, double eta, Vec3& wi) {
+  double cos_i = glm::dot(wo, m);
+  double sin2_t = eta * eta * std::max(0.0, 1.0 - cos_i * cos_i);
+  if (sin2_t >= 1.0) return false;
+  double cos_t = std::sqrt(1.0 - sin2_t);
+  wi = -eta * wo + (eta * cos_i - cos_t) * m;
+  return true;
+}
 
 }  // namespace rts::render::path

@@ -102,6 +102,7 @@ Lobes PathIntegrator::lobes(const MaterialDesc& m, uint32_t material_id, const W
   lb.reflect = s * unit_clamp(to_rgb(m.reflect));
   lb.reflect_alpha = std::clamp(m.roughness, 0.0, 1.0);
   lb.transmit = s * unit_clamp(to_rgb(m.transmit));
+  lb.transmit_alpha = lb.reflect_alpha;  // rough glass refracts through the facets it reflects from
   lb.fresnel = m.fresnel;
   return lb;
 }
