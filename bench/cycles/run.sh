@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# rts's path tracer against Blender's Cycles (issue 19): the same four scenes rendered by both,
+# rts's path tracer against Blender's Cycles (issue 19): the same five scenes rendered by both,
 # compared block by block with a z-test, then the CPU time each needs to reach the same error on
 # the Cornell box. Needs `scripts/ensure-deps --bench` (blender, python3-numpy) and a built rts.
 #
 #   bench/cycles/run.sh [OUTDIR] [SAMPLES] [SEEDS]      (defaults: build/cycles 256 4)
+#   SCENES="rough_glass" NO_TIMING=1 bench/cycles/run.sh    (some scenes, no equal-error timing)
 #
 # Everything runs on one thread under `nice` (the comparison is per CPU second, and the build
 # machine is shared). Outputs: OUTDIR/<scene>.sbs.png (rts | Cycles | 4x |difference|), the
@@ -29,7 +30,7 @@ rts_cpu() {  # scene out.pfm samples seed -> prints the process's CPU seconds
   awk '{ print $1 + $2 }' rts_time.txt
 }
 
-for scene in cornell caustic rough_metal env_lit; do
+for scene in ${SCENES:-cornell caustic rough_metal env_lit rough_glass}; do
   a=(); b=()
   for ((s = 0; s < SEEDS; s++)); do
     rts_cpu "$scene" "$scene.rts.$s.pfm" "$SPP" "$((s + 1))" > /dev/null
@@ -39,6 +40,7 @@ for scene in cornell caustic rough_metal env_lit; do
   $PY "$ROOT/bench/cycles/compare.py" --name "$scene" --a "${a[@]}" --b "${b[@]}" --png "$scene.sbs.png"
 done | tee compare.txt
 
+[[ -n "${NO_TIMING:-}" ]] && exit 0
 # Equal error on the Cornell box: the reference is the mean of every render above (rts's and
 # Cycles', which agree); each engine renders with fresh seeds at 16, 64 and 256 spp.
 {

@@ -20,7 +20,8 @@ import sys
 SIZE = 128
 
 # Materials: kind and its parameters. 'diffuse' albedo; 'emit' radiance on a diffuse surface;
-# 'glass' smooth dielectric; 'metal' GGX conductor of constant reflectance, alpha = roughness.
+# 'glass' dielectric, smooth or (a third value) GGX-rough with alpha = roughness; 'metal' GGX
+# conductor of constant reflectance, alpha = roughness.
 MATERIALS = {
     'white': ('diffuse', (0.73, 0.73, 0.73)),
     'red': ('diffuse', (0.65, 0.05, 0.05)),
@@ -30,6 +31,7 @@ MATERIALS = {
     'wall': ('diffuse', (0.55, 0.6, 0.65)),
     'softbox': ('emit', (0.0, 0.0, 0.0), (12.0, 12.0, 12.0)),
     'glass': ('glass', 1.5),
+    'frosted': ('glass', 1.5, 0.3),
     'gold': ('metal', (1.0, 0.78, 0.34), 0.3),
     'grey': ('diffuse', (0.5, 0.5, 0.5)),
 }
@@ -69,6 +71,11 @@ def rough_metal():
                 objects=room([('sphere', (0, 0.6, 0), 0.6, 'gold')]))
 
 
+def rough_glass():
+    return dict(camera=((0, 1.6, -3.2), (0, 0.5, 0), 40), depth=10,
+                objects=room([('sphere', (0, 0.6, 0), 0.6, 'frosted')]))
+
+
 def env_lit():
     return dict(camera=((0, 1.2, -3.2), (0, 0.5, 0), 45), depth=8, env='env.hdr',
                 objects=[('quad', (-3, 0, -3), (6, 0, 0), (0, 0, 6), 'grey'),
@@ -76,7 +83,8 @@ def env_lit():
                          ('sphere', (0.7, 0.6, 0.2), 0.6, 'gold')])
 
 
-SCENES = {'cornell': cornell, 'caustic': caustic, 'rough_metal': rough_metal, 'env_lit': env_lit}
+SCENES = {'cornell': cornell, 'caustic': caustic, 'rough_metal': rough_metal, 'env_lit': env_lit,
+          'rough_glass': rough_glass}
 
 
 # The environment: a sky gradient and a small bright sun, as a flat (uncompressed) Radiance .hdr
@@ -149,7 +157,8 @@ def rts_material(name):
     if m[0] == 'emit':
         return 'material { color = %s  diffuse = 1  specular = 0  emission = %s }' % (rts_rgb(m[1]), rts_rgb(m[2]))
     if m[0] == 'glass':
-        return 'material { color = rgb(1)  diffuse = 0  specular = 0  transmit = 1  ior = %g }' % m[1]
+        rough = '  roughness = %g' % m[2] if len(m) > 2 else ''
+        return 'material { color = rgb(1)  diffuse = 0  specular = 0  transmit = 1  ior = %g%s }' % (m[1], rough)
     if m[0] == 'metal':
         return ('material { color = rgb(0)  diffuse = 0  specular = 0  reflect = %s  roughness = %g }'
                 % (rts_rgb(m[1]), m[2]))
@@ -222,7 +231,9 @@ def blender_material(bpy, name, cache={}):
         nt.links.new(add.outputs[0], out.inputs['Surface'])
     elif m[0] == 'glass':
         b = nt.nodes.new('ShaderNodeBsdfGlass')
-        b.distribution = 'SHARP'
+        b.distribution = 'GGX' if len(m) > 2 else 'SHARP'
+        if len(m) > 2:
+            b.inputs['Roughness'].default_value = math.sqrt(m[2])  # alpha = r^2, as for metal
         b.inputs['Color'].default_value = (1, 1, 1, 1)
         b.inputs['IOR'].default_value = m[1]
         nt.links.new(b.outputs[0], out.inputs['Surface'])
