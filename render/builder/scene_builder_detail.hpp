@@ -1,0 +1,41 @@
+// What scene_builder.cpp and scene_nodes.cpp (the two halves of SceneBuilder) share: the
+// property names each block kind accepts, paths resolved against the naming file, and the
+// typed reading of a reference property.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "render/builder/block_properties.hpp"
+#include "render/scene/params.hpp"
+
+namespace rts::render::builder_detail {
+
+// The property names a block kind accepts (for unknown-name checks and suggestions), from the
+// tables in block_properties.cpp.
+inline std::vector<std::string_view> names_of_block(std::string_view kind) {
+  return property_names(find_block_info(kind)->properties);
+}
+// The property names `kind` accepts (a shape, light, group or CSG block), or null
+// (scene_nodes.cpp).
+const std::vector<std::string_view>* names_of(std::string_view kind);
+// Paths in a scene are relative to the file that names them.
+std::string resolve_path(const std::string& path, SourceRef where);
+
+// The reference in property `name` (a shape's material, a material's texture), or null when
+// it is absent: "property 'material' of sphere expects a material, got a number".
+template <typename Ref>
+const Ref* reference(ParamSet& ps, std::string_view name, std::string_view block, std::string_view what) {
+  const ParamValue* v = ps.value(name);
+  if (!v) return nullptr;
+  auto* ref = std::get_if<Ref>(v);
+  if (!ref)
+    ps.fail(*ps.find(name),
+            fmt::format("property '{}' of {} expects a {}, got a {}", name, block, what, param_type_name(*v)));
+  return ref;
+}
+
+}  // namespace rts::render::builder_detail
