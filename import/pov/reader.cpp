@@ -16,8 +16,7 @@ constexpr int kMaxNesting = 200;
 // Blocks whose contents are POV-Ray's function or spline syntax: skipped as a whole (the
 // writer warns), never read as items.
 bool is_raw_block(const std::string& kind) {
-  static const std::set<std::string> raw = {"function", "spline", "height_field",
-                                            "isosurface", "text", "sphere_sweep", "polygon", "bicubic_patch",
+  static const std::set<std::string> raw = {"function", "spline", "text", "sphere_sweep", "polygon", "bicubic_patch",
                                             "julia_fractal", "parametric", "quadric", "poly", "cubic", "quartic",
                                             "ovus", "lemon", "mesh2", "polynomial"};
   return raw.count(kind) > 0;
@@ -217,22 +216,22 @@ class Reader {
     it.loc = t.loc;
     it.comments = t.comments;
     if (t.kind == Token::Directive) return directive();
-    if (t.kind == Token::Name && is_punct("{", 1)) {
-      it.kind = Item::Nested;
-      it.name = t.text;
-      it.block = block();
-      return it;
-    }
     if (t.kind == Token::Name && t.text == "function") {
       // function { ... }, function(x, y) { ... }, function 300, 300 { ... } (height fields)
       next();
-      while (!is_punct("{") && peek().kind != Token::End && !is_punct("}")) next();
       it.kind = Item::Nested;
       it.name = "function";
       it.block = std::make_shared<Block>();
       it.block->kind = "function";
       it.block->loc = t.loc;
-      if (is_punct("{")) skip_braces();
+      function_header(*it.block);
+      if (is_punct("{")) function_body(*it.block);
+      return it;
+    }
+    if (t.kind == Token::Name && is_punct("{", 1)) {
+      it.kind = Item::Nested;
+      it.name = t.text;
+      it.block = block();
       return it;
     }
     if (t.kind == Token::Name && !name_is_value(t.text)) {
@@ -300,6 +299,66 @@ class Reader {
       fail(peek().loc, fmt::format("expected '}}' to close the '{}' block opened at line {}, got {}", b->kind,
                                    open.line, describe(peek())));
     return b;
+  }
+
+  // What comes between `function` and its body: the parameters `(a, b, c)` (a Keyword item
+  // "params", Name arguments) or a height field's resolution `W, H` (Keyword "resolution").
+  // Anything else up to the body is skipped, as before.
+  void function_header(Block& f) {
+    if (is_punct("(")) {
+      Item params;
+      params.kind = Item::Keyword;
+      params.name = "params";
+      params.loc = next().loc;
+      while (peek().kind == Token::Name) {
+        auto n = std::make_shared<Expr>();
+        n->kind = Expr::Name;
+        n->loc = peek().loc;
+        n->text = next().text;
+        params.args.push_back(n);
+        if (!accept(",")) break;
+      }
+      if (accept(")")) f.items.push_back(std::move(params));
+    } else if (starts_value()) {
+      std::size_t save = pos_;
+      try {
+        Item res;
+        res.kind = Item::Keyword;
+        res.name = "resolution";
+        res.loc = peek().loc;
+        res.args.push_back(expr());
+        if (accept(",")) res.args.push_back(expr());
+        f.items.push_back(std::move(res));
+      } catch (const SyntaxError&) {
+        pos_ = save;
+      }
+    }
+    while (!is_punct("{") && peek().kind != Token::End && !is_punct("}")) next();
+  }
+
+  // A function's body `{ expression }` as the block's Value item, when it reads as one
+  // expression of the scene language (arithmetic, calls, x, y, z); otherwise (POV-Ray's
+  // function-only syntax, a pattern { } inside) skipped, and the block has no body.
+  void function_body(Block& f) {
+    const std::size_t save = pos_;
+    const int save_paren = paren_;
+    try {
+      next();  // {
+      Item body;
+      body.kind = Item::Value;
+      body.loc = peek().loc;
+      ++paren_;  // comparisons and ?: read as in parentheses, as POV-Ray's functions allow
+      body.args.push_back(expr());
+      --paren_;
+      if (accept("}")) {
+        f.items.push_back(std::move(body));
+        return;
+      }
+    } catch (const SyntaxError&) {
+    }
+    paren_ = save_paren;
+    pos_ = save;
+    skip_braces();
   }
 
   // Skips a balanced { ... } starting at the current '{'.

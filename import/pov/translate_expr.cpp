@@ -181,6 +181,7 @@ Text Translator::expr(const Expr& e) {
     case Expr::String: return Text{rts_escaped(e.text), Type::String};
     case Expr::Name: {
       const std::string& n = e.text;
+      if (auto v = function_vars_.find(n); v != function_vars_.end()) return Text{v->second, Type::Float};
       if (Symbol* s = lookup(n)) return Text{rename(n), s->type};
       if (n == "x" || n == "y" || n == "z") {
         std::vector<double> v;
@@ -273,7 +274,8 @@ Text Translator::expr(const Expr& e) {
         return Text{"not " + c, Type::Bool, 4};
       }
       std::vector<double> v;
-      if (literal_vector(e, v) && v.size() >= 2) return Text{vec_text(v), Type::Vector};
+      // In a function body x, y, z are numbers (function_vars_): nothing folds to a vector.
+      if (function_vars_.empty() && literal_vector(e, v) && v.size() >= 2) return Text{vec_text(v), Type::Vector};
       return Text{"-" + paren(a, 9), a.type, 9};
     }
     case Expr::Binary: {
@@ -285,7 +287,7 @@ Text Translator::expr(const Expr& e) {
       }
       // Fold literal vectors (2 * x, <1, 2, 3> / 2): what people write for a direction.
       std::vector<double> v;
-      if (literal_vector(e, v) && v.size() >= 2) return Text{vec_text(v), Type::Vector};
+      if (function_vars_.empty() && literal_vector(e, v) && v.size() >= 2) return Text{vec_text(v), Type::Vector};
       Text a = expr(*e.args[0]), b = expr(*e.args[1]);
       if (op == "=" || op == "!=" || op == "<" || op == "<=" || op == ">" || op == ">=") {
         std::string o = op == "=" ? "==" : op;

@@ -25,13 +25,14 @@ bool MaterialProps::has(const std::string& name) const {
 
 bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
-                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "sor", "lathe", "prism", "union",
+                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "sor", "lathe", "prism",
+                                              "height_field", "isosurface", "union",
                                               "intersection", "difference", "merge", "object"};
   return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
 }
 
 bool Translator::is_unsupported_shape(const std::string& k) {
-  static const std::set<std::string> kinds = {"height_field", "isosurface", "text",
+  static const std::set<std::string> kinds = {"text",
                                               "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
                                               "parametric", "quadric", "poly", "cubic", "quartic", "ovus", "lemon",
                                               "mesh2", "polynomial"};
@@ -46,8 +47,6 @@ constexpr std::size_t kMaxTransformSteps = 10000;
 
 // The closest rts alternative for an unsupported shape, and whether it is planned.
 std::pair<std::string, bool> shape_alternative(const std::string& k) {
-  if (k == "height_field" || k == "isosurface")
-    return {"a mesh from an OBJ file (issue 20 plans the shape)", true};
   if (k == "text" || k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
   if (k == "mesh2") return {"mesh { vertices = [...]  faces = [...] }", true};
   return {"a mesh from an OBJ file", false};
@@ -55,7 +54,8 @@ std::pair<std::string, bool> shape_alternative(const std::string& k) {
 
 bool closed_kind(const std::string& k) {
   return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
-         k == "superellipsoid" || k == "sor" || k == "lathe" || k == "prism" || k == "blob" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
+         k == "superellipsoid" || k == "sor" || k == "lathe" || k == "prism" || k == "blob" || k == "height_field" ||
+         k == "isosurface" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
 }
 
 bool is_texture_part(const std::string& k) {
@@ -650,6 +650,14 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   const Block* items_of = &b;
   if (k == "blob") {
     blob_rest = blob_components(b, props);
+    items_of = &blob_rest;
+  }
+  if (k == "height_field" || k == "isosurface") {
+    blob_rest = solid_components(w, b, props);
+    if (blob_rest.kind == "unsupported") {
+      w.line(fmt::format("{}group {{ }}  // POV-Ray's {} is not translated (rts import warned)", prefix, k));
+      return;
+    }
     items_of = &blob_rest;
   }
   Block lathe_rest;  // `linear_spline N, <a>, ...` reads as a keyword with the values as its arguments

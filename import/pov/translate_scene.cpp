@@ -292,6 +292,14 @@ void Translator::declare(Writer& w, const Item& it) {
       std::string g = pigment_value(p);
       auto at = g.find("color_map = ");
       w.line(head + (at == std::string::npos ? "[]" : g.substr(at + 12, g.size() - at - 12 - 2)));
+    } else if (b.kind == "function") {
+      // A function of x, y, z (or of its named parameters): a macro, called as POV-Ray calls it.
+      if (!declare_function(w, it.name, b)) {
+        unsupported(b.loc, "function", "a function written as one expression of its parameters (no pattern or POV-Ray-only syntax in it)", false);
+        w.line(head + "none  // POV-Ray's function is not translated");
+      }
+      define(it.name, Symbol{Type::Macro, nullptr, ""});
+      return;
     } else if (b.kind == "camera") {
       s.type = Type::Camera;
       w.line(fmt::format("// camera {}: written where it is placed", it.name));

@@ -88,6 +88,16 @@ class Translator {
   // A blob's components (translate_shapes.cpp) as rts's blob properties, added to `props`;
   // returns the block without them (its texture and transforms).
   Block blob_components(const Block& b, std::vector<std::string>& props);
+  // An isosurface's or height field's own items (translate_shapes.cpp) as rts properties, added
+  // to `props`; its function, if any, written first as a macro of the point. Returns the block
+  // without them (its texture and transforms).
+  Block solid_components(Writer& w, const Block& b, std::vector<std::string>& props);
+  // A function block's body as rts text, with the names in `vars` (x, y, z) replaced; "" when
+  // the reader kept no body (POV-Ray syntax rts does not read).
+  std::string function_text(const Block& f, const std::map<std::string, std::string>& vars);
+  // `#declare F = function(a, b) { ... }` as `macro F(a, b) { return ... }` (x, y, z when none
+  // are named, as POV-Ray's); false when the body was not read.
+  bool declare_function(Writer& w, const std::string& name, const Block& f);
   // The material a POV-Ray texture-like block (texture, pigment, finish, normal, interior,
   // material) adds to `m`.
   void texture_part(const Item& it, MaterialProps& m);
@@ -148,6 +158,9 @@ class Translator {
   MaterialProps default_texture_;  // #default { ... }
   Writer* pending_comment_ = nullptr;
   int include_depth_ = 0;
+  // Inside a function body: POV-Ray's x, y, z are the point's coordinates, not axis vectors.
+  std::map<std::string, std::string> function_vars_;
+  int functions_written_ = 0;  // macros made from isosurface and height field functions
 
   Symbol* lookup(const std::string& name);
   void define(const std::string& name, Symbol s) { scopes_.back()[name] = std::move(s); }

@@ -68,6 +68,13 @@ expect_grep "$TMP/err" "^unsupported.pov:4:1: warning:" "render prints the warni
 expect_exit 1 "--strict makes it an error" -- "$RTS" import --strict unsupported.pov
 expect_grep "$TMP/err" "^unsupported.pov:4:1: error: POV-Ray's 'sphere_sweep'" "located error"
 expect_exit 1 "render --strict" -- "$RTS" render --strict unsupported.pov -o "$TMP/strict.png"
+# An isosurface's function is read as an expression of x, y, z; a body that is not one (a
+# pattern) is a located warning and the rest is translated.
+expect_exit 0 "an isosurface function rts cannot read is a warning" -- "$RTS" import iso_function.pov
+expect_grep "$TMP/err" "^iso_function.pov:3:14: warning: POV-Ray's 'function' is not translated; closest in rts: a function written as one expression" "located at the function"
+expect_grep "$TMP/err" "^iso_function.pov:4:81: warning: POV-Ray's 'open (isosurface)' is not translated" "located at open"
+expect_grep "$TMP/out" "^macro pov_iso_1\\(p\\) \\{ return p.x \\* p.x \\+ p.y \\* p.y \\+ p.z \\* p.z - 0.25 \\}" "the readable function becomes a macro of the point"
+expect_exit 1 "--strict: the unreadable function is an error" -- "$RTS" import --strict iso_function.pov
 
 # Recognised by content under another name, and with --format pov.
 cp "$golden/conv_gamma.pov" "$TMP/scene.txt"
