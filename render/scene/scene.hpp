@@ -241,6 +241,7 @@ struct Prism {
   bool open = false;                 // no caps at the two heights
   SplineKind spline = SplineKind::Linear;
   std::vector<SplineSegment> curves;  // the outline's spline pieces (x, z as x, y); empty for linear
+  std::vector<double> curve_outward;  // per curve: +1 when (dz, -dx) along it points out, else -1
   bool conic = false;                // conic_sweep: the outline scaled by y from the apex at the origin
 };
 

@@ -26,7 +26,9 @@
 #include "render/geometry/aabb.hpp"
 #include "render/geometry/ray.hpp"
 #include "render/geometry/shapes/keep_crossings.hpp"
+#include "render/geometry/shapes/poly_roots.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/geometry/shapes/spline_segments.hpp"
 #include "render/geometry/surface_hit.hpp"
 #include "render/geometry/tolerances.hpp"
 #include "render/scene/params.hpp"
@@ -49,10 +51,121 @@ inline bool prism_point_inside(const std::vector<PrismEdge>& edges, double x, do
   return in;
 }
 
+// The cubic c(w) - v (w in [0, 1]) with its degree reduced: the sign changes poly_roots finds.
+// Returns how many roots, ascending. A segment's ends are evaluated as the polynomial says:
+// at w = 0 exactly its first point, at w = 1 its last to a rounding, so a line through a joint
+// within ~1e-16 of the outline's size might count it on both sides or neither.
+inline int prism_curve_roots(const double* c, double v, double* out) {
+  double e[4] = {c[0] - v, c[1], c[2], c[3]};
+  int deg = 3;
+  while (deg > 0 && e[deg] == 0.0) --deg;
+  if (deg == 0) return 0;  // the line runs along a straight piece: never a crossing
+  return poly_roots(e, deg, 0.0, 1.0, out);
+}
+
+// Even-odd for a spline outline: crossings of the line z = const left of x.
+inline bool prism_curves_inside(const std::vector<SplineSegment>& curves, double x, double z) {
+  bool in = false;
+  for (const SplineSegment& g : curves) {
+    if (z < g.y_lo || z > g.y_hi) continue;
+    double ws[3];
+    int n = prism_curve_roots(g.y, z, ws);
+    for (int i = 0; i < n; ++i)
+      if (spline_eval(g.x, ws[i]) < x) in = !in;
+  }
+  return in;
+}
+
+// The spline outline's curves with POV-Ray's sub-outline rule; "" or what is wrong. Quadratic:
+// each sub-outline is a control point, then points until one repeats its first curve point
+// (the point after the control). Cubic: the same and one more control point after it. Bezier:
+// 4 points a segment; a segment whose first point differs from the previous one's last starts
+// a new sub-outline, and the previous one must end where it started. POV-Ray ignores an
+// unclosed spline prism (with a warning); rts says so.
+inline std::string prism_spline_curves(Prism& p) {
+  const std::vector<Vec3>& q = p.points;
+  const int n = static_cast<int>(q.size());
+  auto same = [](const Vec3& a, const Vec3& b) {
+    return std::abs(a.x - b.x) < tol::kPrismSamePoint && std::abs(a.y - b.y) < tol::kPrismSamePoint;
+  };
+  p.curves.clear();
+  if (p.spline == SplineKind::Bezier) {
+    int loop_start = 0;
+    for (int i = 4; i < n; i += 4) {
+      if (same(q[i], q[i - 1])) continue;
+      if (!same(q[i - 1], q[loop_start]))
+        return fmt::format("the bezier outline from point {} does not end where it starts (point {} differs from point {})",
+                           loop_start + 1, i, loop_start + 1);
+      loop_start = i;
+    }
+    if (!same(q[n - 1], q[loop_start]))
+      return fmt::format("the bezier outline from point {} does not end where it starts (point {} differs from point {})",
+                         loop_start + 1, n, loop_start + 1);
+    p.curves = spline_segments(SplineKind::Bezier, q);
+    return "";
+  }
+  const bool cubic = p.spline == SplineKind::Cubic;
+  const int last = cubic ? 3 : 2;  // a segment uses points i .. i + last
+  const std::vector<SplineSegment> all = spline_segments(p.spline, q);  // segment i starts at point i
+  Vec3 first = q[1];
+  int first_index = 1;
+  bool closed = false;
+  for (int i = 0; i < n - 1; ++i) {
+    if (i + last >= n) {  // points left over that make no segment: the outline from first is open
+      closed = false;
+      break;
+    }
+    p.curves.push_back(all[i]);
+    closed = same(q[i + 2], first);
+    if (closed) {
+      i += last;
+      if (i + 2 < n) {
+        first = q[i + 2];
+        first_index = i + 2;
+      }
+    }
+  }
+  if (!closed)
+    return fmt::format("the {} outline from point {} does not close: a later point must repeat point {}{}",
+                       spline_kind_name(p.spline), first_index + 1, first_index + 1,
+                       cubic ? ", followed by one control point" : "");
+  return "";
+}
+
 }  // namespace detail
 
-// Edges (POV-Ray's sub-polygon rule), their outward sides, heights and bounds from p.points.
+// Edges (POV-Ray's sub-polygon rule), their outward sides, heights and bounds from p.points;
+// for a spline outline its curves instead (an unclosed one has none).
 inline void prism_setup(Prism& p) {
+  p.y_min = std::min(p.height1, p.height2);
+  p.y_max = std::max(p.height1, p.height2);
+  if (p.spline != SplineKind::Linear) {
+    p.edges.clear();
+    if (!detail::prism_spline_curves(p).empty()) p.curves.clear();
+    p.x_min = p.z_min = Interval::kInfinity;
+    p.x_max = p.z_max = -Interval::kInfinity;
+    for (const SplineSegment& g : p.curves) {
+      p.x_min = std::min(p.x_min, g.x_lo);
+      p.x_max = std::max(p.x_max, g.x_hi);
+      p.z_min = std::min(p.z_min, g.y_lo);
+      p.z_max = std::max(p.z_max, g.y_hi);
+    }
+    if (p.curves.empty()) p.x_min = p.x_max = p.z_min = p.z_max = 0.0;
+    // Which side of each curve is outside: a point just off its middle, tested even-odd.
+    p.curve_outward.assign(p.curves.size(), 1.0);
+    for (std::size_t j = 0; j < p.curves.size(); ++j) {
+      const SplineSegment& g = p.curves[j];
+      double dx = spline_slope(g.x, 0.5), dz = spline_slope(g.y, 0.5), len = std::sqrt(dx * dx + dz * dz);
+      if (!(len > 0.0)) continue;
+      double size = std::max(p.x_max - p.x_min, p.z_max - p.z_min);
+      double off = 1e-6 * size;
+      double mx = spline_eval(g.x, 0.5) + off * dz / len, mz = spline_eval(g.y, 0.5) - off * dx / len;
+      p.curve_outward[j] = detail::prism_curves_inside(p.curves, mx, mz) ? -1.0 : 1.0;
+    }
+    return;
+  }
+  p.curves.clear();
+  p.curve_outward.clear();
   const std::vector<Vec3>& q = p.points;
   const int n = static_cast<int>(q.size());
   p.edges.clear();
@@ -90,7 +203,9 @@ inline void prism_setup(Prism& p) {
 
 // Even-odd inside the solid (caps included whether open or not).
 inline bool prism_inside(const Prism& p, const Vec3& pt) {
-  return pt.y >= p.y_min && pt.y <= p.y_max && detail::prism_point_inside(p.edges, pt.x, pt.z);
+  if (!(pt.y >= p.y_min && pt.y <= p.y_max)) return false;
+  return p.spline != SplineKind::Linear ? detail::prism_curves_inside(p.curves, pt.x, pt.z)
+                                        : detail::prism_point_inside(p.edges, pt.x, pt.z);
 }
 
 // The `prism` block: see docs/shapes.md#prism.
@@ -98,13 +213,15 @@ template <>
 struct ShapeTraits<Prism> {
   static constexpr PropertyInfo kProperties[] = {
       {"points", "list of `[x, z]`, at least 3", "*required*",
-       "The polygon in the x-z plane, joined by straight segments; a point repeating its sub-polygon's first "
+       "The outline in the x-z plane, joined as `spline` says; a point repeating its sub-polygon's first "
        "point closes it and the next starts another (inside: even-odd)."},
       {"height1", "number", "`0`", "The height (y) of one cap."},
       {"height2", "number", "`1`", "The height (y) of the other cap; must differ from `height1`."},
       {"open", "bool", "`false`", "`true` leaves out the two caps (then not a CSG operand)."},
       {"sweep", "string", "`\"linear\"`", "`\"linear\"`: the polygon is extruded unchanged (POV-Ray's linear_sweep)."},
-      {"spline", "string", "`\"linear\"`", "`\"linear\"`: straight edges (POV-Ray's linear_spline)."},
+      {"spline", "string", "`\"linear\"`",
+       "`\"linear\"`: straight edges (POV-Ray's linear_spline); `\"quadratic\"`, `\"cubic\"`, `\"bezier\"`: POV-Ray's "
+       "quadratic_spline, cubic_spline, bezier_spline through the same points (each sub-outline must close)."},
   };
   static constexpr ShapeInfo kInfo{.name = "prism", .properties = kProperties, .closure = Closure::WhenCapped};
   static Prism build(ParamSet& ps) {
@@ -123,8 +240,25 @@ struct ShapeTraits<Prism> {
                                                          "got a {}",
                                                          param_type_name(*v)));
     }
+    std::string spline = ps.string("spline", "linear");
+    if (!spline_kind_from_name(spline, g.spline))
+      throw SceneError(loc_of(ps, "spline"),
+                       fmt::format("prism spline \"{}\" is not one of \"linear\", \"quadratic\", \"cubic\", \"bezier\"",
+                                   spline));
     const int n = static_cast<int>(g.points.size());
     if (n < 3) throw SceneError(loc_of(ps, "points"), fmt::format("prism needs at least 3 points, got {}", n));
+    // POV-Ray's minimums: a closed outline needs a control point, 3 points and the closing one
+    // (quadratic), and one more control point (cubic).
+    if (g.spline == SplineKind::Quadratic && n < 5)
+      throw SceneError(loc_of(ps, "points"),
+                       fmt::format("a prism with a quadratic spline needs at least 5 points (a control point, then a "
+                                   "closed outline), got {}", n));
+    if (g.spline == SplineKind::Cubic && n < 6)
+      throw SceneError(loc_of(ps, "points"),
+                       fmt::format("a prism with a cubic spline needs at least 6 points (a control point, a closed "
+                                   "outline, a control point), got {}", n));
+    if (std::string need = spline_count_problem(g.spline, n, 3); g.spline == SplineKind::Bezier && !need.empty())
+      throw SceneError(loc_of(ps, "points"), fmt::format("a prism with a bezier spline needs {}, got {}", need, n));
     if (n > kMaxPrismPoints)
       throw SceneError(loc_of(ps, "points"),
                        fmt::format("prism has {} points, more than the {} one prism may hold", n, kMaxPrismPoints));
@@ -146,12 +280,11 @@ struct ShapeTraits<Prism> {
     if (sweep != "linear")
       throw SceneError(loc_of(ps, "sweep"),
                        fmt::format("prism sweep \"{}\" is not one of \"linear\" (supported) or \"conic\"", sweep));
-    std::string spline = ps.string("spline", "linear");
-    if (spline != "linear")
-      throw SceneError(loc_of(ps, "spline"),
-                       fmt::format("prism spline \"{}\" is not supported: only \"linear\" (POV-Ray's linear_spline) "
-                                   "is; quadratic, cubic and bezier splines are not",
-                                   spline));
+    if (g.spline != SplineKind::Linear) {
+      Prism probe = g;
+      if (std::string problem = detail::prism_spline_curves(probe); !problem.empty())
+        throw SceneError(loc_of(ps, "points"), "prism " + problem);
+    }
     prism_setup(g);
     return g;
   }
@@ -166,14 +299,15 @@ enum class PrismPart : uint8_t { Wall, Bottom, Top };
 struct PrismCrossing {
   double t;
   PrismPart part;
-  int edge;  // for a wall
+  int edge;        // for a wall: its edge, or its curve for a spline outline
+  double w = 0.0;  // for a spline wall: where on its curve
 };
 
 // The crossings of the prism's surfaces along the whole line beyond t_after: the first max_out,
 // ascending; returns how many. A closed prism, whole line: in and out alternately.
 inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, int max_out,
                            double t_after = -Interval::kInfinity) {
-  if (p.edges.empty()) return 0;
+  if (p.edges.empty() && p.curves.empty()) return 0;
   const double len = glm::length(ray.direction);
   if (!(len > 0.0) || !std::isfinite(len)) return 0;
   const Vec3 d = ray.direction / len;
@@ -207,7 +341,33 @@ inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, i
   const double a = d.x * d.x + d.z * d.z;
   bool parity_a = false;  // inside the polygon where the line enters the slab
   bool walls_odd = false;  // an odd number of walls crossed inside the slab
-  if (a > 1e-200) {
+  if (a > 1e-200 && !p.curves.empty()) {
+    // A curve's side of the ray's line in x-z is a cubic in w: its sign changes are crossings.
+    const int nc = static_cast<int>(p.curves.size());
+    for (int j = 0; j < nc; ++j) {
+      const SplineSegment& g = p.curves[j];
+      // The line misses the curve's box: all four corners on one side.
+      auto side_of = [&](double x, double z) { return d.x * (z - p0.z) - d.z * (x - p0.x); };
+      double c0 = side_of(g.x_lo, g.y_lo), c1 = side_of(g.x_hi, g.y_lo), c2 = side_of(g.x_lo, g.y_hi),
+             c3 = side_of(g.x_hi, g.y_hi);
+      if ((c0 > 0.0 && c1 > 0.0 && c2 > 0.0 && c3 > 0.0) || (c0 < 0.0 && c1 < 0.0 && c2 < 0.0 && c3 < 0.0)) continue;
+      double sc3[4];
+      for (int k = 0; k < 4; ++k) sc3[k] = d.x * g.y[k] - d.z * g.x[k];
+      double ws[3];
+      int nr = detail::prism_curve_roots(sc3, d.x * p0.z - d.z * p0.x, ws);
+      for (int i = 0; i < nr; ++i) {
+        const double x = spline_eval(g.x, ws[i]), z = spline_eval(g.y, ws[i]);
+        const double s = ((x - p0.x) * d.x + (z - p0.z) * d.z) / a;
+        if (s < sa) {
+          parity_a = !parity_a;
+        } else if (s < sb || (p.open && s == sb)) {
+          walls_odd = !walls_odd;
+          double t = (sc + s) / len;
+          if (t > t_after) detail::keep_first_crossings(out, count, max_out, PrismCrossing{t, PrismPart::Wall, j, ws[i]});
+        }
+      }
+    }
+  } else if (a > 1e-200) {
     const int ne = static_cast<int>(p.edges.size());
     for (int j = 0; j < ne; ++j) {
       const PrismEdge& e = p.edges[j];
@@ -227,7 +387,8 @@ inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, i
     }
   } else {
     // Vertical: no wall is crossed; the caps are when the line's x-z point is inside.
-    parity_a = detail::prism_point_inside(p.edges, p0.x, p0.z);
+    parity_a = p.spline != SplineKind::Linear ? detail::prism_curves_inside(p.curves, p0.x, p0.z)
+                                              : detail::prism_point_inside(p.edges, p0.x, p0.z);
   }
   if (!p.open && d.y != 0.0) {
     if (parity_a) emit(sa, cap_a, -1);
@@ -240,7 +401,21 @@ inline void prism_hit_at(const Prism& p, const Ray& ray, const PrismCrossing& c,
   Vec3 pt = ray.at(c.t);
   double err = 4.0 * ray_point_error(ray, c.t);
   Vec3 n;
-  if (c.part == PrismPart::Wall) {
+  if (c.part == PrismPart::Wall && !p.curves.empty()) {
+    const SplineSegment& g = p.curves[c.edge];
+    double dx = spline_slope(g.x, c.w), dz = spline_slope(g.y, c.w);
+    if (dx == 0.0 && dz == 0.0) {  // a cusp: the chord over a short step
+      double w1 = std::clamp(c.w + 1e-6, 0.0, 1.0), w0 = std::clamp(c.w - 1e-6, 0.0, 1.0);
+      dx = spline_eval(g.x, w1) - spline_eval(g.x, w0);
+      dz = spline_eval(g.y, w1) - spline_eval(g.y, w0);
+    }
+    double nl = std::sqrt(dx * dx + dz * dz);
+    n = nl > 0.0 ? Vec3(dz / nl, 0.0, -dx / nl) * p.curve_outward[c.edge] : Vec3(1, 0, 0);
+    // The point is the ray's at a root polished to the last bit in w: a few ulps of the size.
+    const double size = std::max({std::abs(p.x_min), std::abs(p.x_max), std::abs(p.z_min), std::abs(p.z_max)});
+    err += error_gamma(64) * size;
+    pt.y = std::clamp(pt.y, p.y_min, p.y_max);
+  } else if (c.part == PrismPart::Wall) {
     const PrismEdge& e = p.edges[c.edge];
     n = glm::normalize(Vec3(e.z1 - e.z0, 0.0, -(e.x1 - e.x0))) * e.outward;
     // The edge's point is interpolated to within a few ulps of the shape's size.
