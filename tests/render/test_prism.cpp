@@ -314,8 +314,8 @@ TEST_CASE("prism splines: POV-Ray's closing rule; an unclosed outline has no cur
   probe.spline = SplineKind::Cubic;
   probe.points = {Vec3(-1, 1, 0), Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)};
   // The loop closes at the last point, but a cubic needs a control point after it.
-  CHECK(detail::prism_spline_curves(probe).find("does not close: a later point must repeat point 2, followed by one "
-                                                "control point") != std::string::npos);
+  CHECK(detail::prism_spline_curves(probe).find("does not close (a later point must repeat point 2, followed by one "
+                                                "control point)") != std::string::npos);
   probe.spline = SplineKind::Bezier;
   probe.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
   CHECK(detail::prism_spline_curves(probe).find("does not end where it starts") != std::string::npos);

@@ -126,7 +126,7 @@ inline std::string prism_spline_curves(Prism& p) {
     }
   }
   if (!closed)
-    return fmt::format("the {} outline from point {} does not close: a later point must repeat point {}{}",
+    return fmt::format("the {} outline from point {} does not close (a later point must repeat point {}{})",
                        spline_kind_name(p.spline), first_index + 1, first_index + 1,
                        cubic ? ", followed by one control point" : "");
   return "";
@@ -283,7 +283,7 @@ struct ShapeTraits<Prism> {
     if (g.spline != SplineKind::Linear) {
       Prism probe = g;
       if (std::string problem = detail::prism_spline_curves(probe); !problem.empty())
-        throw SceneError(loc_of(ps, "points"), "prism " + problem);
+        throw SceneError(loc_of(ps, "points"), "prism: " + problem);
     }
     prism_setup(g);
     return g;
