@@ -607,16 +607,6 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     w.line(fmt::format("{}group {{ }}  // POV-Ray's {} is not translated (rts import warned)", prefix, k));
     return;
   }
-  if (k == "prism") {
-    // rts's prism has every spline but only linear_sweep so far.
-    for (const Item& it : b.items)
-      if (it.kind == Item::Keyword && it.name == "conic_sweep") {
-        unsupported(it.loc, it.name, "a prism swept straight (linear_sweep), or a mesh from an OBJ file", true);
-        w.line(fmt::format("{}group {{ }}  // POV-Ray's prism with {} is not translated (rts import warned)", prefix,
-                           it.name));
-        return;
-      }
-  }
   if (k == "object") {
     // object { sphere { ... } modifiers }: the inner object with the modifiers after its own.
     const Item* inner = nullptr;
@@ -649,7 +639,8 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     lathe_rest = b;
     lathe_rest.items.clear();
     for (const Item& it : b.items) {
-      if (it.kind == Item::Keyword && (is_spline_keyword(it.name) || it.name == "linear_sweep") && !it.args.empty()) {
+      if (it.kind == Item::Keyword && (is_spline_keyword(it.name) || it.name == "linear_sweep" || it.name == "conic_sweep") &&
+          !it.args.empty()) {
         Item keyword = it;  // the keyword alone (it says which spline), then its values
         keyword.args.clear();
         lathe_rest.items.push_back(std::move(keyword));
@@ -715,7 +706,9 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         } else if ((k == "lathe" || k == "prism") && is_spline_keyword(it.name)) {
           props.push_back(fmt::format("spline = \"{}\"", it.name.substr(0, it.name.find('_'))));
         } else if (k == "prism" && it.name == "linear_sweep") {
-          // rts's prism is swept straight
+          // rts's prism is swept straight unless told
+        } else if (k == "prism" && it.name == "conic_sweep") {
+          props.push_back("sweep = \"conic\"");
         } else if (it.name == "hollow" || it.name == "sturm" || it.name == "smooth" || it.name == "double_illuminate" ||
                    it.name == "no_reflection" || it.name == "no_radiosity" || it.name == "cutaway_textures" ||
                    it.name == "split_union") {

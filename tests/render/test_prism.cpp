@@ -320,3 +320,56 @@ TEST_CASE("prism splines: POV-Ray's closing rule; an unclosed outline has no cur
   probe.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
   CHECK(detail::prism_spline_curves(probe).find("does not end where it starts") != std::string::npos);
 }
+
+TEST_CASE("prism conic_sweep: a square outline swept from the apex is a pyramid's frustum", "[prism]") {
+  auto square = [](bool bezier, double h1, double h2) {
+    Prism p = bezier ? block_bezier() : block();
+    p.height1 = h1;
+    p.height2 = h2;
+    p.conic = true;
+    prism_setup(p);
+    return p;
+  };
+  for (bool bezier : {false, true}) {
+    INFO("bezier " << bezier);
+    Prism p = square(bezier, 0.5, 1.0);
+    CHECK(p.x_min == Approx(-1.0).epsilon(1e-8));
+    CHECK(p.x_max == Approx(1.0).epsilon(1e-8));
+    // Across at y = 0.75: the walls |x| = y.
+    PrismCrossing c[8];
+    REQUIRE(crossings(p, Ray{Vec3(-5, 0.75, 0), Vec3(1, 0, 0)}, c) == 2);
+    CHECK(c[0].t == Approx(4.25).epsilon(1e-12));
+    CHECK(c[1].t == Approx(5.75).epsilon(1e-12));
+    SurfaceHit h;
+    prism_hit_at(p, Ray{Vec3(-5, 0.75, 0), Vec3(1, 0, 0)}, c[0], h);
+    CHECK(h.normal.x == Approx(-std::sqrt(0.5)).epsilon(1e-12));
+    CHECK(h.normal.y == Approx(-std::sqrt(0.5)).epsilon(1e-12));  // the wall leans out: it faces down
+    // Down through the middle: the top cap (y = 1) and the bottom one (y = 0.5).
+    REQUIRE(crossings(p, Ray{Vec3(0.2, 5, 0.1), Vec3(0, -1, 0)}, c) == 2);
+    CHECK(c[0].t == Approx(4.0).epsilon(1e-14));
+    CHECK(c[1].t == Approx(4.5).epsilon(1e-14));
+    // Down at x = 0.7: through the top cap, out of the leaning wall at y = 0.7.
+    REQUIRE(crossings(p, Ray{Vec3(0.7, 5, 0.1), Vec3(0, -1, 0)}, c) == 2);
+    CHECK(c[1].part == PrismPart::Wall);
+    CHECK(c[1].t == Approx(4.3).epsilon(1e-12));
+    CHECK(prism_inside(p, Vec3(0.7, 0.8, 0.1)));
+    CHECK_FALSE(prism_inside(p, Vec3(0.7, 0.6, 0.1)));
+    // Many rays: crossings pair up, normals face in then out, walls on the swept surface.
+    for (int i = 0; i < 80; ++i) {
+      Vec3 target(0.4 * std::sin(i), 0.75 + 0.2 * std::cos(2.1 * i), 0.4 * std::cos(3 * i));
+      Vec3 dir = glm::normalize(Vec3(std::cos(1.7 * i), 0.9 * std::sin(2.3 * i), std::sin(1.7 * i)));
+      Ray ray{target - 4.0 * dir, dir};
+      int n = crossings(p, ray, c);
+      INFO("ray " << i);
+      CHECK(n % 2 == 0);
+      for (int k = 0; k < n; ++k) {
+        prism_hit_at(p, ray, c[k], h);
+        CHECK(std::abs(glm::length(h.normal) - 1.0) < 1e-12);
+        CHECK(glm::dot(h.normal, ray.direction) * (k % 2 == 0 ? 1 : -1) < 0.0);
+        Vec3 q = ray.at(c[k].t);
+        if (c[k].part == PrismPart::Wall)
+          CHECK(std::abs(std::max(std::abs(q.x), std::abs(q.z)) - q.y) < 1e-12);
+      }
+    }
+  }
+}

@@ -295,9 +295,11 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
   CHECK(d.loc.line == 2);
   s = eval_text("prism { spline = \"quadratic\"  points = [[0, 1], [0, 0], [1, 0], [0, 1], [0, 0]] }\n");
   CHECK(std::get<render::Prism>(s.shapes.at(0).geometry).curves.size() == 3);
-  d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  sweep = \"conic\" }");
-  CHECK(d.message == "prism sweep \"conic\" (POV-Ray's conic_sweep) is not supported yet; only \"linear\" is");
+  d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  sweep = \"radial\" }");
+  CHECK(d.message == "prism sweep \"radial\" is not one of \"linear\" or \"conic\"");
   CHECK(d.loc.line == 3);
+  s = eval_text("prism { points = [[0, 0], [1, 0], [0, 1]]  sweep = \"conic\"  height1 = 0.5 }\n");
+  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry).conic);
   d = eval_diagnostic("prism { height1 = 0 }");
   CHECK(d.message == "prism needs property 'points'");
   d = eval_diagnostic("difference { prism { points = [[0, 0], [1, 0], [0, 1]]  open = true } sphere { radius = 1 } }");

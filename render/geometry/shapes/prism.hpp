@@ -134,9 +134,11 @@ inline std::string prism_spline_curves(Prism& p) {
 
 }  // namespace detail
 
+namespace detail {
+
 // Edges (POV-Ray's sub-polygon rule), their outward sides, heights and bounds from p.points;
 // for a spline outline its curves instead (an unclosed one has none).
-inline void prism_setup(Prism& p) {
+inline void prism_outline_setup(Prism& p) {
   p.y_min = std::min(p.height1, p.height2);
   p.y_max = std::max(p.height1, p.height2);
   if (p.spline != SplineKind::Linear) {
@@ -201,9 +203,40 @@ inline void prism_setup(Prism& p) {
   }
 }
 
+// conic_sweep: the walls are walked as curves whatever the spline (straight edges as straight
+// curves), and the bounds are the outline's scaled by both heights.
+inline void prism_conic_setup(Prism& p) {
+  if (p.spline == SplineKind::Linear) {
+    p.curves.clear();
+    p.curve_outward.clear();
+    for (const PrismEdge& e : p.edges) {
+      SplineSegment g{{e.x0, e.x1 - e.x0, 0.0, 0.0}, {e.z0, e.z1 - e.z0, 0.0, 0.0}, std::min(e.x0, e.x1),
+                      std::max(e.x0, e.x1), std::min(e.z0, e.z1), std::max(e.z0, e.z1)};
+      p.curves.push_back(g);
+      p.curve_outward.push_back(e.outward);
+    }
+  }
+  auto scaled = [&](double& lo, double& hi) {
+    double a = lo * p.y_min, b = lo * p.y_max, c = hi * p.y_min, d = hi * p.y_max;
+    lo = std::min({a, b, c, d});
+    hi = std::max({a, b, c, d});
+  };
+  scaled(p.x_min, p.x_max);
+  scaled(p.z_min, p.z_max);
+}
+
+}  // namespace detail
+
+// The outline's edges or curves and the bounds: see prism_outline_setup, prism_conic_setup.
+inline void prism_setup(Prism& p) {
+  detail::prism_outline_setup(p);
+  if (p.conic) detail::prism_conic_setup(p);
+}
+
 // Even-odd inside the solid (caps included whether open or not).
 inline bool prism_inside(const Prism& p, const Vec3& pt) {
   if (!(pt.y >= p.y_min && pt.y <= p.y_max)) return false;
+  if (p.conic) return pt.y != 0.0 && detail::prism_curves_inside(p.curves, pt.x / pt.y, pt.z / pt.y);
   return p.spline != SplineKind::Linear ? detail::prism_curves_inside(p.curves, pt.x, pt.z)
                                         : detail::prism_point_inside(p.edges, pt.x, pt.z);
 }
@@ -218,7 +251,9 @@ struct ShapeTraits<Prism> {
       {"height1", "number", "`0`", "The height (y) of one cap."},
       {"height2", "number", "`1`", "The height (y) of the other cap; must differ from `height1`."},
       {"open", "bool", "`false`", "`true` leaves out the two caps (then not a CSG operand)."},
-      {"sweep", "string", "`\"linear\"`", "`\"linear\"`: the polygon is extruded unchanged (POV-Ray's linear_sweep)."},
+      {"sweep", "string", "`\"linear\"`",
+       "`\"linear\"`: the outline is extruded unchanged (POV-Ray's linear_sweep); `\"conic\"`: the outline is scaled "
+       "by the height, from a point at the origin (POV-Ray's conic_sweep: the outline as given at y = 1)."},
       {"spline", "string", "`\"linear\"`",
        "`\"linear\"`: straight edges (POV-Ray's linear_spline); `\"quadratic\"`, `\"cubic\"`, `\"bezier\"`: POV-Ray's "
        "quadratic_spline, cubic_spline, bezier_spline through the same points (each sub-outline must close)."},
@@ -274,12 +309,10 @@ struct ShapeTraits<Prism> {
                        fmt::format("prism height1 and height2 must differ (both are {})", g.height1));
     g.open = ps.boolean("open", g.open);
     std::string sweep = ps.string("sweep", "linear");
-    if (sweep == "conic")
+    if (sweep != "linear" && sweep != "conic")
       throw SceneError(loc_of(ps, "sweep"),
-                       "prism sweep \"conic\" (POV-Ray's conic_sweep) is not supported yet; only \"linear\" is");
-    if (sweep != "linear")
-      throw SceneError(loc_of(ps, "sweep"),
-                       fmt::format("prism sweep \"{}\" is not one of \"linear\" (supported) or \"conic\"", sweep));
+                       fmt::format("prism sweep \"{}\" is not one of \"linear\" or \"conic\"", sweep));
+    g.conic = sweep == "conic";
     if (g.spline != SplineKind::Linear) {
       Prism probe = g;
       if (std::string problem = detail::prism_spline_curves(probe); !problem.empty())
@@ -303,6 +336,58 @@ struct PrismCrossing {
   double w = 0.0;  // for a spline wall: where on its curve
 };
 
+namespace detail {
+
+// prism_crossings for conic_sweep: the wall of the outline's point (x, z) is the line from the
+// apex (the origin) through (x, 1, z), so the ray (p0 + s d, re-centred on the shape) crosses
+// the wall of curve point w where (x(w), 1, z(w)) . (p0 x d) = 0, a cubic in w; the crossing's s
+// follows from the x (or z) component and counts when its height is between the caps. A cap at
+// height h is crossed where the ray's point there, scaled by 1/h, is inside the outline (a cap
+// at height 0 is the apex alone).
+inline int prism_conic_walk(const Prism& p, const Vec3& d, const Vec3& p0, double sc, double len, PrismCrossing* out,
+                            int max_out, double t_after) {
+  int count = 0;
+  auto emit = [&](double s, PrismPart part, int edge, double w) {
+    double t = (sc + s) / len;
+    if (t > t_after) keep_first_crossings(out, count, max_out, PrismCrossing{t, part, edge, w});
+  };
+  const Vec3 m = glm::cross(p0, d);
+  const int nc = static_cast<int>(p.curves.size());
+  for (int j = 0; j < nc; ++j) {
+    const SplineSegment& g = p.curves[j];
+    double c[4];
+    for (int k = 0; k < 4; ++k) c[k] = g.x[k] * m.x + g.y[k] * m.z;
+    double ws[3];
+    int nr = prism_curve_roots(c, -m.y, ws);
+    for (int i = 0; i < nr; ++i) {
+      const double x = spline_eval(g.x, ws[i]), z = spline_eval(g.y, ws[i]);
+      // p0 + s d = y (x, 1, z): from whichever of x, z the ray's direction pins down better.
+      const double hx = d.x - x * d.y, hz = d.z - z * d.y;
+      double s;
+      if (std::abs(hx) >= std::abs(hz)) {
+        if (hx == 0.0) continue;
+        s = (x * p0.y - p0.x) / hx;
+      } else {
+        s = (z * p0.y - p0.z) / hz;
+      }
+      const double y = p0.y + s * d.y;
+      if (y >= p.y_min && (y < p.y_max || (p.open && y == p.y_max))) emit(s, PrismPart::Wall, j, ws[i]);
+    }
+  }
+  if (!p.open && d.y != 0.0) {
+    for (PrismPart part : {PrismPart::Bottom, PrismPart::Top}) {
+      const double h = part == PrismPart::Top ? p.y_max : p.y_min;
+      if (h == 0.0) continue;
+      const double s = (h - p0.y) / d.y;
+      const Vec3 q = p0 + s * d;
+      if (prism_curves_inside(p.curves, q.x / h, q.z / h)) emit(s, part, -1, 0.0);
+    }
+  }
+  return count;
+}
+
+}  // namespace detail
+
 // The crossings of the prism's surfaces along the whole line beyond t_after: the first max_out,
 // ascending; returns how many. A closed prism, whole line: in and out alternately.
 inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, int max_out,
@@ -320,6 +405,7 @@ inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, i
     const Vec3 rel = p0 - centre;
     if (glm::dot(rel, rel) > glm::dot(half, half) * (1.0 + 1e-9) + 1e-300) return 0;
   }
+  if (p.conic) return detail::prism_conic_walk(p, d, p0, sc, len, out, max_out, t_after);
   // The slab of heights along the line: [sa, sb] (all of it for a horizontal ray inside it).
   double sa = -Interval::kInfinity, sb = Interval::kInfinity;
   PrismPart cap_a = PrismPart::Bottom, cap_b = PrismPart::Top;
@@ -409,8 +495,19 @@ inline void prism_hit_at(const Prism& p, const Ray& ray, const PrismCrossing& c,
       dx = spline_eval(g.x, w1) - spline_eval(g.x, w0);
       dz = spline_eval(g.y, w1) - spline_eval(g.y, w0);
     }
-    double nl = std::sqrt(dx * dx + dz * dz);
-    n = nl > 0.0 ? Vec3(dz / nl, 0.0, -dx / nl) * p.curve_outward[c.edge] : Vec3(1, 0, 0);
+    if (p.conic) {
+      // The wall (x(w) y, y, z(w) y): d/dw x d/dy over -y is (dz, z dx - x dz, -dx), the
+      // straight prism's normal tilted by the wall's lean; turned over where y < 0 (the outline
+      // there is mirrored through the apex).
+      const double x = spline_eval(g.x, c.w), z = spline_eval(g.y, c.w);
+      Vec3 cn(dz, z * dx - x * dz, -dx);
+      cn *= p.curve_outward[c.edge] * (pt.y < 0.0 ? -1.0 : 1.0);
+      double cl = glm::length(cn);
+      n = cl > 0.0 ? cn / cl : Vec3(1, 0, 0);
+    } else {
+      double nl = std::sqrt(dx * dx + dz * dz);
+      n = nl > 0.0 ? Vec3(dz / nl, 0.0, -dx / nl) * p.curve_outward[c.edge] : Vec3(1, 0, 0);
+    }
     // The point is the ray's at a root polished to the last bit in w: a few ulps of the size.
     const double size = std::max({std::abs(p.x_min), std::abs(p.x_max), std::abs(p.z_min), std::abs(p.z_max)});
     err += error_gamma(64) * size;
