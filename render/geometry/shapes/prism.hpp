@@ -1,17 +1,21 @@
-// Prism (POV-Ray's `prism { linear_sweep linear_spline h1, h2, N, <x0, z0>, ... }`): polygons
-// in the x-z plane extruded along y between the two heights, closed by flat caps there unless
-// open. As in POV-Ray the point list may hold several sub-polygons, each closed by a point that
-// repeats its first point (the last one is closed if it is not), and the inside is counted
-// even-odd. Only linear_spline and linear_sweep so far.
+// Prism (POV-Ray's `prism { linear_sweep linear_spline h1, h2, N, <x0, z0>, ... }`, and its
+// quadratic_spline, cubic_spline, bezier_spline and conic_sweep): an outline in the x-z plane
+// extruded along y between the two heights (or, conic, scaled by the height from the apex at
+// the origin), closed by flat caps there unless open. As in POV-Ray the point list may hold
+// several sub-outlines, each closed by a point that repeats its first point (a straight-edged
+// last one is closed if it is not; an unclosed spline one is an error), and the inside is
+// counted even-odd.
 //
 // Along a ray the walls are found in the x-z plane: an edge is crossed when its two ends lie
 // strictly on different sides of the ray's line there, a vertex on the line counting as on the
 // negative side (the crossing-number rule), so a ray through a vertex is counted once or twice
 // as the polygon passes or turns there, and a ray along a wall never. The point on the edge is
-// interpolated from the two side values, so it lies on the edge whatever the rounding. The caps
-// follow from the same crossings: the polygon's parity where the ray enters the slab of heights
-// (walls crossed before it) says whether that cap is crossed, and that parity plus the walls
-// crossed inside the slab says whether the other one is, so crossings always come in pairs.
+// interpolated from the two side values, so it lies on the edge whatever the rounding. A spline
+// curve's side of the line is a cubic in its parameter, whose sign changes are its crossings.
+// The caps follow from the same crossings: the outline's parity where the ray enters the slab
+// of heights (walls crossed before it) says whether that cap is crossed, and that parity plus
+// the walls crossed inside the slab says whether the other one is, so crossings always come in
+// pairs. (Conic walls lean, so there the caps are tested directly: prism_conic_walk.)
 // The ray is re-centred on the shape first (coefficients of the shape's size however far away
 // it starts). No allocation per ray.
 #pragma once
