@@ -271,3 +271,26 @@ TEST_CASE("lathe splines: open and closed as POV-Ray", "[lathe]") {
   CHECK(make_spline(SplineKind::Quadratic, {Vec3(1, 0, 0), Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 2, 0)}).closed);
   CHECK_FALSE(make_spline(SplineKind::Bezier, {Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(1, 3, 0)}).closed);
 }
+
+TEST_CASE("lathe splines: rays just either side of the horizontal solve agree", "[lathe]") {
+  // Below kLatheFlatRay the ray is solved as horizontal first, above it by the sextic: the
+  // crossings on either side of the switch are the same to the rays' own difference.
+  Lathe l = make_spline(SplineKind::Cubic, vase());
+  for (int i = 0; i < 40; ++i) {
+    Vec3 target(0.3 * std::sin(i), 0.9 * std::cos(2.1 * i), 0.3 * std::cos(3 * i));
+    double below = 0.99 * tol::kLatheFlatRay, above = 1.01 * tol::kLatheFlatRay;
+    Vec3 d0 = glm::normalize(Vec3(std::cos(1.7 * i), below, std::sin(1.7 * i)));
+    Vec3 d1 = glm::normalize(Vec3(std::cos(1.7 * i), above, std::sin(1.7 * i)));
+    Ray r0{target - 3.0 * d0, d0}, r1{target - 3.0 * d1, d1};
+    LatheCrossing a[8], b[8];
+    int na = lathe_crossings(l, r0, a, 8), nb = lathe_crossings(l, r1, b, 8);
+    INFO("ray " << i);
+    REQUIRE(na == nb);
+    for (int k = 0; k < na; ++k) {
+      CHECK(std::abs(a[k].t - b[k].t) < 1e-3);
+      Vec3 p = r0.at(a[k].t);
+      const SplineSegment& g = l.segments[a[k].segment];
+      CHECK(std::abs(p.y - spline_eval(g.y, a[k].w)) < 1e-9);
+    }
+  }
+}
