@@ -52,6 +52,11 @@ std::pair<std::string, bool> shape_alternative(const std::string& k) {
   return {"a mesh from an OBJ file", false};
 }
 
+// POV-Ray's spline keywords for a lathe's profile or a prism's outline: rts's `spline` property.
+bool is_spline_keyword(const std::string& k) {
+  return k == "linear_spline" || k == "quadratic_spline" || k == "cubic_spline" || k == "bezier_spline";
+}
+
 bool closed_kind(const std::string& k) {
   return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
          k == "superellipsoid" || k == "sor" || k == "lathe" || k == "prism" || k == "blob" || k == "height_field" ||
@@ -602,29 +607,6 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     w.line(fmt::format("{}group {{ }}  // POV-Ray's {} is not translated (rts import warned)", prefix, k));
     return;
   }
-  if (k == "prism") {
-    // Only POV-Ray's linear_spline and linear_sweep (its defaults) have an rts prism so far.
-    for (const Item& it : b.items)
-      if (it.kind == Item::Keyword && (it.name == "quadratic_spline" || it.name == "cubic_spline" ||
-                                       it.name == "bezier_spline" || it.name == "conic_sweep")) {
-        unsupported(it.loc, it.name, "a prism with straight edges swept straight (linear_spline, linear_sweep), or a "
-                    "mesh from an OBJ file", true);
-        w.line(fmt::format("{}group {{ }}  // POV-Ray's prism with {} is not translated (rts import warned)", prefix,
-                           it.name));
-        return;
-      }
-  }
-  if (k == "lathe") {
-    // Only POV-Ray's linear_spline (its default) has an rts lathe so far.
-    for (const Item& it : b.items)
-      if (it.kind == Item::Keyword &&
-          (it.name == "quadratic_spline" || it.name == "cubic_spline" || it.name == "bezier_spline")) {
-        unsupported(it.loc, it.name, "a lathe with straight segments (linear_spline), or a mesh from an OBJ file", true);
-        w.line(fmt::format("{}group {{ }}  // POV-Ray's lathe with {} is not translated (rts import warned)", prefix,
-                           it.name));
-        return;
-      }
-  }
   if (k == "object") {
     // object { sphere { ... } modifiers }: the inner object with the modifiers after its own.
     const Item* inner = nullptr;
@@ -660,12 +642,16 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     }
     items_of = &blob_rest;
   }
-  Block lathe_rest;  // `linear_spline N, <a>, ...` reads as a keyword with the values as its arguments
+  Block lathe_rest;  // `cubic_spline N, <a>, ...` reads as a keyword with the values as its arguments
   if (k == "lathe" || k == "prism") {
     lathe_rest = b;
     lathe_rest.items.clear();
     for (const Item& it : b.items) {
-      if (it.kind == Item::Keyword && (it.name == "linear_spline" || it.name == "linear_sweep") && !it.args.empty()) {
+      if (it.kind == Item::Keyword && (is_spline_keyword(it.name) || it.name == "linear_sweep" || it.name == "conic_sweep") &&
+          !it.args.empty()) {
+        Item keyword = it;  // the keyword alone (it says which spline), then its values
+        keyword.args.clear();
+        lathe_rest.items.push_back(std::move(keyword));
         for (const ExprPtr& a : it.args) {
           Item value;
           value.kind = Item::Value;
@@ -724,9 +710,13 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         } else if (it.name == "inverse") {
           props.push_back("inverse = true");
         } else if ((k == "lathe" || k == "prism") && it.name == "linear_spline") {
-          // rts's lathe and prism are made of straight segments
+          // rts's lathe and prism default to straight segments too
+        } else if ((k == "lathe" || k == "prism") && is_spline_keyword(it.name)) {
+          props.push_back(fmt::format("spline = \"{}\"", it.name.substr(0, it.name.find('_'))));
         } else if (k == "prism" && it.name == "linear_sweep") {
-          // rts's prism is swept straight
+          // rts's prism is swept straight unless told
+        } else if (k == "prism" && it.name == "conic_sweep") {
+          props.push_back("sweep = \"conic\"");
         } else if (it.name == "hollow" || it.name == "sturm" || it.name == "smooth" || it.name == "double_illuminate" ||
                    it.name == "no_reflection" || it.name == "no_radiosity" || it.name == "cutaway_textures" ||
                    it.name == "split_union") {

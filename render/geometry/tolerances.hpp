@@ -41,6 +41,22 @@ inline constexpr double kHeightFieldRootRelative = 1.4e-14;
 // less than this: POV-Ray's EPSILON for the same test, so its point lists split alike.
 inline constexpr double kPrismSamePoint = 1e-10;
 
+// A spline segment's bounds (lathe, prism) are its ends and turning points, the turning points
+// rounded: they are padded by this much of the segment's coefficients' size, far above that
+// rounding (~1e-16) and far below anything visible.
+inline constexpr double kSplineBoundPad = 1e-9;
+
+// A lathe spline segment against a ray whose direction's y (unit length) is below this is
+// solved as a horizontal ray first (the heights where h(t) meets the ray, then the circle
+// there) and polished onto the true ray: the general sextic divides the ray's horizontal reach
+// by its climb, so its coefficients lose ~(1/dy)^2 of their digits, ~1e-8 of 1e-16 here.
+inline constexpr double kLatheFlatRay = 1e-4;
+
+// A lathe spline crossing is first looked for this far beyond the segment's [0, 1] (in t), and
+// kept only once polished onto the ray inside [0, 1): a horizontal ray's first guess at a
+// crossing near a joint may fall just outside its own segment.
+inline constexpr double kLatheSplineSearchPad = 0.05;
+
 // A ray parallel to a plane/disc/cap within this cosine is treated as missing it.
 inline constexpr double kParallelCosine = 1e-14;
 

@@ -203,11 +203,24 @@ struct Sor {
   bool open = false;                 // no discs at the bottom and top
 };
 
-// POV-Ray's lathe with linear_spline: the profile's straight segments turned about the y axis
+// POV-Ray's splines through 2-D points (a lathe's profile, a prism's outline): linear_spline,
+// quadratic_spline, cubic_spline, bezier_spline (render/geometry/shapes/spline_segments.hpp
+// turns the points into segments with POV-Ray's conventions).
+enum class SplineKind : uint8_t { Linear, Quadratic, Cubic, Bezier };
+// One segment: x(t) = x[0] + x[1] t + x[2] t^2 + x[3] t^3 for t in [0, 1], y(t) likewise, and
+// the bounds of the curve over [0, 1] (padded a little).
+struct SplineSegment {
+  double x[4], y[4];
+  double x_lo, x_hi, y_lo, y_hi;
+};
+
+// POV-Ray's lathe: the profile's segments (straight, or spline pieces) turned about the y axis
 // (render/geometry/shapes/lathe.hpp traces it).
 inline constexpr int kMaxLathePoints = 4096;
 struct Lathe {
   std::vector<Vec3> points;          // <r, h, 0> as given
+  SplineKind spline = SplineKind::Linear;
+  std::vector<SplineSegment> segments;  // the spline's pieces (r as x, h as y); empty for linear
   double radius = 0.0, h_min = 0.0, h_max = 0.0;
   bool closed = false;               // the profile ends where it starts, or both ends on the axis
   double orientation = 1.0;          // +1: the profile (closed along the axis) runs counter-clockwise
@@ -226,6 +239,10 @@ struct Prism {
   double height1 = 0.0, height2 = 1.0;
   double y_min = 0.0, y_max = 1.0, x_min = 0.0, x_max = 0.0, z_min = 0.0, z_max = 0.0;
   bool open = false;                 // no caps at the two heights
+  SplineKind spline = SplineKind::Linear;
+  std::vector<SplineSegment> curves;  // the outline's spline pieces (x, z as x, y); empty for linear
+  std::vector<double> curve_outward;  // per curve: +1 when (dz, -dx) along it points out, else -1
+  bool conic = false;                // conic_sweep: the outline scaled by y from the apex at the origin
 };
 
 using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,

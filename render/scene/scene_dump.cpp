@@ -11,6 +11,12 @@
 
 namespace rts::render {
 
+// The rts property's value for a spline kind (as render/geometry/shapes/spline_segments.hpp).
+static const char* spline_name(SplineKind k) {
+  return k == SplineKind::Quadratic ? "quadratic" : k == SplineKind::Cubic ? "cubic"
+         : k == SplineKind::Bezier  ? "bezier"    : "linear";
+}
+
 namespace {
 
 // |x| below this prints as 0: cos(90°) is 6e-17, not a value anyone wrote.
@@ -112,11 +118,13 @@ std::string shape_text(const ShapeDesc& s) {
     std::string operator()(const Lathe& g) {
       std::string out = "lathe points";
       for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
-      return out;
+      return out + (g.spline != SplineKind::Linear ? fmt::format(" spline {}", spline_name(g.spline)) : "");
     }
     std::string operator()(const Prism& g) {
       std::string out = fmt::format("prism height1 {} height2 {} points", num(g.height1), num(g.height2));
       for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
+      if (g.spline != SplineKind::Linear) out += fmt::format(" spline {}", spline_name(g.spline));
+      if (g.conic) out += " sweep conic";
       return out + (g.open ? " open true" : "");
     }
     std::string operator()(const HeightField& g) {

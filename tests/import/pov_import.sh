@@ -55,9 +55,9 @@ expect_grep "$TMP/err" "^bad_syntax.pov:3:34: error: expected '}' to close the '
 expect_grep "$TMP/err" "^ +\^" "caret line"
 expect_exit 1 "render: the same error" -- "$RTS" render bad_syntax.pov -o "$TMP/bad.png"
 expect_grep "$TMP/err" "^bad_syntax.pov:3:34: error:" "located error"
-expect_exit 0 "a prism's conic_sweep and cubic_spline are warnings" -- "$RTS" import prism_splines.pov
-expect_grep "$TMP/err" "^prism_splines.pov:3:9: warning: POV-Ray's 'conic_sweep' is not translated" "located at the sweep"
-expect_grep "$TMP/err" "^prism_splines.pov:4:22: warning: POV-Ray's 'cubic_spline' is not translated" "located at the spline"
+expect_exit 0 "a prism's conic_sweep and cubic_spline are translated" -- "$RTS" import prism_splines.pov
+expect_grep "$TMP/out" "sweep = \"conic\"" "the conic prism is translated"
+expect_grep "$TMP/out" "spline = \"cubic\"" "the cubic prism is translated"
 expect_grep "$TMP/out" "^prism \\{" "the linear prism is translated"
 expect_exit 0 "an unsupported shape is a warning" -- "$RTS" import unsupported.pov
 expect_grep "$TMP/err" "^unsupported.pov:4:1: warning: POV-Ray's 'sphere_sweep' is not translated; closest in rts: a mesh" "located warning with the alternative"

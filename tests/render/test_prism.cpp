@@ -185,3 +185,191 @@ TEST_CASE("prism: slanted rays from near and far cross where the closed form say
     }
   }
 }
+
+// Spline outlines (POV-Ray's quadratic_spline, cubic_spline, bezier_spline).
+namespace {
+
+Prism make_spline(SplineKind k, std::vector<Vec3> pts, double h1 = 0.0, double h2 = 2.0) {
+  Prism p;
+  p.spline = k;
+  p.points = std::move(pts);
+  p.height1 = h1;
+  p.height2 = h2;
+  prism_setup(p);
+  return p;
+}
+
+// The block's square as bezier segments whose control points lie on its sides.
+Prism block_bezier() {
+  std::vector<Vec3> c = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)};
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 4; ++i) {
+    Vec3 a = c[i], b = c[i + 1];
+    pts.insert(pts.end(), {a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
+  }
+  return make_spline(SplineKind::Bezier, pts);
+}
+
+// A rounded blob with a round hole, as a cubic spline: each sub-outline a control point, the
+// loop, its first point again and a control point (POV-Ray's rule).
+Prism blob_with_hole(bool reverse_hole) {
+  std::vector<Vec3> outer = {Vec3(1.5, 0.2, 0), Vec3(0.8, -1.1, 0), Vec3(-1.2, -1, 0), Vec3(-1.4, 0.9, 0),
+                             Vec3(0.3, 1.3, 0)};
+  std::vector<Vec3> hole = {Vec3(0.4, 0, 0), Vec3(0, 0.4, 0), Vec3(-0.4, 0, 0), Vec3(0, -0.4, 0)};
+  if (reverse_hole) std::reverse(hole.begin(), hole.end());
+  std::vector<Vec3> pts;
+  auto loop = [&](const std::vector<Vec3>& l) {
+    pts.push_back(l.back());
+    pts.insert(pts.end(), l.begin(), l.end());
+    pts.push_back(l[0]);
+    pts.push_back(l[1]);
+  };
+  loop(outer);
+  loop(hole);
+  return make_spline(SplineKind::Cubic, pts);
+}
+
+}  // namespace
+
+TEST_CASE("prism splines: a bezier outline along straight sides is the linear prism", "[prism]") {
+  Prism lin = block(), bez = block_bezier();
+  REQUIRE(bez.curves.size() == 4);
+  CHECK(bez.x_min == Approx(-1.0).epsilon(1e-8));
+  CHECK(bez.z_max == Approx(1.0).epsilon(1e-8));
+  for (double dist : {3.0, 1e6}) {
+    for (int i = 0; i < 60; ++i) {
+      Vec3 target(0.5 * std::sin(i), 1.0 + 0.8 * std::cos(2.1 * i), 0.5 * std::cos(3 * i));
+      double climb = i % 4 == 0 ? 0.0 : 0.9 * std::sin(2.3 * i);
+      Vec3 dir = glm::normalize(Vec3(std::cos(1.7 * i), climb, std::sin(1.7 * i)));
+      Ray ray{target - dist * dir, dir};
+      PrismCrossing a[8], b[8];
+      int na = crossings(lin, ray, a), nb = crossings(bez, ray, b);
+      INFO("dist " << dist << " ray " << i);
+      REQUIRE(na == nb);
+      for (int k = 0; k < na; ++k) {
+        CHECK(a[k].part == b[k].part);
+        CHECK(std::abs(a[k].t - b[k].t) < 1e-9 * dist);
+        SurfaceHit ha, hb;
+        prism_hit_at(lin, ray, a[k], ha);
+        prism_hit_at(bez, ray, b[k], hb);
+        CHECK(glm::length(ha.normal - hb.normal) < 1e-9);
+      }
+    }
+  }
+}
+
+TEST_CASE("prism splines: walls on the curve, normals unit and outward, caps by even-odd", "[prism]") {
+  for (bool reverse_hole : {false, true}) {
+    Prism p = blob_with_hole(reverse_hole);
+    REQUIRE(p.curves.size() == 9);  // 5 round the outside, 4 round the hole
+    // Down the hole: nothing; down the body: the two caps.
+    PrismCrossing c[8];
+    CHECK(crossings(p, Ray{Vec3(0.05, 5, 0.02), Vec3(0, -1, 0)}, c) == 0);
+    REQUIRE(crossings(p, Ray{Vec3(-0.9, 5, 0.1), Vec3(0, -1, 0)}, c) == 2);
+    CHECK(c[0].part == PrismPart::Top);
+    CHECK(c[0].t == Approx(3.0).epsilon(1e-14));
+    int walls = 0;
+    for (double dist : {3.0, 1e3, 1e6}) {
+      for (int i = 0; i < 80; ++i) {
+        Vec3 target(0.6 * std::sin(i), 1.0 + 0.6 * std::cos(2.1 * i), 0.6 * std::cos(3 * i));
+        double climb = i % 4 == 0 ? 0.0 : 0.9 * std::sin(2.3 * i);
+        Vec3 dir = glm::normalize(Vec3(std::cos(1.7 * i), climb, std::sin(1.7 * i)));
+        Ray ray{target - dist * dir, dir};
+        int n = crossings(p, ray, c);
+        INFO("hole reversed " << reverse_hole << " dist " << dist << " ray " << i);
+        CHECK(n % 2 == 0);
+        for (int k = 0; k < n; ++k) {
+          SurfaceHit h;
+          prism_hit_at(p, ray, c[k], h);
+          CHECK(std::abs(glm::length(h.normal) - 1.0) < 1e-12);
+          CHECK(glm::dot(h.normal, ray.direction) * (k % 2 == 0 ? 1 : -1) < 0.0);  // in against it, out along it
+          if (c[k].part != PrismPart::Wall) continue;
+          ++walls;
+          const SplineSegment& g = p.curves[c[k].edge];
+          Vec3 q = ray.at(c[k].t);
+          double tolerance = 1e-9 + 1e-15 * dist;
+          CHECK(std::abs(q.x - spline_eval(g.x, c[k].w)) < tolerance);
+          CHECK(std::abs(q.z - spline_eval(g.y, c[k].w)) < tolerance);
+          CHECK(prism_inside(p, q - 1e-6 * h.normal));
+          CHECK_FALSE(prism_inside(p, q + 1e-6 * h.normal));
+        }
+      }
+    }
+    CHECK(walls > 100);
+  }
+}
+
+TEST_CASE("prism splines: POV-Ray's closing rule; an unclosed outline has no curves", "[prism]") {
+  // Quadratic: a control point, then the loop back to its first point.
+  Prism q = make_spline(SplineKind::Quadratic,
+                        {Vec3(-1, 1, 0), Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)});
+  CHECK(q.curves.size() == 4);
+  PrismCrossing c[8];
+  CHECK(crossings(q, Ray{Vec3(0, 5, 0), Vec3(0, -1, 0)}, c) == 2);
+  Prism open = make_spline(SplineKind::Quadratic,
+                           {Vec3(-1, 1, 0), Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(0, 0, 0)});
+  CHECK(open.curves.empty());
+  CHECK(crossings(open, Ray{Vec3(0, 5, 0), Vec3(0, -1, 0)}, c) == 0);
+  Prism probe;
+  probe.spline = SplineKind::Cubic;
+  probe.points = {Vec3(-1, 1, 0), Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)};
+  // The loop closes at the last point, but a cubic needs a control point after it.
+  CHECK(detail::prism_spline_curves(probe).find("does not close (a later point must repeat point 2, followed by one "
+                                                "control point)") != std::string::npos);
+  probe.spline = SplineKind::Bezier;
+  probe.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  CHECK(detail::prism_spline_curves(probe).find("does not end where it starts") != std::string::npos);
+}
+
+TEST_CASE("prism conic_sweep: a square outline swept from the apex is a pyramid's frustum", "[prism]") {
+  auto square = [](bool bezier, double h1, double h2) {
+    Prism p = bezier ? block_bezier() : block();
+    p.height1 = h1;
+    p.height2 = h2;
+    p.conic = true;
+    prism_setup(p);
+    return p;
+  };
+  for (bool bezier : {false, true}) {
+    INFO("bezier " << bezier);
+    Prism p = square(bezier, 0.5, 1.0);
+    CHECK(p.x_min == Approx(-1.0).epsilon(1e-8));
+    CHECK(p.x_max == Approx(1.0).epsilon(1e-8));
+    // Across at y = 0.75: the walls |x| = y.
+    PrismCrossing c[8];
+    REQUIRE(crossings(p, Ray{Vec3(-5, 0.75, 0), Vec3(1, 0, 0)}, c) == 2);
+    CHECK(c[0].t == Approx(4.25).epsilon(1e-12));
+    CHECK(c[1].t == Approx(5.75).epsilon(1e-12));
+    SurfaceHit h;
+    prism_hit_at(p, Ray{Vec3(-5, 0.75, 0), Vec3(1, 0, 0)}, c[0], h);
+    CHECK(h.normal.x == Approx(-std::sqrt(0.5)).epsilon(1e-12));
+    CHECK(h.normal.y == Approx(-std::sqrt(0.5)).epsilon(1e-12));  // the wall leans out: it faces down
+    // Down through the middle: the top cap (y = 1) and the bottom one (y = 0.5).
+    REQUIRE(crossings(p, Ray{Vec3(0.2, 5, 0.1), Vec3(0, -1, 0)}, c) == 2);
+    CHECK(c[0].t == Approx(4.0).epsilon(1e-14));
+    CHECK(c[1].t == Approx(4.5).epsilon(1e-14));
+    // Down at x = 0.7: through the top cap, out of the leaning wall at y = 0.7.
+    REQUIRE(crossings(p, Ray{Vec3(0.7, 5, 0.1), Vec3(0, -1, 0)}, c) == 2);
+    CHECK(c[1].part == PrismPart::Wall);
+    CHECK(c[1].t == Approx(4.3).epsilon(1e-12));
+    CHECK(prism_inside(p, Vec3(0.7, 0.8, 0.1)));
+    CHECK_FALSE(prism_inside(p, Vec3(0.7, 0.6, 0.1)));
+    // Many rays: crossings pair up, normals face in then out, walls on the swept surface.
+    for (int i = 0; i < 80; ++i) {
+      Vec3 target(0.4 * std::sin(i), 0.75 + 0.2 * std::cos(2.1 * i), 0.4 * std::cos(3 * i));
+      Vec3 dir = glm::normalize(Vec3(std::cos(1.7 * i), 0.9 * std::sin(2.3 * i), std::sin(1.7 * i)));
+      Ray ray{target - 4.0 * dir, dir};
+      int n = crossings(p, ray, c);
+      INFO("ray " << i);
+      CHECK(n % 2 == 0);
+      for (int k = 0; k < n; ++k) {
+        prism_hit_at(p, ray, c[k], h);
+        CHECK(std::abs(glm::length(h.normal) - 1.0) < 1e-12);
+        CHECK(glm::dot(h.normal, ray.direction) * (k % 2 == 0 ? 1 : -1) < 0.0);
+        Vec3 q = ray.at(c[k].t);
+        if (c[k].part == PrismPart::Wall)
+          CHECK(std::abs(std::max(std::abs(q.x), std::abs(q.z)) - q.y) < 1e-12);
+      }
+    }
+  }
+}

@@ -252,6 +252,25 @@ TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad poi
   d = eval_diagnostic("lathe {\n  points = [[1, 0], [-1, 1]] }");
   CHECK(d.message == "lathe point 2 [-1, 1]: the radius must be >= 0");
   CHECK(d.loc.line == 2);
+  d = eval_diagnostic("lathe {\n  spline = \"cubic\"  points = [[1, 0], [0, 0], [1, 1]] }");
+  CHECK(d.message == "a lathe with a cubic spline needs at least 4 points (the first and last are control points), "
+                     "got 3");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 21);
+  d = eval_diagnostic("lathe { spline = \"bezier\"  points = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 2]] }");
+  CHECK(d.message.find("a lathe with a bezier spline needs a multiple of 4 points") == 0);
+  d = eval_diagnostic("lathe {\n  spline = \"nurbs\"  points = [[0, 0], [1, 1]] }");
+  CHECK(d.message == "lathe spline \"nurbs\" is not one of \"linear\", \"quadratic\", \"cubic\", \"bezier\"");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
+  // A cubic's first and last points only shape the curve: they may have r < 0, the others not.
+  s = eval_text("lathe { spline = \"cubic\"  points = [[-1, -1], [0, 0], [1, 0.5], [0, 1], [-1, 2]] }\n");
+  g = std::get_if<render::Lathe>(&s.shapes.at(0).geometry);
+  REQUIRE(g);
+  CHECK(g->closed);
+  CHECK(g->segments.size() == 2);
+  d = eval_diagnostic("lathe { spline = \"cubic\"  points = [[1, -1], [-0.5, 0], [1, 0.5], [0, 1], [1, 2]] }");
+  CHECK(d.message == "lathe point 2 [-0.5, 0]: the radius must be >= 0");
   d = eval_diagnostic("difference { lathe { points = [[1, 0], [1, 1]] } sphere { radius = 1 } }");
   CHECK(d.message.find("lathe cannot be part of 'difference'") != std::string::npos);
 }
@@ -289,12 +308,24 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
   CHECK(d.loc.line == 3);
   CHECK(d.loc.col == 16);
   d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  spline = \"bezier\" }");
-  CHECK(d.message.find("prism spline \"bezier\" is not supported: only \"linear\"") == 0);
+  CHECK(d.message == "a prism with a bezier spline needs a multiple of 4 points (4 per segment: end, control, "
+                     "control, end), got 3");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
+  d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  spline = \"smooth\" }");
+  CHECK(d.message == "prism spline \"smooth\" is not one of \"linear\", \"quadratic\", \"cubic\", \"bezier\"");
   CHECK(d.loc.line == 3);
   CHECK(d.loc.col == 3);
-  d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  sweep = \"conic\" }");
-  CHECK(d.message == "prism sweep \"conic\" (POV-Ray's conic_sweep) is not supported yet; only \"linear\" is");
+  d = eval_diagnostic("prism {\n  points = [[0, 1], [0, 0], [1, 0], [0, 1], [1, 1]]\n  spline = \"quadratic\" }");
+  CHECK(d.message == "prism: the quadratic outline from point 2 does not close (a later point must repeat point 2)");
+  CHECK(d.loc.line == 2);
+  s = eval_text("prism { spline = \"quadratic\"  points = [[0, 1], [0, 0], [1, 0], [0, 1], [0, 0]] }\n");
+  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry).curves.size() == 3);
+  d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  sweep = \"radial\" }");
+  CHECK(d.message == "prism sweep \"radial\" is not one of \"linear\" or \"conic\"");
   CHECK(d.loc.line == 3);
+  s = eval_text("prism { points = [[0, 0], [1, 0], [0, 1]]  sweep = \"conic\"  height1 = 0.5 }\n");
+  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry).conic);
   d = eval_diagnostic("prism { height1 = 0 }");
   CHECK(d.message == "prism needs property 'points'");
   d = eval_diagnostic("difference { prism { points = [[0, 0], [1, 0], [0, 1]]  open = true } sphere { radius = 1 } }");

@@ -1,19 +1,28 @@
-// Lathe (POV-Ray's `lathe { linear_spline N, <r0, h0>, ..., <rN-1, hN-1> }`): the profile's
-// straight segments turned about the y axis, each a cone frustum (a cylinder when its radii
-// agree, a flat ring when its heights do). Only POV-Ray's linear_spline (its default) so far.
-// As in POV-Ray the solid is what the profile encloses, counted even-odd; it is closed (a CSG
-// operand) when the profile is: its last point is its first, or both ends lie on the axis.
+// Lathe (POV-Ray's `lathe { linear_spline N, <r0, h0>, ..., <rN-1, hN-1> }`, and its
+// quadratic_spline, cubic_spline and bezier_spline): the profile turned about the y axis. As in
+// POV-Ray the solid is what the profile encloses, counted even-odd; it is closed (a CSG operand)
+// when the profile is: the curve's last point is its first, or both ends lie on the axis.
 //
-// Along a ray each frustum is x^2 + z^2 = r(y)^2 with r linear in y: a quadratic in the ray
-// parameter, formed about the middle of the ray's stretch inside the segment's band of
+// Linear: each straight segment is a cone frustum (a cylinder when its radii agree, a flat ring
+// when its heights do). Along a ray it is x^2 + z^2 = r(y)^2 with r linear in y: a quadratic in
+// the ray parameter, formed about the middle of the ray's stretch inside the segment's band of
 // heights (coefficients of the shape's size however far away the ray starts), its roots
 // isolated by poly_roots and polished by Newton steps at the ray's own point. A segment owns
 // its first end and not its last, so a ray through a joint's circle is counted once.
+//
+// Splines (spline_segments.hpp): each segment is r(t), h(t), cubics in t in [0, 1]. The ray,
+// re-centred on the point of its line nearest the lathe's centre, meets height h(t) at
+// s = (h(t) - y0) / dy, so x(s)^2 + z(s)^2 - r(t)^2 = 0 times dy^2 is a sextic in t whose
+// roots in [0, 1] are the crossings (POV-Ray's own equation). A nearly horizontal ray divides by
+// a tiny dy there, so it is solved as horizontal instead (h(t) = y0, a cubic, then the circle of
+// radius r(t)). Either way each crossing is then polished by Newton steps on the pair of
+// equations (height and radius) at the ray's own point, and the segment owns t in [0, 1).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -23,13 +32,57 @@
 #include "render/geometry/shapes/keep_crossings.hpp"
 #include "render/geometry/shapes/poly_roots.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
+#include "render/geometry/shapes/spline_segments.hpp"
 #include "render/geometry/surface_hit.hpp"
+#include "render/geometry/tolerances.hpp"
 #include "render/scene/params.hpp"
 
 namespace rts::render {
 
-// Bounds, closure and the profile's orientation (the normal's sign) from l.points.
+namespace detail {
+
+// The spline's segments, bounds (from the curve's turning points), closure and orientation.
+inline void lathe_spline_setup(Lathe& l) {
+  l.segments = spline_segments(l.spline, l.points);
+  l.radius = 0.0;
+  l.h_min = Interval::kInfinity;
+  l.h_max = -Interval::kInfinity;
+  for (const SplineSegment& g : l.segments) {
+    // The surface is x^2 + z^2 = r(t)^2: a negative r (a bezier control point may pull it
+    // there) turns out at |r|.
+    l.radius = std::max({l.radius, std::abs(g.x_lo), std::abs(g.x_hi)});
+    l.h_min = std::min(l.h_min, g.y_lo);
+    l.h_max = std::max(l.h_max, g.y_hi);
+  }
+  const Vec3 first = spline_start(l.spline, l.points), last = spline_end(l.spline, l.points);
+  l.closed = (first.x == last.x && first.y == last.y) || (first.x == 0.0 && last.x == 0.0);
+  // The orientation as for the linear profile, from the curve sampled finely enough that its
+  // signed area has the curve's sign (16 chords per segment).
+  double area = 0.0;
+  double pr = first.x, ph = first.y;
+  for (const SplineSegment& g : l.segments) {
+    for (int k = 1; k <= 16; ++k) {
+      double t = k / 16.0, r = spline_eval(g.x, t), h = spline_eval(g.y, t);
+      area += pr * h - r * ph;
+      pr = r;
+      ph = h;
+    }
+  }
+  area += pr * last.y;          // to the axis at the last height,
+  area -= first.x * first.y;    // (along the axis adds nothing) and out to the first point
+  l.orientation = area < 0.0 ? -1.0 : 1.0;
+}
+
+}  // namespace detail
+
+// Bounds, closure and the profile's orientation (the normal's sign) from l.points (and
+// l.spline: its segments are made here).
 inline void lathe_setup(Lathe& l) {
+  if (l.spline != SplineKind::Linear) {
+    detail::lathe_spline_setup(l);
+    return;
+  }
+  l.segments.clear();
   const std::vector<Vec3>& p = l.points;
   l.radius = 0.0;
   l.h_min = Interval::kInfinity;
@@ -56,8 +109,13 @@ inline void lathe_setup(Lathe& l) {
 template <>
 struct ShapeTraits<Lathe> {
   static constexpr PropertyInfo kProperties[] = {
-      {"points", "list of `[r, h]`, at least 2", "*required*",
-       "The profile: radius r at height h, joined by straight segments (POV-Ray's linear_spline)."},
+      {"points", "list of `[r, h]`", "*required*",
+       "The profile: radius r at height h, joined as `spline` says. Linear: at least 2 points; quadratic: at "
+       "least 3 (the first is a control point); cubic: at least 4 (the first and last are control points); "
+       "bezier: 4 per segment (end, control, control, end)."},
+      {"spline", "string", "`\"linear\"`",
+       "`\"linear\"`, `\"quadratic\"`, `\"cubic\"` or `\"bezier\"`: POV-Ray's linear_spline, quadratic_spline, "
+       "cubic_spline, bezier_spline, with the same points."},
   };
   static constexpr ShapeInfo kInfo{
       .name = "lathe", .properties = kProperties, .closure = Closure::WhenCapped, .has_uv = true};
@@ -79,8 +137,17 @@ struct ShapeTraits<Lathe> {
                                                          "got a {}",
                                                          param_type_name(*v)));
     }
+    std::string spline = ps.string("spline", "linear");
+    if (!spline_kind_from_name(spline, g.spline))
+      throw SceneError(loc_of(ps, "spline"),
+                       fmt::format("lathe spline \"{}\" is not one of \"linear\", \"quadratic\", \"cubic\", \"bezier\"",
+                                   spline));
     const int n = static_cast<int>(g.points.size());
-    if (n < 2) throw SceneError(loc_of(ps, "points"), fmt::format("lathe needs at least 2 points, got {}", n));
+    if (g.spline == SplineKind::Linear && n < 2)
+      throw SceneError(loc_of(ps, "points"), fmt::format("lathe needs at least 2 points, got {}", n));
+    if (std::string need = spline_count_problem(g.spline, n, 2); !need.empty())
+      throw SceneError(loc_of(ps, "points"), fmt::format("a lathe with a {} spline needs {}, got {}",
+                                                         spline_kind_name(g.spline), need, n));
     if (n > kMaxLathePoints)
       throw SceneError(loc_of(ps, "points"),
                        fmt::format("lathe has {} points, more than the {} one lathe may hold", n, kMaxLathePoints));
@@ -88,7 +155,12 @@ struct ShapeTraits<Lathe> {
       const Vec3& q = g.points[i];
       if (!std::isfinite(q.x) || !std::isfinite(q.y))
         throw SceneError(loc_of(ps, "points"), fmt::format("lathe point {} is not finite", i + 1));
-      if (q.x < 0.0)
+      // POV-Ray's rule: the points the curve passes through need r >= 0; control points that
+      // only pull it (a quadratic's first, a cubic's first and last, a bezier's middle two) may not.
+      bool control = (g.spline == SplineKind::Quadratic && i == 0) ||
+                     (g.spline == SplineKind::Cubic && (i == 0 || i == n - 1)) ||
+                     (g.spline == SplineKind::Bezier && (i % 4 == 1 || i % 4 == 2));
+      if (q.x < 0.0 && !control)
         throw SceneError(loc_of(ps, "points"),
                          fmt::format("lathe point {} [{}, {}]: the radius must be >= 0", i + 1, q.x, q.y));
     }
@@ -105,7 +177,140 @@ inline AABB bounds(const Lathe& l) {
 struct LatheCrossing {
   double t;
   int segment;
+  double w = 0.0;  // a spline's curve parameter in the segment (0 for linear)
 };
+
+namespace detail {
+
+// The ray re-centred on the lathe (lathe_crossings works it out once): unit direction d, the
+// ray's t of a distance s along d from p0 is (sc + s) / len; the line lies in the bounding
+// cylinder for s in [lo, hi].
+struct LatheRayFrame {
+  Vec3 d, p0;
+  double len, sc, a, b, rho0, lo, hi;
+};
+
+// Newton steps on the pair (h(w) = y, x^2 + z^2 = r(w)^2) in the ray's own t and the curve's
+// w, from a first guess: the crossing to the last bit the ray's parametrisation allows, wherever
+// the ray starts. Steps that do not shrink the residual are refused (a tangent ray, or a guess
+// nearer another crossing). Returns false when the pair is singular at the guess.
+inline bool lathe_spline_polish(const SplineSegment& g, const Ray& ray, double size, double& t, double& w) {
+  auto residual = [&](double tt, double ww, double* f1, double* f2) {
+    Vec3 p = ray.at(tt);
+    double r = spline_eval(g.x, ww);
+    *f1 = spline_eval(g.y, ww) - p.y;
+    *f2 = p.x * p.x + p.z * p.z - r * r;
+    return 2.0 * size * std::abs(*f1) + std::abs(*f2);  // both in units of size^2
+  };
+  double f1, f2;
+  double res = residual(t, w, &f1, &f2);
+  for (int step = 0; step < 8 && res > 0.0; ++step) {
+    Vec3 p = ray.at(t);
+    double r = spline_eval(g.x, w);
+    // d f1 / d(t, w) and d f2 / d(t, w).
+    double j00 = -ray.direction.y, j01 = spline_slope(g.y, w);
+    double j10 = 2.0 * (p.x * ray.direction.x + p.z * ray.direction.z), j11 = -2.0 * r * spline_slope(g.x, w);
+    double det = j00 * j11 - j01 * j10;
+    if (det == 0.0 || !std::isfinite(det)) return step > 0;
+    double nt = t + (-f1 * j11 + j01 * f2) / det;
+    double nw = w + (-j00 * f2 + j10 * f1) / det;
+    double n1, n2;
+    double nres = residual(nt, nw, &n1, &n2);
+    if (!(nres < res)) break;
+    t = nt;
+    w = nw;
+    f1 = n1;
+    f2 = n2;
+    res = nres;
+  }
+  return true;
+}
+
+// lathe_crossings for a spline profile (see the top of this file).
+inline int lathe_spline_walk(const Lathe& l, const Ray& ray, const LatheRayFrame& f, LatheCrossing* out,
+                             int max_out, double t_after) {
+  const Vec3 &d = f.d, &p0 = f.p0;
+  const double size = l.radius + std::max(std::abs(l.h_min), std::abs(l.h_max));
+  const bool flat = std::abs(d.y) < tol::kLatheFlatRay;
+  int count = 0;
+  auto keep = [&](const SplineSegment& g, int j, double t, double w) {
+    if (!lathe_spline_polish(g, ray, size, t, w)) return;
+    if (!(w >= 0.0 && w < 1.0) || !std::isfinite(t)) return;
+    if (t > t_after) keep_first_crossings(out, count, max_out, LatheCrossing{t, j, w});
+  };
+  const int ns = static_cast<int>(l.segments.size());
+  for (int j = 0; j < ns; ++j) {
+    const SplineSegment& g = l.segments[j];
+    // The stretch of the line inside the segment's band of heights and its own cylinder.
+    const double rj = std::max(std::abs(g.x_lo), std::abs(g.x_hi)) * (1.0 + 1e-7) + 1e-300;
+    double plo = f.lo, phi = f.hi;
+    if (f.a > 0.0) {
+      double disc = f.b * f.b - f.a * (f.rho0 - rj * rj);
+      if (disc < 0.0) continue;
+      double q = -(f.b + std::copysign(std::sqrt(disc), f.b));
+      double r1 = q / f.a, r2 = q != 0.0 ? (f.rho0 - rj * rj) / q : -r1;
+      plo = std::max(plo, std::min(r1, r2));
+      phi = std::min(phi, std::max(r1, r2));
+    } else if (f.rho0 > rj * rj) {
+      continue;
+    }
+    if (d.y != 0.0) {
+      double e0 = (g.y_lo - p0.y) / d.y, e1 = (g.y_hi - p0.y) / d.y;
+      if (e0 > e1) std::swap(e0, e1);
+      plo = std::max(plo, e0);
+      phi = std::min(phi, e1);
+    } else if (p0.y < g.y_lo || p0.y > g.y_hi) {
+      continue;
+    }
+    if (!(plo <= phi) || !std::isfinite(plo) || !std::isfinite(phi)) continue;
+    // H(w) = h(w) - y0: where the segment is at the height of p0.
+    double H[4] = {g.y[0] - p0.y, g.y[1], g.y[2], g.y[3]};
+    if (flat) {
+      // Horizontal first: the heights where the profile meets y0, the circle of radius r there.
+      int deg = 3;
+      while (deg > 0 && H[deg] == 0.0) --deg;
+      if (deg == 0) continue;  // a flat ring seen edge-on: a graze
+      double ws[3];
+      int nw = poly_roots(H, deg, -tol::kLatheSplineSearchPad, 1.0 + tol::kLatheSplineSearchPad, ws);
+      for (int i = 0; i < nw; ++i) {
+        double r = spline_eval(g.x, ws[i]);
+        double c0 = f.rho0 - r * r;
+        double disc = f.b * f.b - f.a * c0;
+        if (disc <= 0.0 || f.a == 0.0) continue;  // misses (or touches) that circle
+        double q = -(f.b + std::copysign(std::sqrt(disc), f.b));
+        double s1 = q / f.a, s2 = q != 0.0 ? c0 / q : -s1;
+        keep(g, j, (f.sc + s1) / f.len, ws[i]);
+        keep(g, j, (f.sc + s2) / f.len, ws[i]);
+      }
+      continue;
+    }
+    // dy^2 (x(s)^2 + z(s)^2 - r(w)^2) with s = H(w) / dy: U^2 + V^2 - W^2, where
+    // U = dy x0 + dx H, V = dy z0 + dz H, W = dy r (each a cubic in w).
+    double U[4], V[4], W[4];
+    for (int k = 0; k < 4; ++k) {
+      U[k] = d.x * H[k];
+      V[k] = d.z * H[k];
+      W[k] = d.y * g.x[k];
+    }
+    U[0] += d.y * p0.x;
+    V[0] += d.y * p0.z;
+    double F[7] = {0, 0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 4; ++k) F[i + k] += U[i] * U[k] + V[i] * V[k] - W[i] * W[k];
+    int deg = 6;
+    while (deg > 0 && F[deg] == 0.0) --deg;
+    if (deg == 0) continue;
+    double ws[6];
+    int nw = poly_roots(F, deg, -tol::kLatheSplineSearchPad, 1.0 + tol::kLatheSplineSearchPad, ws);
+    for (int i = 0; i < nw; ++i) {
+      double s = spline_eval(H, ws[i]) / d.y;
+      keep(g, j, (f.sc + s) / f.len, ws[i]);
+    }
+  }
+  return count;
+}
+
+}  // namespace detail
 
 // The crossings of the profile's surfaces along the whole line beyond t_after: the first
 // max_out, ascending; returns how many. Closed profile, whole line: in and out alternately.
@@ -138,6 +343,9 @@ inline int lathe_crossings(const Lathe& l, const Ray& ray, LatheCrossing* out, i
   } else if (rho0 > R * R) {
     return 0;
   }
+  if (l.spline != SplineKind::Linear)
+    return detail::lathe_spline_walk(l, ray, detail::LatheRayFrame{d, p0, len, sc, a, b, rho0, lo, hi}, out, max_out,
+                                     t_after);
   int count = 0;
   auto emit = [&](double off, int seg) {
     double t = (sc + off) / len;
@@ -212,7 +420,49 @@ inline int lathe_crossings(const Lathe& l, const Ray& ray, LatheCrossing* out, i
   return count;
 }
 
+namespace detail {
+
+// lathe_hit_at for a spline profile: the normal from the curve's tangent at the crossing.
+inline void lathe_spline_hit_at(const Lathe& l, const Ray& ray, const LatheCrossing& c, SurfaceHit& hit) {
+  const SplineSegment& g = l.segments[c.segment];
+  Vec3 p = ray.at(c.t);
+  const double size = l.radius + std::max(std::abs(l.h_min), std::abs(l.h_max));
+  double rho = std::sqrt(p.x * p.x + p.z * p.z);
+  Vec3 radial = rho > 0.0 ? Vec3(p.x / rho, 0.0, p.z / rho) : Vec3(1, 0, 0);
+  double r = spline_eval(g.x, c.w);
+  double dr = spline_slope(g.x, c.w), dh = spline_slope(g.y, c.w);
+  if (dr == 0.0 && dh == 0.0) {
+    // A cusp (coincident control points): the chord over a short step says which way it runs.
+    double w1 = std::clamp(c.w + 1e-6, 0.0, 1.0), w0 = std::clamp(c.w - 1e-6, 0.0, 1.0);
+    dr = spline_eval(g.x, w1) - spline_eval(g.x, w0);
+    dh = spline_eval(g.y, w1) - spline_eval(g.y, w0);
+  }
+  // (dh, -dr) in (r, y), turned about y; outward for a counter-clockwise profile. Where r(w) < 0
+  // the surface is at -r, the profile mirrored: the radial part turns round.
+  double sr = r < 0.0 ? -1.0 : 1.0;
+  Vec3 n = Vec3(sr * dh * radial.x, -dr, sr * dh * radial.z);
+  double nl = glm::length(n);
+  n = nl > 0.0 ? n / nl * l.orientation : Vec3(0, 1, 0);
+  // How far the point may be from the surface: no farther than from the curve's point at w.
+  double off = std::abs(rho - std::abs(r)) + std::abs(p.y - spline_eval(g.y, c.w)) + error_gamma(16) * size;
+  hit.t = c.t;
+  hit.point = p;
+  hit.error = 4.0 * ray_point_error(ray, c.t) + 2.0 * std::min(off, 1e-3 * size);
+  hit.normal = n;
+  hit.shading_normal = n;
+  double u = std::atan2(p.z, p.x) / (2.0 * std::numbers::pi);
+  if (u < 0.0) u += 1.0;
+  hit.uv = {u, (c.segment + std::clamp(c.w, 0.0, 1.0)) / static_cast<double>(l.segments.size())};
+  hit.has_uv = true;
+}
+
+}  // namespace detail
+
 inline void lathe_hit_at(const Lathe& l, const Ray& ray, const LatheCrossing& c, SurfaceHit& hit) {
+  if (l.spline != SplineKind::Linear) {
+    detail::lathe_spline_hit_at(l, ray, c, hit);
+    return;
+  }
   const Vec3 &A = l.points[c.segment], &B = l.points[c.segment + 1];
   Vec3 p = ray.at(c.t);
   double err = 4.0 * ray_point_error(ray, c.t);

@@ -1,4 +1,4 @@
-// Real roots of a polynomial of degree <= 4 inside an interval, by isolation on the
+// Real roots of a polynomial of degree <= 6 inside an interval, by isolation on the
 // derivative's roots (the derivative's roots split the interval into pieces on which the
 // polynomial is monotone; each piece whose ends differ in sign holds exactly one root, found
 // by safeguarded Newton). Unlike the closed forms (Ferrari, Cardano), which lose every digit
@@ -11,6 +11,11 @@
 
 namespace rts::render {
 
+// The highest degree poly_roots takes: a lathe's cubic spline segment against a ray is a
+// sextic (the torus and sor are quartics). Only the arrays' sizes depend on it, so results
+// for lower degrees are the same as before it was raised.
+inline constexpr int kPolyMaxDegree = 6;
+
 // c[0] + c[1] s + ... + c[n] s^n.
 inline double poly_eval(const double* c, int n, double s) {
   double v = c[n];
@@ -21,7 +26,7 @@ inline double poly_eval(const double* c, int n, double s) {
 // The single root of the polynomial in [a, b], given that its values at a and b differ in
 // sign (f(a) < 0 <=> a_negative) and that it is monotone there.
 inline double poly_bracketed_root(const double* c, int n, double a, double b, bool a_negative) {
-  double d[4];
+  double d[kPolyMaxDegree];
   for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
   double s = 0.5 * (a + b);
   // Bisection halves the bracket each step: 80 steps reach a double's last bit from any
@@ -41,7 +46,7 @@ inline double poly_bracketed_root(const double* c, int n, double a, double b, bo
 }
 
 // The roots in (lo, hi) where the polynomial changes sign, ascending; returns how many
-// (at most n). The leading coefficient must not be zero.
+// (at most n <= kPolyMaxDegree). The leading coefficient must not be zero.
 inline int poly_roots(const double* c, int n, double lo, double hi, double* out) {
   if (n < 1 || !(lo < hi)) return 0;
   if (n == 1) {
@@ -49,11 +54,11 @@ inline int poly_roots(const double* c, int n, double lo, double hi, double* out)
     if (s > lo && s < hi) { out[0] = s; return 1; }
     return 0;
   }
-  double d[4];
+  double d[kPolyMaxDegree];
   for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
-  double crit[4];
+  double crit[kPolyMaxDegree];
   int nc = poly_roots(d, n - 1, lo, hi, crit);
-  double ends[6];
+  double ends[kPolyMaxDegree + 2];
   int ne = 0;
   ends[ne++] = lo;
   for (int i = 0; i < nc; ++i) ends[ne++] = crit[i];
