@@ -12,6 +12,7 @@
 #include "render/accel/world.hpp"
 #include "render/geometry/csg/csg_prune.hpp"
 #include "render/geometry/csg/csg_tree.hpp"
+#include "render/geometry/csg/leaf_crossings.hpp"
 #include "scene_fixture.hpp"
 
 using namespace rts::render;
@@ -105,6 +106,40 @@ TEST_CASE("csg pruning: leaves left out never change the sweep's surface", "[csg
   // The test means something only if both happen often.
   CHECK(found > 2000);
   CHECK(pruned_leaves > total_leaves / 10);
+}
+
+TEST_CASE("csg leaves: sphere and box crossings are convex_crossings's, bit for bit", "[csg]") {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0), c(-1.0, 1.0);
+  int crossed = 0;
+  for (int i = 0; i < 200000; ++i) {
+    Sphere sp{Vec3(c(rng), c(rng), c(rng)), i % 97 == 0 ? 0.0 : 0.1 + u(rng)};
+    Box bx{Vec3(c(rng), c(rng), c(rng)) - 0.5, Vec3(c(rng), c(rng), c(rng)) + 0.5};
+    Vec3 o(3 * c(rng), 3 * c(rng), 3 * c(rng));
+    Vec3 d(c(rng), c(rng), c(rng));
+    switch (i % 8) {  // rays along axes, starting on the surfaces, grazing
+      case 0: d = Vec3(0, 0, c(rng)); break;
+      case 1: d = Vec3(c(rng), 0, 0); o.y = bx.min.y; break;
+      case 2: o = sp.center + sp.radius * glm::normalize(d); break;
+      case 3: o = Vec3(bx.max.x, o.y, o.z); d.x = 0; break;
+      case 4: d = Vec3(0.0); break;
+      default: break;
+    }
+    Ray ray{o, d};
+    CsgLeafCrossings fast, ref;
+    leaf_crossings(sp, ray, fast);
+    convex_crossings(sp, ray, ref);
+    INFO("ray " << i);
+    REQUIRE(fast.count == ref.count);
+    REQUIRE(fast.inside_at_start == ref.inside_at_start);
+    for (int k = 0; k < ref.count; ++k) REQUIRE(fast.t[k] == ref.t[k]);
+    leaf_crossings(bx, ray, fast);
+    convex_crossings(bx, ray, ref);
+    REQUIRE(fast.count == ref.count);
+    for (int k = 0; k < ref.count; ++k) REQUIRE(fast.t[k] == ref.t[k]);
+    crossed += ref.count > 0;
+  }
+  CHECK(crossed > 20000);
 }
 
 // ---- whole scenes through World ---------------------------------------------------------------
