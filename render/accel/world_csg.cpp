@@ -4,6 +4,8 @@
 // crossings (csg_tree.hpp), and computes the full hit only at the surface found; a shadow ray
 // stops at the sweep's answer.
 #include <cmath>
+#include <cstddef>
+#include <new>
 #include <string>
 
 #include "render/accel/world.hpp"
@@ -109,7 +111,11 @@ bool World::occluded_csg(const Instance& inst, const Ray& world_ray, const Inter
 
 bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit* hit) const {
   const Csg& csg = csgs_[inst.index];
-  CsgLeafCrossings crossings[kMaxCsgLeaves];
+  // Storage for kMaxCsgLeaves lists, left unconstructed: an array of them would run their
+  // default member initializers, 256 of them for every ray (the profile's largest cost after
+  // pruning). Every list the sweep reads is written first (csg_gather, or the loop below).
+  alignas(CsgLeafCrossings) std::byte storage[sizeof(CsgLeafCrossings) * kMaxCsgLeaves];
+  CsgLeafCrossings* crossings = std::launder(reinterpret_cast<CsgLeafCrossings*>(storage));
   const RayInverse inv(world_ray.origin, world_ray.direction);
   // Each leaf in its own object space (t is the same in every space).
   auto with_leaf = [&](uint32_t l, auto&& f) -> bool {
