@@ -3,6 +3,7 @@
 // whose state can matter inside its interval (render/geometry/csg/csg_prune.hpp), sweeps their
 // crossings (csg_tree.hpp), and computes the full hit only at the surface found; a shadow ray
 // stops at the sweep's answer.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <new>
@@ -25,6 +26,7 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     return t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
   };
   const double inf = Interval::kInfinity;
+  std::vector<uint32_t> block_transforms;  // this block's leaf transforms so far
   // Appends the nodes for `node_id` placed by `m`, children before parents; a group is a union.
   auto add_node = [&](auto& self, NodeId node_id, const Mat4& m, MaterialId inherited, int depth) -> void {
     if (node_id >= scene.nodes.size() || depth > tol::kMaxGroupDepth)
@@ -64,7 +66,14 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     add_geometry(scene, shape, part, object_bounds, unbounded);
     // A height field's solid has no floor (POV-Ray's): its bounds hold only the drawn surface.
     if (std::holds_alternative<HeightField>(shape.geometry)) unbounded = true;
-    if (m != Mat4(1.0)) part.transform = add_transform(m);
+    // Leaves placed by the same matrix (a die's box, sphere and pips under one rotation)
+    // share one transform, so a ray is carried into their space once (trace_csg).
+    if (m != Mat4(1.0)) {
+      auto same = std::find_if(block_transforms.begin(), block_transforms.end(),
+                               [&](uint32_t xf) { return transforms_[xf].to_world == m; });
+      part.transform = same != block_transforms.end() ? *same : add_transform(m);
+      if (same == block_transforms.end()) block_transforms.push_back(part.transform);
+    }
     AABB box = unbounded ? AABB{Vec3(-inf), Vec3(inf)}
                          : (m == Mat4(1.0) ? object_bounds : transform_bounds(m, object_bounds));
     CsgNode n;
@@ -118,9 +127,17 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
   CsgLeafCrossings* crossings = std::launder(reinterpret_cast<CsgLeafCrossings*>(storage));
   const RayInverse inv(world_ray.origin, world_ray.direction);
   // Each leaf in its own object space (t is the same in every space).
+  // The ray in the space of the last transform used: leaves sharing a transform (add_csg)
+  // reuse it.
+  uint32_t ray_transform = kNoId;
+  Ray transformed = world_ray;
   auto with_leaf = [&](uint32_t l, auto&& f) -> bool {
     const Instance& part = instances_[csg.leaf_instance[l]];
-    const Ray ray = object_ray(part, world_ray);
+    if (part.transform != kNoId && part.transform != ray_transform) {
+      transformed = object_ray(part, world_ray);
+      ray_transform = part.transform;
+    }
+    const Ray& ray = part.transform == kNoId ? world_ray : transformed;
     // The part's kind, among those with leaf_crossings() (render/geometry/csg/leaf_crossings.hpp);
     // other kinds are refused when the scene is built.
     return [&]<std::size_t... I>(std::index_sequence<I...>) {
