@@ -155,16 +155,14 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
   const double tie_abs =
       tol::kCoincidentRelative * max_abs_component(world_ray.origin) / max_abs_component(world_ray.direction);
   const double tie_rel = tol::kCoincidentRelative;
-  // Leaf l's crossings along the whole line, unless it is bounded and its box misses `span`
-  // widened by kCsgPruneTies ties at each end (then it is outside throughout the span; an
-  // infinite end stays infinite).
+  // Leaf l's crossings along the whole line, unless its box misses `span` widened by
+  // kCsgPruneTies ties at each end (then it is outside throughout the span; an infinite end
+  // stays infinite). An unbounded leaf's box is infinite (add_csg), which every ray meets:
+  // its slabs give -inf and +inf, never NaN, since no infinite bound minus an origin is 0.
   auto compute = [&](uint32_t l, const Interval& span) {
-    const AABB& box = csg.leaf_bounds[l];
-    if (box.finite()) {
-      const Interval wide(span.min - tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.min)),
-                          span.max + tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.max)));
-      if (!slab_hit(box, inv, wide)) return;
-    }
+    const Interval wide(span.min - tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.min)),
+                        span.max + tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.max)));
+    if (!slab_hit(csg.leaf_bounds[l], inv, wide)) return;
     CsgLeafCrossings& c = crossings[l];
     with_leaf(l, [&](const auto& shape, const Ray& ray) {
       leaf_crossings(shape, ray, c);

@@ -33,42 +33,57 @@ inline Interval csg_inside_hull(const CsgLeafCrossings& c) {
 // inside, valid within `span`: an inverted node is taken as inside anywhere.
 template <class Compute>
 Interval csg_gather(const CsgTree& tree, uint32_t node, const Interval& span, CsgLeafCrossings* leaves,
+                    Compute& compute);
+
+// One leaf, handled in its parent's loop: most nodes are leaves, and a call per leaf was most
+// of the walk's cost.
+template <class Compute>
+inline Interval csg_gather_leaf(const CsgNode& n, const Interval& span, CsgLeafCrossings* leaves,
+                                Compute& compute) {
+  CsgLeafCrossings& c = leaves[n.first];
+  c.count = 0;
+  c.inside_at_start = false;
+  Interval hull;  // empty
+  if (!span.empty()) {
+    compute(n.first, span);
+    hull = csg_inside_hull(c);
+  }
+  return n.inverse ? Interval::universe() : hull;
+}
+
+template <class Compute>
+Interval csg_gather(const CsgTree& tree, uint32_t node, const Interval& span, CsgLeafCrossings* leaves,
                     Compute& compute) {
   const CsgNode& n = tree.nodes[node];
+  if (n.leaf) return csg_gather_leaf(n, span, leaves, compute);
+  const uint32_t* kids = tree.children.data() + n.first;
+  auto child = [&](uint32_t k, const Interval& s) {
+    const CsgNode& c = tree.nodes[kids[k]];
+    return c.leaf ? csg_gather_leaf(c, s, leaves, compute) : csg_gather(tree, kids[k], s, leaves, compute);
+  };
   Interval hull;  // empty
-  if (n.leaf) {
-    CsgLeafCrossings& c = leaves[n.first];
-    c.count = 0;
-    c.inside_at_start = false;
-    if (!span.empty()) {
-      compute(n.first, span);
-      hull = csg_inside_hull(c);
-    }
-  } else {
-    const uint32_t* kids = tree.children.data() + n.first;
-    switch (n.op) {
-      case CsgOp::Union:
-      case CsgOp::Merge:
-        for (uint32_t k = 0; k < n.count; ++k) {
-          Interval h = csg_gather(tree, kids[k], span, leaves, compute);
-          hull = Interval(std::min(hull.min, h.min), std::max(hull.max, h.max));
-        }
-        break;
-      case CsgOp::Intersection: {
-        Interval s = span;
-        for (uint32_t k = 0; k < n.count; ++k) s = s.intersect(csg_gather(tree, kids[k], s, leaves, compute));
-        hull = s;
-        break;
+  switch (n.op) {
+    case CsgOp::Union:
+    case CsgOp::Merge:
+      for (uint32_t k = 0; k < n.count; ++k) {
+        Interval h = child(k, span);
+        hull = Interval(std::min(hull.min, h.min), std::max(hull.max, h.max));
       }
-      case CsgOp::Difference:
-        if (n.count > 0) {
-          hull = span.intersect(csg_gather(tree, kids[0], span, leaves, compute));
-          for (uint32_t k = 1; k < n.count; ++k) csg_gather(tree, kids[k], hull, leaves, compute);
-        }
-        break;
+      break;
+    case CsgOp::Intersection: {
+      Interval s = span;
+      for (uint32_t k = 0; k < n.count; ++k) s = s.intersect(child(k, s));
+      hull = s;
+      break;
     }
-    if (hull.empty()) hull = Interval();  // one empty form, so the min/max above stay exact
+    case CsgOp::Difference:
+      if (n.count > 0) {
+        hull = span.intersect(child(0, span));
+        for (uint32_t k = 1; k < n.count; ++k) child(k, hull);
+      }
+      break;
   }
+  if (hull.empty()) hull = Interval();  // one empty form, so the min/max above stay exact
   return n.inverse ? Interval::universe() : hull;
 }
 
