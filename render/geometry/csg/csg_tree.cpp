@@ -101,6 +101,7 @@ bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, cons
   // batch whose every crossing is at or before ray_t.min only toggles its leaves (the batches
   // are formed exactly as before, so the later ones are the same).
   bool before_known = false;
+  const bool root_shows_own_only = tree.nodes[nn - 1].leaf || tree.nodes[nn - 1].op != CsgOp::Union;
   int i = 0;
   while (i < ne) {
     const double t0 = ev[i].t;
@@ -118,6 +119,14 @@ bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, cons
     before_known = true;
     for (int e = i; e < j; ++e) leaf_in[ev[e].leaf] ^= 1;
     tree.evaluate(leaf_in, after);
+    // A root other than a union shows a surface only where its own state changes: most
+    // batches (a die's box entered outside its sphere, a pip met outside the die) need no
+    // visibility pass.
+    if (root_shows_own_only && before[nn - 1] == after[nn - 1]) {
+      std::copy(after, after + nn, before);
+      i = j;
+      continue;
+    }
     // Which nodes show a surface in this batch (post-order, so children first).
     for (std::size_t k = 0; k < nn; ++k) {
       const CsgNode& n = tree.nodes[k];
