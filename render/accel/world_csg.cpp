@@ -159,10 +159,12 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
   // kCsgPruneTies ties at each end (then it is outside throughout the span; an infinite end
   // stays infinite). An unbounded leaf's box is infinite (add_csg), which every ray meets:
   // its slabs give -inf and +inf, never NaN, since no infinite bound minus an origin is 0.
+  auto widen = [&](const Interval& span) {
+    return Interval(span.min - tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.min)),
+                    span.max + tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.max)));
+  };
   auto compute = [&](uint32_t l, const Interval& span) {
-    const Interval wide(span.min - tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.min)),
-                        span.max + tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.max)));
-    if (!slab_hit(csg.leaf_bounds[l], inv, wide)) return;
+    if (!slab_hit(csg.leaf_bounds[l], inv, widen(span))) return;
     CsgLeafCrossings& c = crossings[l];
     with_leaf(l, [&](const auto& shape, const Ray& ray) {
       leaf_crossings(shape, ray, c);
@@ -170,7 +172,9 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
     });
   };
   if (csg_pruning_) {
-    csg_gather(csg.tree, ray_t, crossings, compute);
+    // A result that cannot be inside anywhere near ray_t changes state nowhere there, so it
+    // shows no surface (the ray met its box but missed its first leaves: most CSG rays).
+    if (csg_gather(csg.tree, ray_t, crossings, compute).intersect(widen(ray_t)).empty()) return false;
   } else {  // every leaf the whole line meets (tests compare the two)
     for (uint32_t l = 0; l < csg.tree.leaf_count; ++l) {
       crossings[l].count = 0;

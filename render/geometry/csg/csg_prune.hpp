@@ -87,11 +87,12 @@ Interval csg_gather(const CsgTree& tree, uint32_t node, const Interval& span, Cs
   return n.inverse ? Interval::universe() : hull;
 }
 
-// The whole tree for a ray whose surfaces are wanted inside ray_t.
+// The whole tree for a ray whose surfaces are wanted inside ray_t; returns where the result
+// can be inside (valid within ray_t).
 template <class Compute>
-void csg_gather(const CsgTree& tree, const Interval& ray_t, CsgLeafCrossings* leaves, Compute&& compute) {
-  if (tree.nodes.empty()) return;
-  csg_gather(tree, static_cast<uint32_t>(tree.nodes.size() - 1), ray_t, leaves, compute);
+Interval csg_gather(const CsgTree& tree, const Interval& ray_t, CsgLeafCrossings* leaves, Compute&& compute) {
+  if (tree.nodes.empty()) return Interval();
+  return csg_gather(tree, static_cast<uint32_t>(tree.nodes.size() - 1), ray_t, leaves, compute);
 }
 
 }  // namespace rts::render
