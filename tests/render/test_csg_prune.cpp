@@ -70,7 +70,7 @@ bool same(bool a, const CsgSurface& x, bool b, const CsgSurface& y) {
 TEST_CASE("csg pruning: leaves left out never change the sweep's surface", "[csg]") {
   std::mt19937 rng(20261128);
   const double tie_abs = 1e-12, tie_rel = 1e-12;
-  int found = 0, pruned_leaves = 0, total_leaves = 0;
+  int found = 0, pruned_leaves = 0, total_leaves = 0, skipped = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     CsgTree tree;
     random_node(tree, rng, 3);
@@ -86,7 +86,7 @@ TEST_CASE("csg pruning: leaves left out never change the sweep's surface", "[csg
     Interval ray_t(std::min(a, b), grid(rng) < 0 ? Interval::kInfinity : std::max(a, b) + 0.5);
 
     std::vector<CsgLeafCrossings> kept(tree.leaf_count);
-    csg_gather(tree, ray_t, kept.data(), [&](uint32_t l, const Interval& span) {
+    Interval root = csg_gather(tree, ray_t, kept.data(), [&](uint32_t l, const Interval& span) {
       // As World does: a bounded leaf whose extent misses the widened span stays empty.
       const double lo = span.min - 4.0 * (tie_abs + tie_rel * std::abs(span.min));
       const double hi = span.max + 4.0 * (tie_abs + tie_rel * std::abs(span.max));
@@ -102,10 +102,18 @@ TEST_CASE("csg pruning: leaves left out never change the sweep's surface", "[csg
     found += f;
     INFO("trial " << trial);
     REQUIRE(same(f, full, p, pruned));
+    // World skips the sweep when the root cannot be inside near ray_t: then there is nothing.
+    const Interval wide(ray_t.min - 4.0 * (tie_abs + tie_rel * std::abs(ray_t.min)),
+                        ray_t.max + 4.0 * (tie_abs + tie_rel * std::abs(ray_t.max)));
+    if (root.intersect(wide).empty()) {
+      REQUIRE_FALSE(f);
+      ++skipped;
+    }
   }
   // The test means something only if both happen often.
   CHECK(found > 2000);
   CHECK(pruned_leaves > total_leaves / 10);
+  CHECK(skipped > 1000);
 }
 
 TEST_CASE("csg leaves: sphere and box crossings are convex_crossings's, bit for bit", "[csg]") {
