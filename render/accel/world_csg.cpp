@@ -76,6 +76,20 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     }
     AABB box = unbounded ? AABB{Vec3(-inf), Vec3(inf)}
                          : (m == Mat4(1.0) ? object_bounds : transform_bounds(m, object_bounds));
+    if (const Sphere* sp = std::get_if<Sphere>(&shape.geometry); sp && m != Mat4(1.0) && box.valid()) {
+      // A rotated sphere's cube of corners is up to sqrt(3) times too wide; the placed
+      // sphere (an ellipsoid) reaches exactly r * |row i of the linear part| along axis i.
+      // Tighter leaf boxes prune more leaves, and the block's box (a die: its box intersected
+      // with its sphere) lets the BVH send fewer rays. Padded by a coincidence tie of the
+      // box's scale, so that no crossing computed with rounding falls outside it.
+      const Vec3 c(m * glm::dvec4(sp->center, 1.0));
+      Vec3 half;
+      for (int i = 0; i < 3; ++i)
+        half[i] = std::abs(sp->radius) * std::sqrt(m[0][i] * m[0][i] + m[1][i] * m[1][i] + m[2][i] * m[2][i]);
+      const Vec3 pad = tol::kCoincidentRelative * (glm::abs(c) + half);
+      box.lo = glm::max(box.lo, c - half - pad);
+      box.hi = glm::min(box.hi, c + half + pad);
+    }
     CsgNode n;
     n.leaf = true;
     n.inverse = shape.inverse;
