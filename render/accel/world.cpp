@@ -52,91 +52,6 @@ void World::add_geometry(const SceneDesc& scene, const ShapeDesc& shape, Instanc
       shape.geometry);
 }
 
-void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
-                    AABB& world_bounds) {
-  Csg csg;
-  auto transmits = [&](MaterialId m) {
-    if (m >= scene.materials.size()) return false;
-    const Color& t = scene.materials[m].transmit;
-    return t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
-  };
-  const double inf = Interval::kInfinity;
-  // Appends the nodes for `node_id` placed by `m`, children before parents; a group is a union.
-  auto add_node = [&](auto& self, NodeId node_id, const Mat4& m, MaterialId inherited, int depth) -> void {
-    if (node_id >= scene.nodes.size() || depth > tol::kMaxGroupDepth)
-      throw RenderError(block.loc, "internal: a CSG block refers to an unknown node");
-    const Node& node = scene.nodes[node_id];
-    auto add_op = [&](CsgOp op, const std::vector<Child>& kids, MaterialId mat, bool inverse) {
-      std::vector<uint32_t> ids;
-      for (const Child& c : kids) {
-        self(self, c.node, m * c.transform, mat, depth + 1);
-        ids.push_back(static_cast<uint32_t>(csg.tree.nodes.size() - 1));
-      }
-      CsgNode n;
-      n.op = op;
-      n.inverse = inverse;
-      n.first = static_cast<uint32_t>(csg.tree.children.size());
-      n.count = static_cast<uint32_t>(ids.size());
-      csg.tree.children.insert(csg.tree.children.end(), ids.begin(), ids.end());
-      csg.tree.nodes.push_back(n);
-    };
-    if (node.kind == NodeKind::Group) {
-      const GroupDesc& g = scene.groups[node.index];
-      add_op(CsgOp::Union, g.children, g.material != kNoId ? g.material : inherited, false);
-      return;
-    }
-    if (node.kind == NodeKind::Csg) {
-      const CsgDesc& d = scene.csgs[node.index];
-      add_op(d.op, d.children, d.material != kNoId ? d.material : inherited, d.inverse);
-      return;
-    }
-    if (node.kind != NodeKind::Shape) throw RenderError(node.loc, "a CSG block holds only shapes");
-    const ShapeDesc& shape = scene.shapes[node.index];
-    Instance part;
-    part.material = shape.material != kNoId ? shape.material : inherited;
-    part.transmissive = transmits(part.material);
-    AABB object_bounds;
-    bool unbounded = false;
-    add_geometry(scene, shape, part, object_bounds, unbounded);
-    // A height field's solid has no floor (POV-Ray's): its bounds hold only the drawn surface.
-    if (std::holds_alternative<HeightField>(shape.geometry)) unbounded = true;
-    if (m != Mat4(1.0)) part.transform = add_transform(m);
-    AABB box = unbounded ? AABB{Vec3(-inf), Vec3(inf)}
-                         : (m == Mat4(1.0) ? object_bounds : transform_bounds(m, object_bounds));
-    CsgNode n;
-    n.leaf = true;
-    n.inverse = shape.inverse;
-    n.first = static_cast<uint32_t>(csg.leaf_instance.size());
-    csg.leaf_instance.push_back(static_cast<uint32_t>(parts.size()));  // made absolute at the end
-    csg.leaf_bounds.push_back(box);
-    csg.tree.nodes.push_back(n);
-    parts.push_back(part);
-    inst.transmissive = inst.transmissive || part.transmissive;
-  };
-  const CsgDesc& d = scene.csgs[block.csg];
-  {
-    std::vector<uint32_t> top;
-    for (const Child& c : d.children) {
-      add_node(add_node, c.node, block.to_world * c.transform, d.material != kNoId ? d.material : block.inherited, 0);
-      top.push_back(static_cast<uint32_t>(csg.tree.nodes.size() - 1));
-    }
-    CsgNode n;
-    n.op = d.op;
-    n.inverse = d.inverse;
-    n.first = static_cast<uint32_t>(csg.tree.children.size());
-    n.count = static_cast<uint32_t>(top.size());
-    csg.tree.children.insert(csg.tree.children.end(), top.begin(), top.end());
-    csg.tree.nodes.push_back(n);
-  }
-  csg.tree.leaf_count = static_cast<uint32_t>(csg.leaf_instance.size());
-  if (csg.tree.leaf_count > kMaxCsgLeaves || csg.tree.nodes.size() > kMaxCsgNodes)
-    throw RenderError(block.loc, "a CSG block holds more than " + std::to_string(kMaxCsgLeaves) + " shapes");
-  world_bounds = csg.tree.bounds(csg.leaf_bounds);
-  inst.kind = kCsgKind;
-  inst.index = static_cast<uint32_t>(csgs_.size());
-  csgs_.push_back(std::move(csg));
-}
-
 bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, const Mat4& to_world, Instance& inst,
                                AABB& bounds, bool& unbounded, MaterialId material) {
   const ShapeDesc& shape = scene.shapes[shape_index];
@@ -290,62 +205,6 @@ bool World::intersect_instance(const Instance& inst, const Ray& world_ray, const
   return intersect_kind(std::make_index_sequence<kShapeKindCount>(), inst, object_ray(inst, world_ray), ray_t, hit);
 }
 
-bool World::intersect_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit& hit) const {
-  const Csg& csg = csgs_[inst.index];
-  const uint32_t n = csg.tree.leaf_count;
-  CsgLeafCrossings crossings[kMaxCsgLeaves];
-  const RayInverse inv(world_ray.origin, world_ray.direction);
-  // Each leaf in its own object space (t is the same in every space).
-  auto with_leaf = [&](uint32_t l, auto&& f) -> bool {
-    const Instance& part = instances_[csg.leaf_instance[l]];
-    const Ray ray = object_ray(part, world_ray);
-    // The part's kind, among those with leaf_crossings() (render/geometry/csg/leaf_crossings.hpp);
-    // other kinds are refused when the scene is built.
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-      bool result = false;
-      (void)((part.kind == I && [&] {
-                using T = ShapeKind<I>;
-                if constexpr (requires(const T& g, CsgLeafCrossings& c) { leaf_crossings(g, ray, c); })
-                  result = f(std::get<I>(shapes_)[part.index], ray);
-                return true;
-              }()) || ...);
-      return result;
-    }(std::make_index_sequence<kShapeKindCount>());
-  };
-  for (uint32_t l = 0; l < n; ++l) {
-    CsgLeafCrossings& c = crossings[l];
-    c.count = 0;
-    c.inside_at_start = false;
-    // A bounded leaf the whole line misses stays outside along it.
-    if (csg.leaf_bounds[l].finite() && !slab_hit(csg.leaf_bounds[l], inv, Interval::universe())) continue;
-    with_leaf(l, [&](const auto& shape, const Ray& ray) {
-      leaf_crossings(shape, ray, c);
-      return true;
-    });
-  }
-  // The same tie as World::intersect's between instances.
-  const double tie_abs =
-      tol::kCoincidentRelative * max_abs_component(world_ray.origin) / max_abs_component(world_ray.direction);
-  CsgSurface surface;
-  if (!csg_first_surface(csg.tree, crossings, ray_t, tie_abs, tol::kCoincidentRelative, surface)) return false;
-  const CsgLeafCrossings& c = crossings[surface.leaf];
-  int k = 0;
-  while (k + 1 < c.count && c.t[k] != surface.t) ++k;
-  bool ok = with_leaf(surface.leaf, [&](const auto& shape, const Ray& ray) {
-    if (!leaf_hit(shape, ray, c, k, hit)) return false;
-    // Out of the result: towards the ray where it enters, along it where it leaves.
-    if ((glm::dot(hit.normal, ray.direction) < 0.0) != surface.entering) {
-      hit.normal = -hit.normal;
-      hit.shading_normal = -hit.shading_normal;
-    }
-    return true;
-  });
-  if (!ok) return false;
-  hit.t = surface.t;
-  hit.csg_part = csg.leaf_instance[surface.leaf];
-  return true;
-}
-
 bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const {
   if (inst.kind == kPrimKind<MeshRef>) {
     return meshes_[inst.index]->occluded(object_ray(inst, world_ray), ray_t);
@@ -355,6 +214,7 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
     return sphere_root(std::get<std::vector<Sphere>>(shapes_)[inst.index], object_ray(inst, world_ray), ray_t, t);
   }
   if (inst.kind == kGroupKind) return occluded_group(inst, world_ray, ray_t);
+  if (inst.kind == kCsgKind) return occluded_csg(inst, world_ray, ray_t);  // the sweep's answer alone
   SurfaceHit scratch;
   return intersect_instance(inst, world_ray, ray_t, scratch);
 }

@@ -175,6 +175,9 @@ class World {
   std::size_t group_count() const { return groups_.size(); }  // distinct instanced groups built
   std::size_t mesh_bvh_count() const;  // distinct mesh BVHs built
   const BVH& top_level() const { return bvh_; }
+  // CSG rays compute only the leaves whose state can matter inside the ray's interval
+  // (render/geometry/csg/csg_prune.hpp); off, every leaf the line meets (for tests).
+  void set_csg_pruning(bool on) { csg_pruning_ = on; }
 
  private:
   Ray object_ray(const Instance& inst, const Ray& world_ray) const;
@@ -193,6 +196,10 @@ class World {
   void add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
                AABB& world_bounds);
   bool intersect_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit& hit) const;
+  // Whether a CSG block has a surface inside ray_t (a shadow ray: no hit point or normal).
+  bool occluded_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const;
+  // Both: the first surface inside ray_t, and its hit when `hit` is not null (world_csg.cpp).
+  bool trace_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit* hit) const;
   // One shape placement (top level or inside a group): its instance and bounds in the
   // placement's parent space; false when it can never be hit (singular, empty, not finite).
   // `material`: what it shows (its own, else its group's: FlatScene::material).
@@ -241,6 +248,7 @@ class World {
   bool use_bvh_ = true;
   bool has_transmissive_ = false;
   std::size_t csg_parts_ = 0;
+  bool csg_pruning_ = true;
 };
 
 }  // namespace rts::render

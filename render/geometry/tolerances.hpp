@@ -71,6 +71,13 @@ inline constexpr double kTriangleDeterminant = 1e-14;
 // can mean (a box 1e-9 above a plane seen from 5 units differs by 4e-10 relative).
 inline constexpr double kCoincidentRelative = 1e-12;
 
+// A CSG leaf whose box the ray meets only farther than this many coincidence ties
+// (kCoincidentRelative, as World::intersect_csg scales it) outside the span where its state
+// can matter is left out (render/geometry/csg/csg_prune.hpp): a crossing that far away can
+// never share a batch of the sweep with a kept one unless several leaves chain crossings
+// closer than a tie across the gap, and the box's own rounding is ~1e-4 of a tie.
+inline constexpr double kCsgPruneTies = 4.0;
+
 // Camera `up` counts as parallel to the view direction when |up x forward| is below this
 // fraction of |up|: the image would have no defined "up".
 inline constexpr double kParallelVectors = 1e-12;

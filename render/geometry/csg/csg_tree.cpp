@@ -97,18 +97,36 @@ bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, cons
   std::sort(ev, ev + ne, [](const Event& a, const Event& b) { return a.t < b.t || (a.t == b.t && a.leaf < b.leaf); });
 
   uint8_t before[kMaxCsgNodes], after[kMaxCsgNodes], visible[kMaxCsgNodes];
-  tree.evaluate(leaf_in, before);
+  // The nodes' states are needed only around batches that can show a surface inside ray_t: a
+  // batch whose every crossing is at or before ray_t.min only toggles its leaves (the batches
+  // are formed exactly as before, so the later ones are the same).
+  bool before_known = false;
+  const bool root_shows_own_only = tree.nodes[nn - 1].leaf || tree.nodes[nn - 1].op != CsgOp::Union;
   int i = 0;
   while (i < ne) {
     const double t0 = ev[i].t;
     if (t0 >= ray_t.max) return false;  // later batches are all beyond the range
     const double tie = tie_abs + tie_rel * std::abs(t0);
     int j = i;
-    while (j < ne && ev[j].t - t0 <= tie) {
-      leaf_in[ev[j].leaf] ^= 1;
-      ++j;
+    while (j < ne && ev[j].t - t0 <= tie) ++j;
+    if (!(ev[j - 1].t > ray_t.min)) {  // none of the batch's crossings is inside the range
+      for (int e = i; e < j; ++e) leaf_in[ev[e].leaf] ^= 1;
+      before_known = false;
+      i = j;
+      continue;
     }
+    if (!before_known) tree.evaluate(leaf_in, before);
+    before_known = true;
+    for (int e = i; e < j; ++e) leaf_in[ev[e].leaf] ^= 1;
     tree.evaluate(leaf_in, after);
+    // A root other than a union shows a surface only where its own state changes: most
+    // batches (a die's box entered outside its sphere, a pip met outside the die) need no
+    // visibility pass.
+    if (root_shows_own_only && before[nn - 1] == after[nn - 1]) {
+      std::copy(after, after + nn, before);
+      i = j;
+      continue;
+    }
     // Which nodes show a surface in this batch (post-order, so children first).
     for (std::size_t k = 0; k < nn; ++k) {
       const CsgNode& n = tree.nodes[k];

@@ -1,0 +1,221 @@
+// CSG blocks in World (render/accel/world.hpp): flattening a block into a tree whose leaves
+// are instances of their own, and tracing a ray through it. The ray computes only the leaves
+// whose state can matter inside its interval (render/geometry/csg/csg_prune.hpp), sweeps their
+// crossings (csg_tree.hpp), and computes the full hit only at the surface found; a shadow ray
+// stops at the sweep's answer.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <new>
+#include <string>
+
+#include "render/accel/world.hpp"
+#include "render/geometry/csg/csg_prune.hpp"
+#include "render/geometry/csg/leaf_crossings.hpp"
+#include "render/geometry/shapes/shape_kinds.hpp"
+#include "render/geometry/tolerances.hpp"
+
+namespace rts::render {
+
+void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
+                    AABB& world_bounds) {
+  Csg csg;
+  auto transmits = [&](MaterialId m) {
+    if (m >= scene.materials.size()) return false;
+    const Color& t = scene.materials[m].transmit;
+    return t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
+  };
+  const double inf = Interval::kInfinity;
+  std::vector<uint32_t> block_transforms;  // this block's leaf transforms so far
+  // Appends the nodes for `node_id` placed by `m`, children before parents; a group is a union.
+  auto add_node = [&](auto& self, NodeId node_id, const Mat4& m, MaterialId inherited, int depth) -> void {
+    if (node_id >= scene.nodes.size() || depth > tol::kMaxGroupDepth)
+      throw RenderError(block.loc, "internal: a CSG block refers to an unknown node");
+    const Node& node = scene.nodes[node_id];
+    auto add_op = [&](CsgOp op, const std::vector<Child>& kids, MaterialId mat, bool inverse) {
+      std::vector<uint32_t> ids;
+      for (const Child& c : kids) {
+        self(self, c.node, m * c.transform, mat, depth + 1);
+        ids.push_back(static_cast<uint32_t>(csg.tree.nodes.size() - 1));
+      }
+      CsgNode n;
+      n.op = op;
+      n.inverse = inverse;
+      n.first = static_cast<uint32_t>(csg.tree.children.size());
+      n.count = static_cast<uint32_t>(ids.size());
+      csg.tree.children.insert(csg.tree.children.end(), ids.begin(), ids.end());
+      csg.tree.nodes.push_back(n);
+    };
+    if (node.kind == NodeKind::Group) {
+      const GroupDesc& g = scene.groups[node.index];
+      add_op(CsgOp::Union, g.children, g.material != kNoId ? g.material : inherited, false);
+      return;
+    }
+    if (node.kind == NodeKind::Csg) {
+      const CsgDesc& d = scene.csgs[node.index];
+      add_op(d.op, d.children, d.material != kNoId ? d.material : inherited, d.inverse);
+      return;
+    }
+    if (node.kind != NodeKind::Shape) throw RenderError(node.loc, "a CSG block holds only shapes");
+    const ShapeDesc& shape = scene.shapes[node.index];
+    Instance part;
+    part.material = shape.material != kNoId ? shape.material : inherited;
+    part.transmissive = transmits(part.material);
+    AABB object_bounds;
+    bool unbounded = false;
+    add_geometry(scene, shape, part, object_bounds, unbounded);
+    // A height field's solid has no floor (POV-Ray's): its bounds hold only the drawn surface.
+    if (std::holds_alternative<HeightField>(shape.geometry)) unbounded = true;
+    // Leaves placed by the same matrix (a die's box, sphere and pips under one rotation)
+    // share one transform, so a ray is carried into their space once (trace_csg).
+    if (m != Mat4(1.0)) {
+      auto same = std::find_if(block_transforms.begin(), block_transforms.end(),
+                               [&](uint32_t xf) { return transforms_[xf].to_world == m; });
+      part.transform = same != block_transforms.end() ? *same : add_transform(m);
+      if (same == block_transforms.end()) block_transforms.push_back(part.transform);
+    }
+    AABB box = unbounded ? AABB{Vec3(-inf), Vec3(inf)}
+                         : (m == Mat4(1.0) ? object_bounds : transform_bounds(m, object_bounds));
+    if (const Sphere* sp = std::get_if<Sphere>(&shape.geometry); sp && m != Mat4(1.0) && box.valid()) {
+      // A rotated sphere's cube of corners is up to sqrt(3) times too wide; the placed
+      // sphere (an ellipsoid) reaches exactly r * |row i of the linear part| along axis i.
+      // Tighter leaf boxes prune more leaves, and the block's box (a die: its box intersected
+      // with its sphere) lets the BVH send fewer rays. Padded by a coincidence tie of the
+      // box's scale, so that no crossing computed with rounding falls outside it.
+      const Vec3 c(m * glm::dvec4(sp->center, 1.0));
+      Vec3 half;
+      for (int i = 0; i < 3; ++i)
+        half[i] = std::abs(sp->radius) * std::sqrt(m[0][i] * m[0][i] + m[1][i] * m[1][i] + m[2][i] * m[2][i]);
+      const Vec3 pad = tol::kCoincidentRelative * (glm::abs(c) + half);
+      box.lo = glm::max(box.lo, c - half - pad);
+      box.hi = glm::min(box.hi, c + half + pad);
+    }
+    CsgNode n;
+    n.leaf = true;
+    n.inverse = shape.inverse;
+    n.first = static_cast<uint32_t>(csg.leaf_instance.size());
+    csg.leaf_instance.push_back(static_cast<uint32_t>(parts.size()));  // made absolute at the end
+    csg.leaf_bounds.push_back(box);
+    csg.tree.nodes.push_back(n);
+    parts.push_back(part);
+    inst.transmissive = inst.transmissive || part.transmissive;
+  };
+  const CsgDesc& d = scene.csgs[block.csg];
+  {
+    std::vector<uint32_t> top;
+    for (const Child& c : d.children) {
+      add_node(add_node, c.node, block.to_world * c.transform, d.material != kNoId ? d.material : block.inherited, 0);
+      top.push_back(static_cast<uint32_t>(csg.tree.nodes.size() - 1));
+    }
+    CsgNode n;
+    n.op = d.op;
+    n.inverse = d.inverse;
+    n.first = static_cast<uint32_t>(csg.tree.children.size());
+    n.count = static_cast<uint32_t>(top.size());
+    csg.tree.children.insert(csg.tree.children.end(), top.begin(), top.end());
+    csg.tree.nodes.push_back(n);
+  }
+  csg.tree.leaf_count = static_cast<uint32_t>(csg.leaf_instance.size());
+  if (csg.tree.leaf_count > kMaxCsgLeaves || csg.tree.nodes.size() > kMaxCsgNodes)
+    throw RenderError(block.loc, "a CSG block holds more than " + std::to_string(kMaxCsgLeaves) + " shapes");
+  world_bounds = csg.tree.bounds(csg.leaf_bounds);
+  inst.kind = kCsgKind;
+  inst.index = static_cast<uint32_t>(csgs_.size());
+  csgs_.push_back(std::move(csg));
+}
+
+bool World::intersect_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit& hit) const {
+  return trace_csg(inst, world_ray, ray_t, &hit);
+}
+
+bool World::occluded_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const {
+  return trace_csg(inst, world_ray, ray_t, nullptr);
+}
+
+bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit* hit) const {
+  const Csg& csg = csgs_[inst.index];
+  // Storage for kMaxCsgLeaves lists, left unconstructed: an array of them would run their
+  // default member initializers, 256 of them for every ray (the profile's largest cost after
+  // pruning). Every list the sweep reads is written first (csg_gather, or the loop below).
+  alignas(CsgLeafCrossings) std::byte storage[sizeof(CsgLeafCrossings) * kMaxCsgLeaves];
+  CsgLeafCrossings* crossings = std::launder(reinterpret_cast<CsgLeafCrossings*>(storage));
+  const RayInverse inv(world_ray.origin, world_ray.direction);
+  // Each leaf in its own object space (t is the same in every space).
+  // The ray in the space of the last transform used: leaves sharing a transform (add_csg)
+  // reuse it.
+  uint32_t ray_transform = kNoId;
+  Ray transformed = world_ray;
+  auto with_leaf = [&](uint32_t l, auto&& f) -> bool {
+    const Instance& part = instances_[csg.leaf_instance[l]];
+    if (part.transform != kNoId && part.transform != ray_transform) {
+      transformed = object_ray(part, world_ray);
+      ray_transform = part.transform;
+    }
+    const Ray& ray = part.transform == kNoId ? world_ray : transformed;
+    // The part's kind, among those with leaf_crossings() (render/geometry/csg/leaf_crossings.hpp);
+    // other kinds are refused when the scene is built.
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+      bool result = false;
+      (void)((part.kind == I && [&] {
+                using T = ShapeKind<I>;
+                if constexpr (requires(const T& g, CsgLeafCrossings& c) { leaf_crossings(g, ray, c); })
+                  result = f(std::get<I>(shapes_)[part.index], ray);
+                return true;
+              }()) || ...);
+      return result;
+    }(std::make_index_sequence<kShapeKindCount>());
+  };
+  // The same tie as World::intersect's between instances.
+  const double tie_abs =
+      tol::kCoincidentRelative * max_abs_component(world_ray.origin) / max_abs_component(world_ray.direction);
+  const double tie_rel = tol::kCoincidentRelative;
+  // Leaf l's crossings along the whole line, unless its box misses `span` widened by
+  // kCsgPruneTies ties at each end (then it is outside throughout the span; an infinite end
+  // stays infinite). An unbounded leaf's box is infinite (add_csg), which every ray meets:
+  // its slabs give -inf and +inf, never NaN, since no infinite bound minus an origin is 0.
+  auto widen = [&](const Interval& span) {
+    return Interval(span.min - tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.min)),
+                    span.max + tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.max)));
+  };
+  auto compute = [&](uint32_t l, const Interval& span) {
+    if (!slab_hit(csg.leaf_bounds[l], inv, widen(span))) return;
+    CsgLeafCrossings& c = crossings[l];
+    with_leaf(l, [&](const auto& shape, const Ray& ray) {
+      leaf_crossings(shape, ray, c);
+      return true;
+    });
+  };
+  if (csg_pruning_) {
+    // A result that cannot be inside anywhere near ray_t changes state nowhere there, so it
+    // shows no surface (the ray met its box but missed its first leaves: most CSG rays).
+    if (csg_gather(csg.tree, ray_t, crossings, compute).intersect(widen(ray_t)).empty()) return false;
+  } else {  // every leaf the whole line meets (tests compare the two)
+    for (uint32_t l = 0; l < csg.tree.leaf_count; ++l) {
+      crossings[l].count = 0;
+      crossings[l].inside_at_start = false;
+      compute(l, Interval::universe());
+    }
+  }
+  CsgSurface surface;
+  if (!csg_first_surface(csg.tree, crossings, ray_t, tie_abs, tie_rel, surface)) return false;
+  // A shadow ray needs only that answer: the sweep already stopped at the first surface, and
+  // leaf_hit below finds a hit at every crossing leaf_crossings reported.
+  if (!hit) return true;
+  const CsgLeafCrossings& c = crossings[surface.leaf];
+  int k = 0;
+  while (k + 1 < c.count && c.t[k] != surface.t) ++k;
+  bool ok = with_leaf(surface.leaf, [&](const auto& shape, const Ray& ray) {
+    if (!leaf_hit(shape, ray, c, k, *hit)) return false;
+    // Out of the result: towards the ray where it enters, along it where it leaves.
+    if ((glm::dot(hit->normal, ray.direction) < 0.0) != surface.entering) {
+      hit->normal = -hit->normal;
+      hit->shading_normal = -hit->shading_normal;
+    }
+    return true;
+  });
+  if (!ok) return false;
+  hit->t = surface.t;
+  hit->csg_part = csg.leaf_instance[surface.leaf];
+  return true;
+}
+}  // namespace rts::render
