@@ -72,7 +72,7 @@ expect_exit 1 "render --strict" -- "$RTS" render --strict unsupported.pov -o "$T
 # pattern) is a located warning and the rest is translated.
 expect_exit 0 "an isosurface function rts cannot read is a warning" -- "$RTS" import iso_function.pov
 expect_grep "$TMP/err" "^iso_function.pov:3:14: warning: POV-Ray's 'function' is not translated; closest in rts: a function written as one expression" "located at the function"
-expect_grep "$TMP/err" "^iso_function.pov:4:81: warning: POV-Ray's 'open (isosurface)' is not translated" "located at open"
+expect_grep "$TMP/err" "^iso_function.pov:4:81: warning: POV-Ray's 'open \(isosurface\)' is not translated" "located at open"
 expect_grep "$TMP/out" "^macro pov_iso_1\\(p\\) \\{ return p.x \\* p.x \\+ p.y \\* p.y \\+ p.z \\* p.z - 0.25 \\}" "the readable function becomes a macro of the point"
 expect_exit 1 "--strict: the unreadable function is an error" -- "$RTS" import --strict iso_function.pov
 

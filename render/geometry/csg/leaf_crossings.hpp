@@ -153,56 +153,49 @@ inline bool leaf_hit(const Blob& b, const Ray& ray, const CsgLeafCrossings& c, i
   return true;
 }
 
-// A sor's crossings come from one walk along the ray; the chosen one's part (cap or curve
-// segment) is found by walking again (the walk is deterministic).
-inline void leaf_crossings(const Sor& s, const Ray& ray, CsgLeafCrossings& out) {
+// Sor, lathe and prism: their crossings come from one walk along the ray, kept in pairs (they
+// alternate in and out: POV-Ray's even-odd inside); the chosen one's part (cap, curve segment,
+// wall) is found by walking again (the walk is deterministic).
+template <class Crossing, class Shape, class Walk>
+void walked_leaf_crossings(const Shape& s, const Ray& ray, CsgLeafCrossings& out, Walk walk) {
   out.inside_at_start = false;
-  SorCrossing cs[kMaxLeafCrossings];
-  out.count = sor_crossings(s, ray, cs, kMaxLeafCrossings);
-  if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
-  for (int i = 0; i < out.count; ++i) out.t[i] = cs[i].t;
-}
-
-inline bool leaf_hit(const Sor& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
-  SorCrossing cs[kMaxLeafCrossings];
-  int n = sor_crossings(s, ray, cs, kMaxLeafCrossings);
-  if (k >= n) return false;
-  sor_hit_at(s, ray, cs[k], hit);
-  return true;
-}
-
-// A lathe with a closed profile: its crossings alternate in and out (POV-Ray's even-odd inside).
-inline void leaf_crossings(const Lathe& l, const Ray& ray, CsgLeafCrossings& out) {
-  out.inside_at_start = false;
-  LatheCrossing cs[kMaxLeafCrossings];
-  out.count = lathe_crossings(l, ray, cs, kMaxLeafCrossings);
+  Crossing cs[kMaxLeafCrossings];
+  out.count = walk(s, ray, cs, kMaxLeafCrossings);
   if (out.count % 2 == 1) --out.count;  // more crossings than kept, or a joint counted oddly: drop the unpaired one
   for (int i = 0; i < out.count; ++i) out.t[i] = cs[i].t;
 }
 
-inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
-  LatheCrossing cs[kMaxLeafCrossings];
-  int n = lathe_crossings(l, ray, cs, kMaxLeafCrossings);
+template <class Crossing, class Shape, class Walk, class HitAt>
+bool walked_leaf_hit(const Shape& s, const Ray& ray, int k, SurfaceHit& hit, Walk walk, HitAt hit_at) {
+  Crossing cs[kMaxLeafCrossings];
+  int n = walk(s, ray, cs, kMaxLeafCrossings);
   if (k >= n) return false;
-  lathe_hit_at(l, ray, cs[k], hit);
+  hit_at(s, ray, cs[k], hit);
   return true;
 }
 
-// A closed prism: its crossings alternate in and out (the caps follow the walls' parity).
+inline void leaf_crossings(const Sor& s, const Ray& ray, CsgLeafCrossings& out) {
+  walked_leaf_crossings<SorCrossing>(s, ray, out, [](auto&&... a) { return sor_crossings(a...); });
+}
+inline bool leaf_hit(const Sor& s, const Ray& ray, const CsgLeafCrossings&, int k, SurfaceHit& hit) {
+  return walked_leaf_hit<SorCrossing>(s, ray, k, hit, [](auto&&... a) { return sor_crossings(a...); },
+                                      [](auto&&... a) { sor_hit_at(a...); });
+}
+
+inline void leaf_crossings(const Lathe& l, const Ray& ray, CsgLeafCrossings& out) {
+  walked_leaf_crossings<LatheCrossing>(l, ray, out, [](auto&&... a) { return lathe_crossings(a...); });
+}
+inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings&, int k, SurfaceHit& hit) {
+  return walked_leaf_hit<LatheCrossing>(l, ray, k, hit, [](auto&&... a) { return lathe_crossings(a...); },
+                                        [](auto&&... a) { lathe_hit_at(a...); });
+}
+
 inline void leaf_crossings(const Prism& p, const Ray& ray, CsgLeafCrossings& out) {
-  out.inside_at_start = false;
-  PrismCrossing cs[kMaxLeafCrossings];
-  out.count = prism_crossings(p, ray, cs, kMaxLeafCrossings);
-  if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
-  for (int i = 0; i < out.count; ++i) out.t[i] = cs[i].t;
+  walked_leaf_crossings<PrismCrossing>(p, ray, out, [](auto&&... a) { return prism_crossings(a...); });
 }
-
-inline bool leaf_hit(const Prism& p, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
-  PrismCrossing cs[kMaxLeafCrossings];
-  int n = prism_crossings(p, ray, cs, kMaxLeafCrossings);
-  if (k >= n) return false;
-  prism_hit_at(p, ray, cs[k], hit);
-  return true;
+inline bool leaf_hit(const Prism& p, const Ray& ray, const CsgLeafCrossings&, int k, SurfaceHit& hit) {
+  return walked_leaf_hit<PrismCrossing>(p, ray, k, hit, [](auto&&... a) { return prism_crossings(a...); },
+                                        [](auto&&... a) { prism_hit_at(a...); });
 }
 
 // The whole span inside the container; the crossing kinds (function or container) are found
