@@ -1,0 +1,502 @@
+// POV-Ray textures as rts materials: pigment, finish, normal and interior (and whole
+// texture/material blocks) merged into one material with POV-Ray's default finish written
+// out, colour maps and patterns as rts textures. Objects are in translate_object.cpp.
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "import/pov/translator.hpp"
+
+namespace rts::import::pov {
+
+namespace {
+
+bool is_texture_part(const std::string& k) {
+  return k == "texture" || k == "pigment" || k == "finish" || k == "normal" || k == "interior" || k == "material";
+}
+
+}  // namespace
+
+void MaterialProps::set(const std::string& name, const std::string& value) {
+  for (auto& p : props)
+    if (p.first == name) {
+      p.second = value;
+      return;
+    }
+  props.emplace_back(name, value);
+}
+
+bool MaterialProps::has(const std::string& name) const {
+  return std::any_of(props.begin(), props.end(), [&](const auto& p) { return p.first == name; });
+}
+
+void Translator::default_finish(MaterialProps& m) const {
+  // POV-Ray's default texture: a black pigment, ambient 0.1, diffuse 0.6 (rts's own default
+  // diffuse is 0.7), changed by #default.
+  if (!m.has("ambient")) m.set("ambient", "0.1");
+  if (!m.has("diffuse")) m.set("diffuse", "0.6");
+  for (const auto& p : default_texture_.props)
+    if (p.first != "color" && p.first != "texture") m.set(p.first, p.second);
+}
+
+std::string Translator::material_text(const MaterialProps& m, bool with_defaults) {
+  MaterialProps full;
+  if (with_defaults && m.base.empty()) {
+    // #default's pigment, else POV-Ray's black; then the finish defaults, then this texture's.
+    bool colored = m.has("color") || m.has("texture");
+    if (!colored) {
+      bool default_color = false;
+      for (const auto& p : default_texture_.props)
+        if (p.first == "color" || p.first == "texture") full.set(p.first, p.second), default_color = true;
+      if (!default_color) full.set("color", "rgb(0)");
+    }
+    for (const auto& p : m.props) full.set(p.first, p.second);
+    default_finish(full);
+    // Keep the order readable: colour first, then the finish in POV-Ray's order.
+    std::stable_sort(full.props.begin(), full.props.end(), [](const auto& a, const auto& b) {
+      auto rank = [](const std::string& n) {
+        static const std::vector<std::string> order = {"color", "texture", "ambient", "diffuse", "specular",
+                                                       "shininess", "reflect", "transmit", "ior", "emission"};
+        auto it = std::find(order.begin(), order.end(), n);
+        return static_cast<int>(it - order.begin());
+      };
+      return rank(a.first) < rank(b.first);
+    });
+  } else {
+    full = m;
+  }
+  std::string s;
+  for (const auto& p : full.props) s += (s.empty() ? "" : "  ") + p.first + " = " + p.second;
+  if (!m.base.empty()) return full.props.empty() ? m.base : m.base + " with { " + s + " }";
+  return "material { " + s + " }";
+}
+
+std::string Translator::pigment_value(const Block& b) {
+  MaterialProps m;
+  pigment(b, m);
+  for (const auto& p : m.props)
+    if (p.first == "color" || p.first == "texture") return p.second;
+  return "rgb(0)";
+}
+
+void Translator::pigment(const Block& b, MaterialProps& m) {
+  std::string pattern;       // a pattern block's name (checker, marble, ...)
+  std::vector<std::string> colors, pattern_props, xforms;
+  std::string map;           // color_map as an rts list
+  double filter = 0, transmit = 0;
+  static const std::set<std::string> patterns = {"bozo", "spotted", "granite", "marble", "wood", "agate", "onion",
+                                                 "leopard", "wrinkles", "crackle", "cells", "bumps", "dents",
+                                                 "ripples", "waves", "gradient"};
+  static const std::set<std::string> unsupported_patterns = {
+      "brick", "hexagon", "spiral1", "spiral2", "quilted", "facets", "average", "slope", "radial", "mandel",
+      "julia", "magnet", "planar", "spherical", "cylindrical", "boxed", "toroidal", "density_file", "object",
+      "pigment_pattern", "image_pattern", "tiling", "function", "cubic", "square", "triangular"};
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Value) {
+      const Expr& e = *it.args[0];
+      if (e.kind == Expr::Name) {
+        if (Symbol* s = lookup(e.text); s && (s->type == Type::Pigment || s->type == Type::Material)) {
+          m.set("color", rename(e.text));
+          continue;
+        }
+        if (missing_name(it.loc, e.text, "pigment or colour")) {
+          m.set("color", "rgb(0.5)");
+          continue;
+        }
+      }
+      double f = 0, t = 0;
+      std::string c = color_value(e, &f, &t);
+      if (pattern.empty()) {
+        m.set("color", c);
+        filter = f, transmit = t;
+      } else {
+        colors.push_back(c);
+      }
+      continue;
+    }
+    if (it.kind == Item::Keyword) {
+      const std::string& k = it.name;
+      if ((k == "color" || k == "colour") && !it.args.empty()) {
+        double f = 0, t = 0;
+        std::string c = color_value(*it.args[0], &f, &t);
+        if (pattern.empty()) {
+          m.set("color", c);
+          filter = f, transmit = t;
+        } else {
+          colors.push_back(c);
+        }
+        continue;
+      }
+      if ((k == "filter" || k == "transmit") && !it.args.empty()) {
+        double v;
+        if (literal_number(*it.args[0], v)) (k == "filter" ? filter : transmit) = v;
+        continue;
+      }
+      if (k == "checker") {
+        pattern = k;
+        for (const ExprPtr& a : it.args) colors.push_back(color_value(*a));
+        continue;
+      }
+      if (patterns.count(k)) {
+        pattern = k;
+        if (k == "gradient" && !it.args.empty()) {
+          std::vector<double> v;
+          std::string axis = "\"y\"";
+          if (literal_vector(*it.args[0], v) && v.size() == 3) {
+            axis = v[0] != 0 ? "\"x\"" : v[2] != 0 ? "\"z\"" : "\"y\"";
+            if ((v[0] != 0) + (v[1] != 0) + (v[2] != 0) != 1)
+              unsupported(it.loc, "gradient", "a gradient along x, y or z (rotate the texture)", false);
+          }
+          pattern_props.push_back("axis = " + axis);
+        }
+        continue;
+      }
+      if (unsupported_patterns.count(k)) {
+        unsupported(it.loc, k, "a pattern { function = ... } macro, or checker/gradient/marble", false);
+        pattern = "unsupported";
+        continue;
+      }
+      if (k == "turbulence" || k == "octaves" || k == "omega" || k == "lambda" || k == "frequency" ||
+          k == "phase" || k == "agate_turb") {
+        if (!it.args.empty()) pattern_props.push_back(k + " = " + value(*it.args[0]));
+        continue;
+      }
+      if (k == "ramp_wave" || k == "triangle_wave" || k == "sine_wave" || k == "scallop_wave" || k == "cubic_wave") {
+        pattern_props.push_back("wave = \"" + k.substr(0, k.find('_')) + "\"");
+        continue;
+      }
+      std::vector<std::string> t = transforms(it);
+      if (!t.empty()) {
+        xforms.insert(xforms.end(), t.begin(), t.end());
+        continue;
+      }
+      if (k == "quick_color" || k == "quick_colour") continue;
+      unsupported(it.loc, k, "see docs/textures.md for rts's pattern properties", false);
+      continue;
+    }
+    if (it.kind == Item::Nested) {
+      const Block& n = *it.block;
+      if (n.kind == "color_map" || n.kind == "colour_map") {
+        std::string list;
+        for (const Item& e : n.items) {
+          if (e.kind == Item::Value && e.args[0]->kind == Expr::Name) {
+            list = rename(e.args[0]->text);  // a declared color map
+            break;
+          }
+          if (e.kind != Item::MapEntry) continue;
+          std::vector<std::string> vals;
+          std::vector<double> clear;  // each value's filter + transmit (a colour's; 0 for numbers)
+          for (const Item& v : e.block->items) {
+            if (v.kind == Item::Value) {
+              const Text t = expr(*v.args[0]);
+              vals.push_back(t.s);
+              clear.push_back(t.filter + t.transmit);
+            }
+            if (v.kind == Item::Keyword && (v.name == "color" || v.name == "colour") && !v.args.empty()) {
+              double f = 0, t = 0;
+              vals.push_back(color_value(*v.args[0], &f, &t));
+              clear.push_back(f + t);
+            }
+          }
+          // POV-Ray's filter and transmit as the entry's transmit, the third number of an rts
+          // colour map entry: a sky_sphere's layers show what is behind them through it (rts has
+          // no filter there: the light passes untinted); surfaces ignore it.
+          auto entry = [&](std::size_t at, std::size_t color) {
+            const double t = std::min(1.0, clear[color]);
+            return "[" + vals[at] + ", " + vals[color] + (t > 0 ? ", " + num(t) : "") + "]";
+          };
+          if (vals.size() < 2) continue;
+          list += list.empty() ? "[" : ", ";
+          if (vals.size() == 4) {
+            // The old form [a b color A color B]: A at a, B at b.
+            list += entry(0, 2) + ", " + entry(1, 3);
+          } else {
+            list += entry(0, 1);
+          }
+        }
+        map = list.empty() || list[0] != '[' ? list : list + "]";
+        continue;
+      }
+      if (n.kind == "image_map") {
+        std::string file;
+        for (const Item& v : n.items)
+          if (v.kind == Item::Value && v.args[0]->kind == Expr::String) file = value(*v.args[0]);
+        if (file.empty()) {
+          unsupported(n.loc, "image_map", "image_texture { file = \"...\" }", false);
+        } else {
+          warn(n.loc, "image_map is planar in POV-Ray (the image spans x and y in [0, 1]); rts's image_texture "
+                      "uses the shape's uv mapping");
+          m.set("color", "image_texture { file = " + file + " }");
+        }
+        continue;
+      }
+      if (n.kind == "pigment_map" || n.kind == "warp") {
+        unsupported(n.loc, n.kind, n.kind == "warp" ? "turbulence on the pattern" : "a color_map", false);
+        continue;
+      }
+      if (n.kind == "pigment") {
+        MaterialProps inner;
+        pigment(n, inner);
+        for (const auto& p : inner.props) m.set(p.first, p.second);
+        continue;
+      }
+      std::vector<std::string> t = transforms(it);
+      if (!t.empty()) {
+        xforms.insert(xforms.end(), t.begin(), t.end());
+        continue;
+      }
+      unsupported(n.loc, n.kind, "see docs/textures.md", false);
+    }
+  }
+  std::string suffix;
+  for (const std::string& t : xforms) suffix += " " + t;
+  if (pattern == "checker") {
+    std::string c1 = colors.size() > 0 ? colors[0] : "rgb(0, 0, 1)";  // POV-Ray's default: blue and green
+    std::string c2 = colors.size() > 1 ? colors[1] : "rgb(0, 1, 0)";
+    m.set("color", xforms.empty() ? fmt::format("checker({}, {}, 1)", c1, c2)
+                                  : fmt::format("checker {{ color1 = {}  color2 = {} }}{}", c1, c2, suffix));
+  } else if (pattern == "unsupported") {
+    m.set("color", colors.empty() ? "rgb(0.5)" : colors[0]);
+  } else if (pattern == "gradient" && map.empty()) {
+    // Without a color_map: rts's two-colour gradient, color1 -> color2 (with one, the pattern below).
+    std::string body;
+    for (const std::string& p : pattern_props)
+      if (p.rfind("axis", 0) == 0) body += "  " + p;
+      else unsupported(b.loc, "gradient " + p.substr(0, p.find(' ')), "a plain gradient { axis color1 color2 }", false);
+    if (colors.size() >= 2) body += fmt::format("  color1 = {}  color2 = {}", colors[0], colors[1]);
+    m.set("texture", "gradient {" + body + (body.empty() ? "}" : " }") + suffix);
+    m.props.erase(std::remove_if(m.props.begin(), m.props.end(), [](const auto& p) { return p.first == "color"; }),
+                  m.props.end());
+  } else if (!pattern.empty()) {
+    std::string body;
+    for (const std::string& p : pattern_props) body += "  " + p;
+    if (!map.empty()) body += "  color_map = " + map;
+    else if (colors.size() >= 2) body += fmt::format("  color_map = [[0, {}], [1, {}]]", colors[0], colors[1]);
+    m.set("texture", pattern + " {" + body + (body.empty() ? "}" : " }") + suffix);
+    m.props.erase(std::remove_if(m.props.begin(), m.props.end(), [](const auto& p) { return p.first == "color"; }),
+                  m.props.end());
+  } else if (!xforms.empty() && m.has("color")) {
+    // A transformed plain colour is the same colour.
+  }
+  if (filter > 0 || transmit > 0) {
+    // POV-Ray: filtered light takes the surface's colour, transmitted light passes as it is.
+    std::string c;
+    for (const auto& p : m.props)
+      if (p.first == "color") c = p.second;
+    std::string t = filter > 0 && !c.empty()
+                        ? (transmit > 0 ? fmt::format("{} * {} + rgb({})", c, num(filter), num(transmit))
+                                        : fmt::format("{} * {}", c, num(filter)))
+                        : num(filter + transmit);
+    m.set("transmit", t);
+  }
+}
+
+void Translator::finish(const Block& b, MaterialProps& m) {
+  std::string roughness;  // POV-Ray's default 0.05: a Blinn exponent of 20
+  bool specular = false;
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Value && it.args[0]->kind == Expr::Name) {
+      if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Finish) {
+        for (const auto& p : s->props.props) m.set(p.first, p.second);
+        continue;
+      }
+      // A library finish (Shiny, Phong_Glossy, F_MetalC ...): its properties, which the
+      // items after it may change as in POV-Ray.
+      MaterialProps part;
+      if (library_part(it.args[0]->text, part)) {
+        for (const auto& p : part.props) m.set(p.first, p.second);
+        if (part.has("highlight")) {
+          // A Blinn finish's exponent stays unless a later roughness changes it.
+          for (const auto& p : part.props)
+            if (p.first == "shininess") roughness = p.second;
+        }
+        continue;
+      }
+      missing_name(it.loc, it.args[0]->text, "finish");
+      continue;
+    }
+    if (it.kind == Item::Nested && it.block->kind == "reflection") {
+      // reflection { rmin rmax fresnel metallic }: the largest of the values.
+      std::string r;
+      for (const Item& v : it.block->items)
+        if (v.kind == Item::Value) r = value(*v.args[0]);
+      if (!r.empty()) m.set("reflect", r);
+      for (const Item& v : it.block->items)
+        if (v.kind == Item::Keyword && v.name == "fresnel") m.set("fresnel", "true");
+      continue;
+    }
+    if (it.kind != Item::Keyword) {
+      if (it.kind == Item::Nested) unsupported(it.loc, it.block->kind, "rts's material properties", false);
+      continue;
+    }
+    const std::string& k = it.name;
+    std::string v = it.args.empty() ? "" : value(*it.args[0]);
+    if (k == "ambient" && !v.empty()) {
+      double f;
+      if (!literal_number(*it.args[0], f) && expr(*it.args[0]).type != Type::Float) {
+        std::vector<double> c;
+        if (it.args[0]->kind == Expr::Color && literal_vector(*it.args[0]->args[0], c) && c.size() >= 3) {
+          unsupported(it.loc, "ambient <colour>", "a number (rts's ambient weighs the pigment): the mean is used",
+                      false);
+          v = num((c[0] + c[1] + c[2]) / 3);
+        }
+      }
+      m.set("ambient", v);
+    } else if (k == "diffuse" && !v.empty()) {
+      m.set("diffuse", v);
+    } else if (k == "phong" && !v.empty()) {
+      m.set("specular", v);
+      if (!m.has("shininess")) m.set("shininess", "40");  // POV-Ray's default phong_size
+    } else if (k == "phong_size" && !v.empty()) {
+      m.set("shininess", v);
+    } else if (k == "specular" && !v.empty()) {
+      m.set("specular", v);
+      specular = true;
+    } else if (k == "roughness" && !v.empty()) {
+      double r;
+      roughness = literal_number(*it.args[0], r) && r > 0 ? num(1 / r) : "1 / (" + v + ")";  // roughness 1/300: 1 / (1 / 300)
+    } else if (k == "reflection" && !v.empty()) {
+      m.set("reflect", v);
+    } else if (k == "emission" && !v.empty()) {
+      m.set("emission", color_value(*it.args[0]));
+    } else if (k == "conserve_energy" || k == "crand" || k == "reflection_exponent") {
+      // no effect worth a warning in the Whitted image
+    } else if (k == "metallic" || k == "brilliance" || k == "irid" || k == "subsurface") {
+      unsupported(it.loc, k, "not in rts's material model", false);
+    } else {
+      unsupported(it.loc, k, "rts's material properties (docs/rendering.md#materials)", false);
+    }
+  }
+  if (specular) {
+    // POV-Ray's specular is a Blinn highlight, (N.H)^(1/roughness): rts's highlight = "blinn".
+    m.set("highlight", "\"blinn\"");
+    m.set("shininess", roughness.empty() ? "20" : roughness);
+  }
+}
+
+bool Translator::library_part(const std::string& name, MaterialProps& m) {
+  // Only the library's own name: a scene's #declare of the same name (a block) wins.
+  Symbol* s = lookup(name);
+  if (!s || s->block) return false;
+  auto it = library_parts_.find(name);
+  if (it == library_parts_.end()) return false;
+  m = it->second;
+  return true;
+}
+
+void Translator::interior(const Block& b, MaterialProps& m) {
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Value && it.args[0]->kind == Expr::Name) {
+      if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Interior) {
+        for (const auto& p : s->props.props) m.set(p.first, p.second);
+        continue;
+      }
+      MaterialProps part;  // a library interior (I_Glass ...): its index
+      if (library_part(it.args[0]->text, part)) {
+        for (const auto& p : part.props) m.set(p.first, p.second);
+        continue;
+      }
+      missing_name(it.loc, it.args[0]->text, "interior");
+      continue;
+    }
+    if (it.kind == Item::Keyword && it.name == "ior" && !it.args.empty()) {
+      m.set("ior", value(*it.args[0]));
+    } else if (it.kind == Item::Keyword && (it.name == "fade_distance" || it.name == "fade_power" ||
+                                            it.name == "dispersion" || it.name == "caustics")) {
+      unsupported(it.loc, it.name, "transmit colour (no absorption along the path in rts)", false);
+    } else if (it.kind == Item::Nested && it.block->kind == "media") {
+      unsupported(it.loc, "media", "emission or fog (settings { fog_distance })", false);
+    }
+  }
+}
+
+void Translator::normal(const Block& b, MaterialProps& m) {
+  static const std::set<std::string> patterns = {"bumps", "dents", "ripples", "waves", "wrinkles", "granite",
+                                                 "marble", "wood", "agate", "bozo", "spotted", "crackle", "cells",
+                                                 "leopard", "onion", "gradient"};
+  std::string pattern, amount = "0.5";
+  std::vector<std::string> props, xforms;
+  for (const Item& it : b.items) {
+    if (it.kind != Item::Keyword) {
+      if (it.kind == Item::Nested) unsupported(it.loc, it.block->kind, "bump = <pattern> { }", false);
+      continue;
+    }
+    if (patterns.count(it.name)) {
+      pattern = it.name;
+      if (!it.args.empty()) amount = value(*it.args[0]);
+      continue;
+    }
+    if (it.name == "turbulence" || it.name == "octaves" || it.name == "frequency" || it.name == "phase" ||
+        it.name == "omega" || it.name == "lambda") {
+      if (!it.args.empty()) props.push_back(it.name + " = " + value(*it.args[0]));
+      continue;
+    }
+    if (it.name == "bump_size" && !it.args.empty()) {
+      amount = value(*it.args[0]);
+      continue;
+    }
+    std::vector<std::string> t = transforms(it);
+    if (!t.empty()) {
+      xforms.insert(xforms.end(), t.begin(), t.end());
+      continue;
+    }
+    unsupported(it.loc, it.name, "bump = <pattern> { }  bump_scale = ...", false);
+  }
+  if (pattern.empty()) return;
+  std::string body, suffix;
+  for (const std::string& p : props) body += "  " + p;
+  for (const std::string& t : xforms) suffix += " " + t;
+  m.set("bump", pattern + " {" + body + (body.empty() ? "}" : " }") + suffix);
+  // rts's strength is the slope's: about POV-Ray's amount times the pattern's scale
+  // (docs/from-povray.md); 0.1 of the amount is the unscaled case.
+  m.set("bump_scale", "0.2 * " + amount);
+}
+
+void Translator::texture_part(const Item& it, MaterialProps& m) {
+  const Block& b = *it.block;
+  if (b.kind == "pigment") return pigment(b, m);
+  if (b.kind == "finish") return finish(b, m);
+  if (b.kind == "interior") return interior(b, m);
+  if (b.kind == "normal") return normal(b, m);
+  if (b.kind == "texture" || b.kind == "material") {
+    for (const Item& part : b.items) {
+      if (part.kind == Item::Value && part.args[0]->kind == Expr::Name) {
+        Symbol* s = lookup(part.args[0]->text);
+        if (s && s->type == Type::Material && s->block) {
+          m.base = rename(part.args[0]->text);
+          continue;
+        }
+        if (!s) {  // a texture from an include (textures.inc): derived from
+          if (!missing_name(part.loc, part.args[0]->text, "texture")) m.base = rename(part.args[0]->text);
+          continue;
+        }
+      }
+      if (part.kind == Item::Value) {
+        m.base = value(*part.args[0]);  // a macro call giving a texture
+        continue;
+      }
+      if (part.kind == Item::Nested && is_texture_part(part.block->kind)) {
+        texture_part(part, m);
+        continue;
+      }
+      if (part.kind == Item::Nested && (part.block->kind == "texture_map" || part.block->kind == "material_map")) {
+        unsupported(part.loc, part.block->kind, "one texture (or a pattern's color_map)", false);
+        continue;
+      }
+      std::vector<std::string> t = transforms(part);
+      if (!t.empty()) {
+        // A transform of a whole texture moves its pattern.
+        std::string suffix;
+        for (const std::string& x : t) suffix += " " + x;
+        for (auto& p : m.props)
+          if (p.first == "texture" || p.first == "bump") p.second = "(" + p.second + ")" + suffix;
+        continue;
+      }
+      if (part.kind == Item::Keyword) unsupported(part.loc, part.name, "rts's material properties", false);
+    }
+  }
+}
+
+}  // namespace rts::import::pov
