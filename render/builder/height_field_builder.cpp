@@ -72,7 +72,15 @@ HeightField build_height_field(ParamSet& ps, const std::string& path, std::size_
                        "property 'resolution' of height_field goes with 'function' (an image has its own size)");
     ps.string("file", "");
     // Linear: a pixel's code is its height (no sRGB decoding).
-    Image img = read_image(path, loc_of(ps, "file"), Encoding::Linear, max_memory);
+    // An unreadable image is a located scene error here, as a bad parameter is: the image is
+    // read while the scene is evaluated, where only scene errors become diagnostics (fuzz_eval
+    // found a missing file escaping as an unlocated 'internal error').
+    Image img;
+    try {
+      img = read_image(path, loc_of(ps, "file"), Encoding::Linear, max_memory);
+    } catch (const RenderError& e) {
+      throw SceneError(loc_of(ps, "file"), e.what());
+    }
     if (img.width < 2 || img.height < 2 || img.width > kMaxSide || img.height > kMaxSide)
       throw SceneError(loc_of(ps, "file"), fmt::format("height_field image '{}' is {} x {} pixels: it needs 2 to {} "
                                                        "on each side",

@@ -11,7 +11,7 @@
 namespace rts::render {
 
 // `path`: the image file, resolved and allowed by the read policy (empty when the block gives
-// a function). Bad parameters are located SceneErrors; an unreadable image a RenderError.
+// a function). Bad parameters and an unreadable image are located SceneErrors.
 HeightField build_height_field(ParamSet& ps, const std::string& path, std::size_t max_memory);
 
 }  // namespace rts::render

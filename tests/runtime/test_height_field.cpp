@@ -214,4 +214,10 @@ TEST_CASE("bad height_field parameters are located errors", "[shapes][height_fie
   CHECK(d.message.find("got 2.5") != std::string::npos);
   d = eval_diagnostic("height_field { function = 3 }");
   CHECK(d.message == "property 'function' of height_field expects a macro of one point, got a number");
+  // A missing image is located at `file` (it escaped evaluation as an unlocated internal error
+  // until fuzz_eval met an imported scene without its image).
+  d = eval_diagnostic("height_field {\n  file = \"no_such_height_field.png\" }");
+  CHECK(d.message.find("cannot read image 'no_such_height_field.png'") == 0);
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.col == 3);
 }
