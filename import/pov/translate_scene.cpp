@@ -294,9 +294,14 @@ void Translator::declare(Writer& w, const Item& it) {
       w.line(head + (at == std::string::npos ? "[]" : g.substr(at + 12, g.size() - at - 12 - 2)));
     } else if (b.kind == "function") {
       // A function of x, y, z (or of its named parameters): a macro, called as POV-Ray calls it.
-      if (!declare_function(w, it.name, b)) {
-        unsupported(b.loc, "function", "a function written as one expression of its parameters (no pattern or POV-Ray-only syntax in it)", false);
+      std::string why;
+      if (!declare_function(w, it.name, b, why)) {
+        unsupported(b.loc, "function with " + why,
+                    "a function written as one expression of its parameters, with the math builtins and declared functions",
+                    false);
         w.line(head + "none  // POV-Ray's function is not translated");
+        define(it.name, Symbol{Type::Unknown, nullptr, ""});  // not a macro: a function calling it is refused too
+        return;
       }
       define(it.name, Symbol{Type::Macro, nullptr, ""});
       return;

@@ -3,6 +3,8 @@
 // field's function becomes a macro of the point, its container and controls properties
 // (docs/shapes.md#isosurface, #height_field).
 #include <algorithm>
+#include <functional>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -85,11 +87,32 @@ const Block* function_block(const Item& it) {
 
 }  // namespace
 
-std::string Translator::function_text(const Block& f, const std::map<std::string, std::string>& vars) {
+std::string Translator::function_text(const Block& f, const std::map<std::string, std::string>& vars,
+                                      std::string& why) {
   const Item* body = nullptr;
   for (const Item& it : f.items)
     if (it.kind == Item::Value) body = &it;
-  if (!body) return "";
+  if (!body) {
+    why = "a body that is not one expression of its parameters (a pattern, POV-Ray-only syntax)";
+    return "";
+  }
+  // Calls rts's function compiler takes: the math builtins, and functions declared as macros.
+  static const std::set<std::string> kCompiled = {"sin",  "cos",  "tan",  "asin", "acos",  "atan",   "atan2",
+                                                  "sqrt", "pow",  "exp",  "abs",  "floor", "ceil",   "min",
+                                                  "max",  "radians", "degrees"};
+  std::function<bool(const Expr&)> compiles = [&](const Expr& e) {
+    if (e.kind == Expr::Call && !kCompiled.count(e.text)) {
+      Symbol* s = lookup(e.text);
+      if (!s || s->type != Type::Macro) {
+        why = fmt::format("a call of '{}', which rts's compiled functions do not have", e.text);
+        return false;
+      }
+    }
+    for (const ExprPtr& a : e.args)
+      if (a && !compiles(*a)) return false;
+    return true;
+  };
+  if (!compiles(*body->args[0])) return "";
   auto saved = function_vars_;
   function_vars_ = vars;
   std::string text = value(*body->args[0]);
@@ -97,7 +120,7 @@ std::string Translator::function_text(const Block& f, const std::map<std::string
   return text;
 }
 
-bool Translator::declare_function(Writer& w, const std::string& name, const Block& f) {
+bool Translator::declare_function(Writer& w, const std::string& name, const Block& f, std::string& why) {
   std::vector<std::string> params;
   for (const Item& it : f.items)
     if (it.kind == Item::Keyword && it.name == "params")
@@ -109,7 +132,7 @@ bool Translator::declare_function(Writer& w, const std::string& name, const Bloc
     vars[p] = rename(p);
     list += (list.empty() ? "" : ", ") + rename(p);
   }
-  std::string body = function_text(f, vars);
+  std::string body = function_text(f, vars, why);
   if (body.empty()) return false;
   w.line(fmt::format("macro {}({}) {{ return {} }}", rename(name), list, body));
   return true;
@@ -127,9 +150,11 @@ Block Translator::solid_components(Writer& w, const Block& b, std::vector<std::s
       const std::map<std::string, std::string> vars =
           iso ? std::map<std::string, std::string>{{"x", "p.x"}, {"y", "p.y"}, {"z", "p.z"}}
               : std::map<std::string, std::string>{{"x", "p.x"}, {"y", "(1 - p.z)"}, {"z", "0"}};
-      std::string body = function_text(*f, vars);
+      std::string why;
+      std::string body = function_text(*f, vars, why);
       if (body.empty()) {
-        unsupported(it.loc, "function", "a function written as one expression of x, y and z (no pattern or POV-Ray-only syntax in it)",
+        unsupported(it.loc, "function with " + why,
+                    "a function written as one expression of x, y and z, with the math builtins and declared functions",
                     false);
         return Block{"unsupported", b.loc, {}};
       }

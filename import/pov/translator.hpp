@@ -93,11 +93,12 @@ class Translator {
   // without them (its texture and transforms).
   Block solid_components(Writer& w, const Block& b, std::vector<std::string>& props);
   // A function block's body as rts text, with the names in `vars` (x, y, z) replaced; "" when
-  // the reader kept no body (POV-Ray syntax rts does not read).
-  std::string function_text(const Block& f, const std::map<std::string, std::string>& vars);
+  // the reader kept no body (POV-Ray syntax rts does not read) or the body calls a function
+  // rts cannot compile (functions.inc's f_sphere ...): then `why` says which.
+  std::string function_text(const Block& f, const std::map<std::string, std::string>& vars, std::string& why);
   // `#declare F = function(a, b) { ... }` as `macro F(a, b) { return ... }` (x, y, z when none
   // are named, as POV-Ray's); false when the body was not read.
-  bool declare_function(Writer& w, const std::string& name, const Block& f);
+  bool declare_function(Writer& w, const std::string& name, const Block& f, std::string& why);
   // The material a POV-Ray texture-like block (texture, pigment, finish, normal, interior,
   // material) adds to `m`.
   void texture_part(const Item& it, MaterialProps& m);

@@ -71,9 +71,13 @@ expect_exit 1 "render --strict" -- "$RTS" render --strict unsupported.pov -o "$T
 # An isosurface's function is read as an expression of x, y, z; a body that is not one (a
 # pattern) is a located warning and the rest is translated.
 expect_exit 0 "an isosurface function rts cannot read is a warning" -- "$RTS" import iso_function.pov
-expect_grep "$TMP/err" "^iso_function.pov:3:14: warning: POV-Ray's 'function' is not translated; closest in rts: a function written as one expression" "located at the function"
+expect_grep "$TMP/err" "^iso_function.pov:3:14: warning: POV-Ray's 'function with a body that is not one expression of its parameters \(a pattern, POV-Ray-only syntax\)' is not translated" "located at the function"
 expect_grep "$TMP/err" "^iso_function.pov:4:81: warning: POV-Ray's 'open \(isosurface\)' is not translated" "located at open"
 expect_grep "$TMP/out" "^macro pov_iso_1\\(p\\) \\{ return p.x \\* p.x \\+ p.y \\* p.y \\+ p.z \\* p.z - 0.25 \\}" "the readable function becomes a macro of the point"
+expect_grep "$TMP/err" "^iso_function.pov:6:14: warning: POV-Ray's 'function with a call of 'f_sphere', which rts's compiled functions do not have' is not translated" "a functions.inc call is a located warning"
+expect_grep "$TMP/err" "^iso_function.pov:7:14: warning: POV-Ray's 'function with a call of 'f_torus'" "so is a declared function's"
+expect_grep "$TMP/err" "^iso_function.pov:8:14: warning: POV-Ray's 'function with a call of 'H'" "and a call of that declared function"
+expect_exit 0 "render: the rest renders" -- "$RTS" render iso_function.pov -o "$TMP/iso_rest.png" --width 16 --height 12
 expect_exit 1 "--strict: the unreadable function is an error" -- "$RTS" import --strict iso_function.pov
 
 # Recognised by content under another name, and with --format pov.
