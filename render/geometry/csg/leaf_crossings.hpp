@@ -85,29 +85,16 @@ inline void leaf_crossings(const Sphere& s, const Ray& ray, CsgLeafCrossings& ou
   convex_crossings_of(t0, t1, out);
 }
 
-// The ray's crossings of a box: intersect(Box)'s slabs (render/geometry/shapes/box.hpp; the
-// same operations in the same order), without its hit point, normal and uv.
+// The ray's crossings of a box: intersect(Box)'s slabs (box_slabs, render/geometry/shapes/
+// box.hpp), without its hit point, normal and uv.
 inline void leaf_crossings(const Box& box, const Ray& ray, CsgLeafCrossings& out) {
   out.inside_at_start = false;
   out.count = 0;
-  Vec3 lo = glm::min(box.min, box.max), hi = glm::max(box.min, box.max);
-  double t_enter = -Interval::kInfinity, t_exit = Interval::kInfinity;
-  int enter_axis = -1, exit_axis = -1;
-  for (int a = 0; a < 3; ++a) {
-    double d = ray.direction[a], o = ray.origin[a];
-    if (d == 0.0) {
-      if (o < lo[a] || o > hi[a]) return;
-      continue;
-    }
-    double ta = (lo[a] - o) / d, tb = (hi[a] - o) / d;
-    if (ta > tb) std::swap(ta, tb);
-    if (ta > t_enter) { t_enter = ta; enter_axis = a; }
-    if (tb < t_exit) { t_exit = tb; exit_axis = a; }
-    if (t_enter > t_exit) return;
-  }
+  BoxSlabs s;
+  if (!box_slabs(box, ray, s)) return;
   // intersect() offers the entry only when a slab set it, the exit likewise.
   const double nan = std::numeric_limits<double>::quiet_NaN();  // never surrounded
-  convex_crossings_of(enter_axis >= 0 ? t_enter : nan, exit_axis >= 0 ? t_exit : nan, out);
+  convex_crossings_of(s.enter_axis >= 0 ? s.t_enter : nan, s.exit_axis >= 0 ? s.t_exit : nan, out);
 }
 inline void leaf_crossings(const Cylinder& c, const Ray& ray, CsgLeafCrossings& out) { convex_crossings(c, ray, out); }
 inline void leaf_crossings(const Cone& c, const Ray& ray, CsgLeafCrossings& out) { convex_crossings(c, ray, out); }

@@ -34,10 +34,16 @@ struct ShapeTraits<Box> {
 
 inline AABB bounds(const Box& b) { return AABB{glm::min(b.min, b.max), glm::max(b.min, b.max)}; }
 
-inline bool intersect(const Box& box, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
-  Vec3 lo = glm::min(box.min, box.max), hi = glm::max(box.min, box.max);
+// The line's passage through the box's three slabs: where it enters and leaves, and the axis
+// of the slab that set each (-1: none did, the line is parallel to all three). False when the
+// line misses the box. intersect() and the CSG crossings (leaf_crossings.hpp) both read it.
+struct BoxSlabs {
   double t_enter = -Interval::kInfinity, t_exit = Interval::kInfinity;
   int enter_axis = -1, exit_axis = -1;
+};
+
+inline bool box_slabs(const Box& box, const Ray& ray, BoxSlabs& s) {
+  Vec3 lo = glm::min(box.min, box.max), hi = glm::max(box.min, box.max);
   for (int a = 0; a < 3; ++a) {
     double d = ray.direction[a], o = ray.origin[a];
     if (d == 0.0) {
@@ -46,10 +52,18 @@ inline bool intersect(const Box& box, const Ray& ray, Interval ray_t, SurfaceHit
     }
     double ta = (lo[a] - o) / d, tb = (hi[a] - o) / d;
     if (ta > tb) std::swap(ta, tb);
-    if (ta > t_enter) { t_enter = ta; enter_axis = a; }
-    if (tb < t_exit) { t_exit = tb; exit_axis = a; }
-    if (t_enter > t_exit) return false;
+    if (ta > s.t_enter) { s.t_enter = ta; s.enter_axis = a; }
+    if (tb < s.t_exit) { s.t_exit = tb; s.exit_axis = a; }
+    if (s.t_enter > s.t_exit) return false;
   }
+  return true;
+}
+
+inline bool intersect(const Box& box, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  BoxSlabs slabs;
+  if (!box_slabs(box, ray, slabs)) return false;
+  const auto [t_enter, t_exit, enter_axis, exit_axis] = slabs;
+  Vec3 lo = glm::min(box.min, box.max), hi = glm::max(box.min, box.max);
   double t;
   int axis;
   double sign;  // the outward normal's sign along `axis`
