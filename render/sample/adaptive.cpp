@@ -44,6 +44,11 @@ std::vector<uint32_t> plan_adaptive_round(const AdaptiveInput& in) {
   for (std::size_t i = 0; i < n; ++i) mse_sum += std::max(0.0, var[i]);
   const double goal = in.target_mse * static_cast<double>(n);
   const std::size_t most = std::max<std::size_t>(1, candidates.size() / 2);
+  // The prediction below is optimistic (the estimate falls more slowly than sigma^2 / n), so
+  // stopping where it reaches the goal refined a handful of pixels per round: 4,784 rounds for
+  // a 96x72 image, each ranking every pixel, 94% of the render's time (perf). At least an
+  // eighth of the refinable pixels per round keeps the rounds to a few dozen.
+  const std::size_t least = std::max<std::size_t>(1, candidates.size() / kAdaptiveLeastShare);
   for (std::size_t k = 0; k < most; ++k) {
     std::size_t i = candidates[k];
     uint32_t more = std::min(taken[i], in.cap - taken[i]);
@@ -51,7 +56,7 @@ std::vector<uint32_t> plan_adaptive_round(const AdaptiveInput& in) {
     if (more == 0) more = in.step;
     add[i] = more;
     mse_sum -= smooth[i] / taken[i] - smooth[i] / (taken[i] + more);
-    if (mse_sum <= goal) break;
+    if (mse_sum <= goal && k + 1 >= least) break;
   }
   return add;
 }

@@ -2,6 +2,7 @@
 // error estimates. Pure planning (no tracing), so it is deterministic and testable.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -20,8 +21,10 @@ struct AdaptiveInput {
 // removes, sigma^2 / n^2 (sigma^2 the per-sample variance, smoothed over 3x3 pixels so one
 // lucky estimate does not starve a pixel); the best-ranked double their samples until the
 // predicted image MSE reaches the target, but at most half of the refinable pixels per round
-// so the allocation follows the error rather than doubling everything at once. All zeros when
-// no pixel can take more samples.
+// so the allocation follows the error rather than doubling everything at once, and at least
+// 1/kAdaptiveLeastShare of them so the rounds stay few. All zeros when no pixel can take more
+// samples.
+inline constexpr std::size_t kAdaptiveLeastShare = 8;
 std::vector<uint32_t> plan_adaptive_round(const AdaptiveInput& in);
 
 }  // namespace rts::render

@@ -284,6 +284,30 @@ TEST_CASE("adaptive plan refines the noisiest pixels and never exceeds the cap",
   for (uint32_t a : add) CHECK(a == 0);
 }
 
+TEST_CASE("an adaptive round refines at least an eighth of the refinable pixels", "[convergence]") {
+  // A target the prediction reaches after one pixel: rounds that small took thousands of
+  // rounds per image, each ranking every pixel (a 192x144 render: 30 s instead of 0.3 s).
+  std::vector<double> var(64 * 64, 1e-4);
+  std::vector<uint32_t> taken(var.size(), 8);
+  AdaptiveInput in{64, 64, &var, &taken, 64, 4, 0.99e-4};
+  std::vector<uint32_t> add = plan_adaptive_round(in);
+  std::size_t refined = 0;
+  for (uint32_t a : add) refined += a > 0;
+  CHECK(refined >= var.size() / 8);
+  CHECK(refined <= var.size() / 2);
+  // And a whole adaptive render takes a few dozen rounds, not thousands.
+  SceneDesc s = plane_under_square_light(64, SamplerKind::Sobol);
+  s.settings.width = 96;
+  s.settings.height = 72;
+  RenderOptions o;
+  o.threads = 2;
+  o.target_error = 0.01;
+  RenderResult r = render(s, o);
+  INFO("rounds " << r.stats.error.passes << ", mean spp " << r.stats.error.mean_spp);
+  CHECK(r.stats.error.target_reached);
+  CHECK(r.stats.error.passes < 64);
+}
+
 TEST_CASE("a time limit keeps every pixel's first pass and reports the stop", "[convergence]") {
   RenderOptions o;
   o.threads = 1;
@@ -298,7 +322,7 @@ TEST_CASE("a time limit keeps every pixel's first pass and reports the stop", "[
 TEST_CASE("adaptive and progressive images are identical whatever the thread count", "[convergence]") {
   SceneDesc s = plane_under_square_light(256, SamplerKind::Stratified);
   RenderOptions o;
-  o.target_error = 0.004;
+  o.target_error = 0.01;
   o.threads = 1;
   RenderResult one = render(s, o);
   o.threads = 3;
