@@ -1,5 +1,6 @@
 #include "render/accel/mesh_accel.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/geometry/shapes/triangle.hpp"
@@ -167,6 +168,59 @@ bool MeshAccel::occluded(const Ray& object_ray, Interval ray_t) const {
     double t, b1, b2;
     return intersect_triangle(Vec3(v[0]), Vec3(v[1]), Vec3(v[2]), tri_ray, t_range, t, b1, b2);
   });
+}
+
+bool MeshAccel::csg_crossings(const Ray& object_ray, double from, double tie_abs, double tie_rel,
+                              CsgLeafCrossings& out) const {
+  out.inside_at_start = false;
+  out.count = 0;
+  struct LineHit {
+    double t;
+    int facing;  // +1: the triangle faces the line (entered, for outward winding), -1: away
+  };
+  // Every triangle the line meets; a line crossing a mesh more often than this is taken as
+  // missing the rest (kept in traversal order): far beyond any solid a scene builds.
+  constexpr int kMaxLineHits = 512;
+  LineHit hits[kMaxLineHits];
+  int n = 0;
+  const Ray ray = local_ray(object_ray);
+  const TriangleRay tri_ray(ray);
+  Interval everywhere = Interval::universe();
+  traverse_bvh<false>(bvh_, ray, everywhere, [&](uint32_t slot, Interval& t_range) {
+    const glm::vec3* v = &leaf_vertices_[static_cast<std::size_t>(slot) * 3];
+    const Vec3 v0(v[0]), v1(v[1]), v2(v[2]);
+    double t, b1, b2;
+    if (n < kMaxLineHits && intersect_triangle(v0, v1, v2, tri_ray, t_range, t, b1, b2))
+      hits[n++] = LineHit{t, glm::dot(ray.direction, glm::cross(v1 - v0, v2 - v0)) < 0.0 ? 1 : -1};
+    return false;  // keep the whole line
+  });
+  if (n == 0) return false;
+  std::sort(hits, hits + n, [](const LineHit& a, const LineHit& b) { return a.t < b.t || (a.t == b.t && a.facing < b.facing); });
+  // Places along the line, then the winding number across them: inside where it is not zero.
+  int winding = 0;
+  bool truncated = false;
+  for (int i = 0; i < n;) {
+    const double t0 = hits[i].t;
+    const double tie = tie_abs + tie_rel * std::abs(t0);
+    bool toward = false, away = false;
+    int j = i;
+    for (; j < n && hits[j].t - t0 <= tie; ++j) (hits[j].facing > 0 ? toward : away) = true;
+    i = j;
+    if (toward == away) continue;  // a graze: touched, not crossed
+    const bool was_inside = winding != 0;
+    winding += toward ? 1 : -1;
+    if ((winding != 0) == was_inside) continue;
+    if (t0 < from) {
+      out.inside_at_start = winding != 0;
+      continue;
+    }
+    if (out.count == kMaxLeafCrossings) {
+      truncated = true;
+      break;
+    }
+    out.t[out.count++] = t0;
+  }
+  return truncated;
 }
 
 std::size_t MeshAccel::memory_bytes() const {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/accel/bvh.hpp"
+#include "render/geometry/csg/csg_tree.hpp"
 #include "render/scene/scene.hpp"
 #include "render/geometry/surface_hit.hpp"
 
@@ -21,6 +22,14 @@ class MeshAccel {
   // Closest hit in object space; `smooth` interpolates the mesh's vertex normals if it has them.
   bool intersect(const Ray& ray, Interval ray_t, SurfaceHit& hit, bool smooth) const;
   bool occluded(const Ray& ray, Interval ray_t) const;
+  // For CSG (the mesh bounds a solid: render/geometry/shapes/mesh_closure.hpp): where the whole
+  // line of `object_ray` enters and leaves the solid, as CSG's crossing lists say it
+  // (render/geometry/csg/csg_tree.hpp). Triangle hits closer than a tie (tie_abs + tie_rel |t|)
+  // are one place: a line through a shared edge or vertex hits each triangle there, and is one
+  // crossing when they all face one way, none (it grazes the silhouette) when they do not.
+  // Only crossings at or after `from` are listed (inside_at_start is the state at `from`),
+  // at most kMaxLeafCrossings of them; returns true when more follow (the list stops short).
+  bool csg_crossings(const Ray& object_ray, double from, double tie_abs, double tie_rel, CsgLeafCrossings& out) const;
   std::size_t bvh_nodes() const { return bvh_.nodes.size(); }
   // Bytes held: the mesh's arrays, its BVH and the leaf-ordered vertices.
   std::size_t memory_bytes() const;

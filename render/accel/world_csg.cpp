@@ -145,15 +145,19 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
   // reuse it.
   uint32_t ray_transform = kNoId;
   Ray transformed = world_ray;
-  auto with_leaf = [&](uint32_t l, auto&& f) -> bool {
-    const Instance& part = instances_[csg.leaf_instance[l]];
-    if (part.transform != kNoId && part.transform != ray_transform) {
+  auto leaf_ray = [&](const Instance& part) -> const Ray& {
+    if (part.transform == kNoId) return world_ray;
+    if (part.transform != ray_transform) {
       transformed = object_ray(part, world_ray);
       ray_transform = part.transform;
     }
-    const Ray& ray = part.transform == kNoId ? world_ray : transformed;
+    return transformed;
+  };
+  auto with_leaf = [&](uint32_t l, auto&& f) -> bool {
+    const Instance& part = instances_[csg.leaf_instance[l]];
+    const Ray& ray = leaf_ray(part);
     // The part's kind, among those with leaf_crossings() (render/geometry/csg/leaf_crossings.hpp);
-    // other kinds are refused when the scene is built.
+    // other kinds are refused when the scene is built (meshes are handled by the callers).
     return [&]<std::size_t... I>(std::index_sequence<I...>) {
       bool result = false;
       (void)((part.kind == I && [&] {
@@ -169,50 +173,92 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
   const double tie_abs =
       tol::kCoincidentRelative * max_abs_component(world_ray.origin) / max_abs_component(world_ray.direction);
   const double tie_rel = tol::kCoincidentRelative;
+  auto ties = [&](double t) { return tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(t)); };
   // Leaf l's crossings along the whole line, unless its box misses `span` widened by
   // kCsgPruneTies ties at each end (then it is outside throughout the span; an infinite end
   // stays infinite). An unbounded leaf's box is infinite (add_csg), which every ray meets:
   // its slabs give -inf and +inf, never NaN, since no infinite bound minus an origin is 0.
-  auto widen = [&](const Interval& span) {
-    return Interval(span.min - tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.min)),
-                    span.max + tol::kCsgPruneTies * (tie_abs + tie_rel * std::abs(span.max)));
-  };
+  auto widen = [&](const Interval& span) { return Interval(span.min - ties(span.min), span.max + ties(span.max)); };
+  // A closed mesh lists only its crossings from the span on, and only so many
+  // (MeshAccel::csg_crossings): the earliest place one stopped short is where this pass's
+  // answer stops being known.
+  double stopped_short = Interval::kInfinity;
+  Interval window = ray_t;  // where this pass looks for the surface (below)
   auto compute = [&](uint32_t l, const Interval& span) {
     if (!slab_hit(csg.leaf_bounds[l], inv, widen(span))) return;
     CsgLeafCrossings& c = crossings[l];
+    const Instance& part = instances_[csg.leaf_instance[l]];
+    if (part.kind == kPrimKind<MeshRef>) {
+      // From the span's start, or the window's when every leaf is listed over the whole line.
+      const double from = widen(Interval(std::max(span.min, window.min), span.max)).min;
+      if (meshes_[part.index]->csg_crossings(leaf_ray(part), from, tie_abs, tie_rel, c))
+        stopped_short = std::min(stopped_short, c.t[c.count - 1]);
+      return;
+    }
     with_leaf(l, [&](const auto& shape, const Ray& ray) {
       leaf_crossings(shape, ray, c);
       return true;
     });
   };
-  if (csg_pruning_) {
-    // A result that cannot be inside anywhere near ray_t changes state nowhere there, so it
-    // shows no surface (the ray met its box but missed its first leaves: most CSG rays).
-    if (csg_gather(csg.tree, ray_t, crossings, compute).intersect(widen(ray_t)).empty()) return false;
-  } else {  // every leaf the whole line meets (tests compare the two)
-    for (uint32_t l = 0; l < csg.tree.leaf_count; ++l) {
-      crossings[l].count = 0;
-      crossings[l].inside_at_start = false;
-      compute(l, Interval::universe());
-    }
-  }
+  // Usually one pass. When a mesh stopped short, a surface found before that place (less the
+  // ties its batch may span) stands; otherwise the sweep runs again from there, every leaf
+  // listing its crossings again (a mesh from the new start).
   CsgSurface surface;
-  if (!csg_first_surface(csg.tree, crossings, ray_t, tie_abs, tie_rel, surface)) return false;
+  for (int pass = 0;; ++pass) {
+    stopped_short = Interval::kInfinity;
+    bool none = false;
+    if (csg_pruning_) {
+      // A result that cannot be inside anywhere near the window changes state nowhere there,
+      // so it shows no surface (the ray met its box but missed its first leaves: most CSG rays).
+      none = csg_gather(csg.tree, window, crossings, compute).intersect(widen(window)).empty();
+    } else {  // every leaf the whole line meets (tests compare the two)
+      const Interval line = pass == 0 ? Interval::universe() : Interval(window.min, Interval::kInfinity);
+      for (uint32_t l = 0; l < csg.tree.leaf_count; ++l) {
+        crossings[l].count = 0;
+        crossings[l].inside_at_start = false;
+        compute(l, line);
+      }
+    }
+    const bool found = !none && csg_first_surface(csg.tree, crossings, window, tie_abs, tie_rel, surface);
+    if (stopped_short == Interval::kInfinity) {
+      if (!found) return false;
+      break;
+    }
+    const double known_until = stopped_short - ties(stopped_short);
+    if (found && surface.t < known_until) break;
+    // Onwards from where the answer stopped being known (always forwards: the crossings a mesh
+    // lists start at the window, so the last one kept lies beyond it).
+    const double next = known_until > window.min ? known_until : stopped_short;
+    if (!(next > window.min) || !(next < window.max) || pass + 1 >= tol::kCsgMaxPasses) return false;
+    window.min = next;
+  }
   // A shadow ray needs only that answer: the sweep already stopped at the first surface, and
   // leaf_hit below finds a hit at every crossing leaf_crossings reported.
   if (!hit) return true;
   const CsgLeafCrossings& c = crossings[surface.leaf];
   int k = 0;
   while (k + 1 < c.count && c.t[k] != surface.t) ++k;
-  bool ok = with_leaf(surface.leaf, [&](const auto& shape, const Ray& ray) {
-    if (!leaf_hit(shape, ray, c, k, *hit)) return false;
-    // Out of the result: towards the ray where it enters, along it where it leaves.
+  // Out of the result: towards the ray where it enters, along it where it leaves.
+  auto orient = [&](const Ray& ray) {
     if ((glm::dot(hit->normal, ray.direction) < 0.0) != surface.entering) {
       hit->normal = -hit->normal;
       hit->shading_normal = -hit->shading_normal;
     }
-    return true;
-  });
+  };
+  bool ok;
+  if (const Instance& part = instances_[csg.leaf_instance[surface.leaf]]; part.kind == kPrimKind<MeshRef>) {
+    // The triangle hit first among those of that place (they lie within a tie after it).
+    const Ray& ray = leaf_ray(part);
+    const double near = 2.0 * (tie_abs + tie_rel * std::abs(surface.t));
+    ok = meshes_[part.index]->intersect(ray, Interval(surface.t - near, surface.t + near), *hit, part.smooth);
+    if (ok) orient(ray);
+  } else {
+    ok = with_leaf(surface.leaf, [&](const auto& shape, const Ray& ray) {
+      if (!leaf_hit(shape, ray, c, k, *hit)) return false;
+      orient(ray);
+      return true;
+    });
+  }
   if (!ok) return false;
   hit->t = surface.t;
   hit->csg_part = csg.leaf_instance[surface.leaf];

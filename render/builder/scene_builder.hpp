@@ -7,9 +7,11 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "render/geometry/shapes/mesh_closure.hpp"
 #include "render/scene/params.hpp"
 #include "render/scene/resource_limits.hpp"
 #include "render/scene/scene.hpp"
@@ -83,6 +85,9 @@ class SceneBuilder {
   // the same file shares one MeshId, so the file is read once and one BVH is built for it.
   // (file, shading): 0 flat, 1 smooth by area, 2 smooth by equal weights.
   std::map<std::pair<std::string, int>, MeshId> obj_meshes_;
+  // Whether each mesh placed in CSG bounds a solid, computed once per mesh (a loop may place
+  // one mesh in many blocks). Keyed by the data, which the scene keeps alive.
+  std::unordered_map<const MeshData*, MeshClosure> mesh_closures_;
 };
 
 }  // namespace rts::render

@@ -429,24 +429,39 @@ NodeId SceneBuilder::group(std::vector<Child> children, ParamSet& ps) {
 namespace {
 
 // Why `id` (a child of a CSG block of kind `op`) cannot take part, or "" when it can: CSG
-// combines solids, so a light, an open surface (no inside) or a mesh (not known to be
-// closed) is refused. Blocks inside were checked when they were built.
-std::string csg_refusal(const SceneDesc& scene, NodeId id, std::string_view op, int depth = 0) {
+// combines solids, so a light or an open surface (no inside: a disc, an uncapped cylinder, a
+// mesh with holes) is refused. Blocks inside were checked when they were built. `closure`
+// tells whether a mesh bounds a solid (computed once per mesh).
+template <class MeshClosureOf>
+std::string csg_refusal(const SceneDesc& scene, NodeId id, std::string_view op, MeshClosureOf& closure, int depth = 0) {
   const Node& node = scene.nodes[id];
   if (node.kind == NodeKind::Light) return "a light cannot be part of a CSG block (place it beside the block)";
   if (node.kind == NodeKind::Csg) return "";
   if (node.kind == NodeKind::Group) {
     if (depth > tol::kMaxGroupDepth) return "groups nested too deep";
     for (const Child& c : scene.groups[node.index].children)
-      if (std::string why = csg_refusal(scene, c.node, op, depth + 1); !why.empty()) return why;
+      if (std::string why = csg_refusal(scene, c.node, op, closure, depth + 1); !why.empty()) return why;
     return "";
   }
   const ShapeDesc& s = scene.shapes[node.index];
   const ShapeInfo& info = kShapeInfos[s.geometry.index()];
-  if (std::holds_alternative<MeshRef>(s.geometry))
-    return fmt::format("a mesh cannot be part of '{}' yet: CSG needs solids with an inside (use a group for a union "
-                       "of meshes)",
-                       op);
+  if (const auto* m = std::get_if<MeshRef>(&s.geometry)) {
+    if (m->mesh >= scene.meshes.size() || !scene.meshes[m->mesh]) return "internal: unknown mesh";
+    const MeshClosure& c = closure(*scene.meshes[m->mesh]);
+    if (c.closed) return "";
+    if (c.triangles == 0) return fmt::format("an empty mesh cannot be part of '{}': it has no inside", op);
+    auto v = [](const Vec3& p) { return fmt::format("<{:g}, {:g}, {:g}>", p.x, p.y, p.z); };
+    if (c.inconsistent)
+      return fmt::format("this mesh cannot be part of '{}': its faces are not wound consistently, so it has no "
+                         "inside (the edge from {} to {} is walked the same way by two triangles; {} edge{} in all). "
+                         "Every triangle must list its corners in the same turning order seen from outside",
+                         op, v(c.edge_from), v(c.edge_to), c.open_edges, c.open_edges == 1 ? "" : "s");
+    return fmt::format("this mesh cannot be part of '{}': it is not closed, so it has no inside ({} edge{} belong{} "
+                       "to one triangle only, the first from {} to {}). CSG needs a watertight mesh; use a group "
+                       "to place an open one beside the block",
+                       op, c.open_edges, c.open_edges == 1 ? "" : "s", c.open_edges == 1 ? "s" : "", v(c.edge_from),
+                       v(c.edge_to));
+  }
   bool open = info.closure == Closure::Open;
   if (const auto* c = std::get_if<Cylinder>(&s.geometry)) open = !c->capped;
   if (const auto* c = std::get_if<Cone>(&s.geometry)) open = !c->capped;
@@ -473,8 +488,13 @@ NodeId SceneBuilder::csg(std::string_view kind, std::vector<Child> children, Par
          : kind == "merge"      ? CsgOp::Merge
                                 : CsgOp::Union;
   if (children.empty()) ps.fail_block(fmt::format("{} needs at least one shape", kind));
+  auto closure_of = [this](const MeshData& m) -> const MeshClosure& {
+    auto it = mesh_closures_.find(&m);
+    if (it == mesh_closures_.end()) it = mesh_closures_.emplace(&m, mesh_closure(m)).first;
+    return it->second;
+  };
   for (const Child& c : children)
-    if (std::string why = csg_refusal(scene_, c.node, kind); !why.empty()) throw SceneError(c.loc, why);
+    if (std::string why = csg_refusal(scene_, c.node, kind, closure_of); !why.empty()) throw SceneError(c.loc, why);
   if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) d.material = ref->id;
   d.inverse = ps.boolean("inverse", false);
   ps.check_unused(kCsgNames);

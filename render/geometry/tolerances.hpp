@@ -78,6 +78,12 @@ inline constexpr double kCoincidentRelative = 1e-12;
 // closer than a tie across the gap, and the box's own rounding is ~1e-4 of a tie.
 inline constexpr double kCsgPruneTies = 4.0;
 
+// A closed mesh in CSG lists at most kMaxLeafCrossings crossings per sweep; a ray whose first
+// surface lies beyond them sweeps again from there (World::trace_csg). This many sweeps, about
+// 4000 crossings of one mesh along one ray, bound the work a pathological mesh can ask of one
+// ray; beyond them the ray is taken to see no surface of the block.
+inline constexpr int kCsgMaxPasses = 1024;
+
 // Camera `up` counts as parallel to the view direction when |up x forward| is below this
 // fraction of |up|: the image would have no defined "up".
 inline constexpr double kParallelVectors = 1e-12;
