@@ -96,6 +96,7 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     n.first = static_cast<uint32_t>(csg.leaf_instance.size());
     csg.leaf_instance.push_back(static_cast<uint32_t>(parts.size()));  // made absolute at the end
     csg.leaf_bounds.push_back(box);
+    csg.has_meshes = csg.has_meshes || std::holds_alternative<MeshRef>(shape.geometry);
     csg.tree.nodes.push_back(n);
     parts.push_back(part);
     inst.transmissive = inst.transmissive || part.transmissive;
@@ -187,8 +188,7 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
   auto compute = [&](uint32_t l, const Interval& span) {
     if (!slab_hit(csg.leaf_bounds[l], inv, widen(span))) return;
     CsgLeafCrossings& c = crossings[l];
-    const Instance& part = instances_[csg.leaf_instance[l]];
-    if (part.kind == kPrimKind<MeshRef>) {
+    if (const Instance& part = instances_[csg.leaf_instance[l]]; csg.has_meshes && part.kind == kPrimKind<MeshRef>) {
       // From the span's start, or the window's when every leaf is listed over the whole line.
       const double from = widen(Interval(std::max(span.min, window.min), span.max)).min;
       if (meshes_[part.index]->csg_crossings(leaf_ray(part), from, tie_abs, tie_rel, c))
