@@ -18,7 +18,7 @@ constexpr int kMaxNesting = 200;
 bool is_raw_block(const std::string& kind) {
   static const std::set<std::string> raw = {"function", "spline", "text", "sphere_sweep", "polygon", "bicubic_patch",
                                             "julia_fractal", "parametric", "quadric", "poly", "cubic", "quartic",
-                                            "ovus", "lemon", "mesh2", "polynomial"};
+                                            "ovus", "lemon", "polynomial"};
   return raw.count(kind) > 0;
 }
 

@@ -12,7 +12,7 @@ namespace rts::import::pov {
 
 bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
-                                              "triangle", "smooth_triangle", "mesh", "superellipsoid", "sor", "lathe", "prism",
+                                              "triangle", "smooth_triangle", "mesh", "mesh2", "superellipsoid", "sor", "lathe", "prism",
                                               "height_field", "isosurface", "union",
                                               "intersection", "difference", "merge", "object"};
   return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
@@ -22,7 +22,7 @@ bool Translator::is_unsupported_shape(const std::string& k) {
   static const std::set<std::string> kinds = {"text",
                                               "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
                                               "parametric", "quadric", "poly", "cubic", "quartic", "ovus", "lemon",
-                                              "mesh2", "polynomial"};
+                                              "polynomial"};
   return kinds.count(k) > 0;
 }
 
@@ -35,7 +35,6 @@ constexpr std::size_t kMaxTransformSteps = 10000;
 // The closest rts alternative for an unsupported shape, and whether it is planned.
 std::pair<std::string, bool> shape_alternative(const std::string& k) {
   if (k == "text" || k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
-  if (k == "mesh2") return {"mesh { vertices = [...]  faces = [...] }", true};
   return {"a mesh from an OBJ file", false};
 }
 
@@ -162,6 +161,9 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     }
     items_of = &blob_rest;
   }
+  Block mesh_rest;  // a mesh translated as one rts mesh: its texture and transforms
+  const bool one_mesh = (k == "mesh" || k == "mesh2") && mesh_components(b, props, mesh_rest);
+  if (one_mesh) items_of = &mesh_rest;
   Block lathe_rest;  // `cubic_spline N, <a>, ...` reads as a keyword with the values as its arguments
   if (k == "lathe" || k == "prism") {
     lathe_rest = b;
@@ -348,9 +350,11 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
       }
     }
     props.insert(props.begin(), {"points = [" + pts + "]", "height1 = " + value(*v(0)), "height2 = " + value(*v(1))});
+  } else if (one_mesh) {
+    kind = "mesh";
   } else if (k == "mesh") {
     kind = "group";
-    comments.push_back("POV-Ray's mesh: its triangles in a group");
+    comments.push_back("POV-Ray's mesh: its triangles in a group (not all of them literal)");
   } else if (k == "union") {
     // POV-Ray's union of open shapes (triangles, discs) or meshes is a group in rts: rts's
     // CSG takes closed shapes only, and for opaque objects the picture is the same.

@@ -1,9 +1,12 @@
 // POV-Ray shapes whose components are blocks of their own: a blob's spheres and cylinders
 // become the list properties of rts's blob (docs/shapes.md#blob); an isosurface's or a height
 // field's function becomes a macro of the point, its container and controls properties
-// (docs/shapes.md#isosurface, #height_field).
+// (docs/shapes.md#isosurface, #height_field); a mesh of literal triangles and a mesh2 become
+// one rts mesh (docs/shapes.md#mesh).
 #include <algorithm>
+#include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 
 #include <fmt/format.h>
@@ -226,6 +229,147 @@ Block Translator::solid_components(Writer& w, const Block& b, std::vector<std::s
     rest.items.push_back(it);
   }
   return rest;
+}
+
+}  // namespace rts::import::pov
+
+namespace rts::import::pov {
+
+namespace {
+
+// One rts mesh's vertex list built from corners: a corner is a position and, in a smooth
+// mesh, a normal; equal corners (compared as written) share one vertex.
+struct MeshBuilder {
+  std::map<std::pair<std::string, std::string>, std::size_t> index;
+  std::vector<std::string> positions, normals, faces;
+  std::size_t corner(const std::string& p, const std::string& n) {
+    auto [it, fresh] = index.emplace(std::make_pair(p, n), positions.size());
+    if (fresh) {
+      positions.push_back(p);
+      if (!n.empty()) normals.push_back(n);
+    }
+    return it->second;
+  }
+  void face(std::size_t a, std::size_t b, std::size_t c) { faces.push_back(fmt::format("<{}, {}, {}>", a, b, c)); }
+  void write(std::vector<std::string>& props) const {
+    auto list = [](const std::vector<std::string>& v) {
+      std::string s = "[";
+      for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
+      return s + "]";
+    };
+    props.insert(props.begin(), {"vertices = " + list(positions), "faces = " + list(faces)});
+    if (!normals.empty()) props.insert(props.begin() + 2, "normals = " + list(normals));
+    else props.insert(props.begin() + 2, "smooth = false");  // POV-Ray's mesh without normals is flat
+  }
+};
+
+std::string literal_vec3(const std::vector<double>& q) { return vec(glm::dvec3(q[0], q[1], q[2])); }
+
+}  // namespace
+
+bool Translator::mesh_components(const Block& b, std::vector<std::string>& props, Block& rest) {
+  rest = Block{};
+  rest.kind = b.kind;
+  rest.loc = b.loc;
+  MeshBuilder m;
+  if (b.kind == "mesh") {
+    // Literal triangles only (no loop, macro or textured triangle among them), all flat or all
+    // smooth; anything else stays a group of triangles.
+    bool flat = false, smooth = false;
+    for (const Item& it : b.items) {
+      if (it.kind == Item::Keyword && (it.name == "inside_vector" || it.name == "hierarchy")) continue;
+      if (it.kind != Item::Nested || (it.block->kind != "triangle" && it.block->kind != "smooth_triangle")) {
+        if (it.kind == Item::Value) return false;
+        rest.items.push_back(it);
+        continue;
+      }
+      const bool s = it.block->kind == "smooth_triangle";
+      std::vector<std::string> v;
+      for (const Item& ti : it.block->items) {
+        std::vector<double> q;
+        if (ti.kind != Item::Value || !literal_vector(*ti.args[0], q) || q.size() != 3) return false;
+        v.push_back(literal_vec3(q));
+      }
+      if (v.size() != (s ? 6u : 3u)) return false;
+      (s ? smooth : flat) = true;
+      std::size_t c[3];
+      for (int k = 0; k < 3; ++k) c[k] = m.corner(v[s ? 2 * k : k], s ? v[2 * k + 1] : "");
+      m.face(c[0], c[1], c[2]);
+    }
+    if (m.faces.empty() || (flat && smooth)) return false;
+    m.write(props);
+    return true;
+  }
+  // mesh2: vertex_vectors, normal_vectors, face_indices, normal_indices; the rest warned.
+  std::vector<std::vector<double>> vertices, normals, face_list, normal_faces;
+  bool have_normal_indices = false;
+  auto values = [&](const Block& part, std::size_t width, std::vector<std::vector<double>>& out, bool faces) {
+    std::vector<const Item*> v;
+    for (const Item& it : part.items)
+      if (it.kind == Item::Value) v.push_back(&it);
+      else warn(it.loc, fmt::format("this entry of '{}' is not translated", part.kind));
+    double count = 0;
+    if (v.empty() || !literal_number(*v[0]->args[0], count))
+      error(part.loc, fmt::format("'{}' needs its count first: {} {{ N, ... }}", part.kind, part.kind));
+    std::size_t listed = 0;
+    for (std::size_t i = 1; i < v.size(); ++i) {
+      std::vector<double> q;
+      double n;
+      if (faces && literal_number(*v[i]->args[0], n)) continue;  // a face's texture index (texture_list)
+      if (!literal_vector(*v[i]->args[0], q) || q.size() < width)
+        error(v[i]->loc, fmt::format("'{}' lists literal vectors only here (rts import does not evaluate "
+                                     "expressions inside a mesh2)", part.kind));
+      out.push_back(q);
+      ++listed;
+    }
+    if (count != static_cast<double>(listed))
+      error(part.loc, fmt::format("'{}' says {} entries but lists {}", part.kind, num(count), listed));
+  };
+  for (const Item& it : b.items) {
+    if (it.kind == Item::Keyword && (it.name == "inside_vector" || it.name == "hierarchy")) continue;
+    if (it.kind != Item::Nested) {
+      rest.items.push_back(it);
+      continue;
+    }
+    const std::string& k = it.block->kind;
+    if (k == "vertex_vectors") values(*it.block, 3, vertices, false);
+    else if (k == "normal_vectors") values(*it.block, 3, normals, false);
+    else if (k == "face_indices") values(*it.block, 3, face_list, true);
+    else if (k == "normal_indices") {
+      values(*it.block, 3, normal_faces, false);
+      have_normal_indices = true;
+    } else if (k == "uv_vectors" || k == "uv_indices")
+      unsupported(it.loc, k, "the mesh's own uvs (its barycentric coordinates)", false);
+    else if (k == "texture_list")
+      unsupported(it.loc, "texture_list", "one texture for the whole mesh2 (its own)", false);
+    else
+      rest.items.push_back(it);
+  }
+  if (vertices.empty() || face_list.empty())
+    error(b.loc, "'mesh2' needs vertex_vectors and face_indices");
+  const bool smooth = !normals.empty();
+  if (have_normal_indices && normal_faces.size() != face_list.size())
+    error(b.loc, fmt::format("mesh2's normal_indices lists {} faces, face_indices {}", normal_faces.size(),
+                             face_list.size()));
+  if (smooth && !have_normal_indices && normals.size() != vertices.size())
+    error(b.loc, fmt::format("mesh2 has {} normal_vectors for {} vertex_vectors and no normal_indices",
+                             normals.size(), vertices.size()));
+  auto at = [&](const std::vector<std::vector<double>>& list, double i, const char* what) -> const std::vector<double>& {
+    if (!(i >= 0 && i < static_cast<double>(list.size())) || i != std::floor(i))
+      error(b.loc, fmt::format("mesh2 names {} {} of {}", what, num(i), list.size()));
+    return list[static_cast<std::size_t>(i)];
+  };
+  for (std::size_t f = 0; f < face_list.size(); ++f) {
+    std::size_t c[3];
+    for (int k = 0; k < 3; ++k) {
+      const double vi = face_list[f][k];
+      const double ni = have_normal_indices ? normal_faces[f][k] : vi;
+      c[k] = m.corner(literal_vec3(at(vertices, vi, "vertex")), smooth ? literal_vec3(at(normals, ni, "normal")) : "");
+    }
+    m.face(c[0], c[1], c[2]);
+  }
+  m.write(props);
+  return true;
 }
 
 }  // namespace rts::import::pov

@@ -92,6 +92,10 @@ class Translator {
   // to `props`; its function, if any, written first as a macro of the point. Returns the block
   // without them (its texture and transforms).
   Block solid_components(Writer& w, const Block& b, std::vector<std::string>& props);
+  // A mesh of literal triangles (all flat or all smooth) or a mesh2 as one rts mesh: its
+  // vertices, faces and normals added to `props`, `rest` the block without them (texture,
+  // transforms). False for a mesh whose triangles are not all literal (it stays a group).
+  bool mesh_components(const Block& b, std::vector<std::string>& props, Block& rest);
   // A function block's body as rts text, with the names in `vars` (x, y, z) replaced; "" when
   // the reader kept no body (POV-Ray syntax rts does not read) or the body calls a function
   // rts cannot compile (functions.inc's f_sphere ...): then `why` says which.
