@@ -90,7 +90,8 @@ void PixelRenderer::store(int x, int y, const PixelAccum& acc, Frame& frame, Ray
                                            static_cast<int>(batches_) - report_first_);
   store_rgb(frame.color->at(x, y), e.value);
   std::size_t i = frame.index(x, y);
-  for (int c = 0; c < 3; ++c) (*frame.variance)[i * 3 + c] = static_cast<float>(e.variance[c]);
+  if (frame.variance)
+    for (int c = 0; c < 3; ++c) (*frame.variance)[i * 3 + c] = static_cast<float>(e.variance[c]);
   (*frame.taken)[i] = acc.taken;
   if (frame.aovs.any()) render_aovs(x, y, frame, counters);
 }

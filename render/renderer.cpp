@@ -172,12 +172,13 @@ void summarise_error(const Image& color, const PixelStatistics& px, ErrorEstimat
   const std::size_t n = px.taken.size();
   double mse = 0, rel = 0, spp = 0;
   uint32_t lo = ~0u, hi = 0;
-  bool known = n > 0;
+  const bool kept = px.variance.size() == 3 * n;  // none at 1 spp (allocate_frame)
+  bool known = n > 0 && kept;
   for (std::size_t i = 0; i < n; ++i) {
     spp += px.taken[i];
     lo = std::min(lo, px.taken[i]);
     hi = std::max(hi, px.taken[i]);
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < 3 && kept; ++c) {
       double v = px.variance[i * 3 + c];
       if (v < 0) {
         known = false;
@@ -215,7 +216,9 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   RenderResult result;
   ResolvedSettings rs = resolve(scene, options, result.warnings);
   Frame frame;
-  allocate_frame(result, rs.width, rs.height, parse_aovs(options.aovs), scene.settings.loc, frame);
+  // The batches' spread is the error estimate: none with one batch (1 spp).
+  allocate_frame(result, rs.width, rs.height, parse_aovs(options.aovs),
+                 batch_count(rs.samples, options.target_error > 0.0) >= 2, scene.settings.loc, frame);
   frame.normal_miss = options.normal_miss;
 
   // All parallel work (BVH builds, tiles) runs in one arena of --threads workers;

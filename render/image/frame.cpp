@@ -25,15 +25,16 @@ AovFlags parse_aovs(const std::vector<std::string>& names) {
   return f;
 }
 
-void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, SourceRef where,
+void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, bool with_variance, SourceRef where,
                     Frame& frame) {
+  with_variance = with_variance || aovs.error_map;  // its grey "unknown" needs the -1 entries
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   frame.width = width;
   frame.height = height;
   frame.aovs = aovs;
   try {
     result.color = Image(width, height);
-    result.stats.pixels.variance.assign(pixels * 3, -1.0f);
+    if (with_variance) result.stats.pixels.variance.assign(pixels * 3, -1.0f);
     result.stats.pixels.taken.assign(pixels, 0);
     // std::map lookups happen here, once: operator[] must not run concurrently in workers.
     if (aovs.normal) frame.normal = &(result.aovs["normal"] = Image(width, height));
@@ -49,7 +50,7 @@ void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, 
     throw RenderError(where, fmt::format("out of memory for a {}x{} image", width, height));
   }
   frame.color = &result.color;
-  frame.variance = &result.stats.pixels.variance;
+  frame.variance = with_variance ? &result.stats.pixels.variance : nullptr;
   frame.taken = &result.stats.pixels.taken;
 }
 
@@ -117,6 +118,7 @@ Vec3 error_map_colour(double relative_error) {
 }
 
 void finish_error(RenderResult& result, const Frame& frame) {
+  if (!frame.variance) return;  // no estimate: the error AOV stays 0
   const std::vector<float>& var = *frame.variance;
   if (frame.aovs.error) {
     Image& img = result.aovs["error"];

@@ -28,7 +28,7 @@ struct Frame {
   AovFlags aovs;
   float normal_miss = 0.0f;                // normal AOV value where nothing is hit
   Image* color = nullptr;
-  std::vector<float>* variance = nullptr;  // RenderStats::pixels
+  std::vector<float>* variance = nullptr;  // RenderStats::pixels; null when not kept (1 spp)
   std::vector<uint32_t>* taken = nullptr;
   Image* normal = nullptr;                 // null unless requested
   Image* albedo = nullptr;
@@ -39,8 +39,11 @@ struct Frame {
 };
 
 // Sizes result's images and statistics for width x height and points `frame` at them.
+// `with_variance`: keep the per-pixel variances (an error estimate is possible: two batches or
+// more, or the error_map AOV asked); without them frame.variance is null and
+// result.stats.pixels.variance empty (a 1-spp render of 800x600 spared 5.8 MB of stores).
 // Throws RenderError (at `where`) when memory runs out.
-void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, SourceRef where,
+void allocate_frame(RenderResult& result, int width, int height, AovFlags aovs, bool with_variance, SourceRef where,
                     Frame& frame);
 
 // Normalises the raw depths into result.aovs["depth"]: `miss` where nothing is hit; with a

@@ -14,7 +14,7 @@ static_assert(std::is_trivially_copyable_v<RayCounters>, "ray counts travel as b
 
 // Bytes per pixel for this frame's layout.
 std::size_t pixel_bytes(const Frame& f) {
-  std::size_t n = 3 * sizeof(float) + 3 * sizeof(float) + sizeof(uint32_t);
+  std::size_t n = 3 * sizeof(float) + (f.variance ? 3 * sizeof(float) : 0) + sizeof(uint32_t);
   if (f.normal) n += 3 * sizeof(float);
   if (f.albedo) n += 3 * sizeof(float);
   if (!f.depth.empty()) n += sizeof(float) + 1;
@@ -50,7 +50,7 @@ void pack_tile(const Frame& frame, const TileRect& rect, const RayCounters& coun
     for (int x = rect.x0; x < rect.x1; ++x) {
       const std::size_t i = frame.index(x, y);
       w.put(frame.color->at(x, y), 3 * sizeof(float));
-      w.put(&(*frame.variance)[i * 3], 3 * sizeof(float));
+      if (frame.variance) w.put(&(*frame.variance)[i * 3], 3 * sizeof(float));
       w.put(&(*frame.taken)[i], sizeof(uint32_t));
       if (frame.normal) w.put(frame.normal->at(x, y), 3 * sizeof(float));
       if (frame.albedo) w.put(frame.albedo->at(x, y), 3 * sizeof(float));
@@ -71,7 +71,7 @@ void unpack_tile(Frame& frame, const TileRect& rect, const std::vector<unsigned 
     for (int x = rect.x0; x < rect.x1; ++x) {
       const std::size_t i = frame.index(x, y);
       r.get(frame.color->at(x, y), 3 * sizeof(float));
-      r.get(&(*frame.variance)[i * 3], 3 * sizeof(float));
+      if (frame.variance) r.get(&(*frame.variance)[i * 3], 3 * sizeof(float));
       r.get(&(*frame.taken)[i], sizeof(uint32_t));
       if (frame.normal) r.get(frame.normal->at(x, y), 3 * sizeof(float));
       if (frame.albedo) r.get(frame.albedo->at(x, y), 3 * sizeof(float));

@@ -186,7 +186,7 @@ TEST_CASE("depth range maps near..far linearly, misses get their value", "[cours
   Frame frame;
   AovFlags flags;
   flags.depth = true;
-  allocate_frame(result, 5, 1, flags, {}, frame);
+  allocate_frame(result, 5, 1, flags, true, {}, frame);
   const float depths[5] = {-1.0f, 2.0f, 6.0f, 8.0f, 30.0f};  // -1: nothing hit
   for (int i = 0; i < 5; ++i) frame.depth[i] = depths[i];
   finish_depth(result, frame, std::make_pair(4.0, 8.0), 0.75f);

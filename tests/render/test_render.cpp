@@ -127,6 +127,23 @@ TEST_CASE("ray counters and per-pixel statistics are filled in", "[render]") {
   CHECK(st.summary().find("40x30, 4 spp") != std::string::npos);
 }
 
+TEST_CASE("a 1-spp render keeps no per-pixel variances: there is no estimate to keep", "[render]") {
+  SceneDesc s = sampled_scene();
+  s.settings.samples = 1;
+  RenderResult r = render(s, RenderOptions{});
+  CHECK(r.stats.pixels.variance.empty());
+  CHECK(r.stats.pixels.taken.size() == 40u * 30u);
+  CHECK_FALSE(r.stats.error.known);
+  CHECK(r.stats.error.max_spp == 1);
+  // The error AOVs still come: zeros, and the error map's grey "unknown".
+  RenderOptions o;
+  o.aovs = {"error", "error_map"};
+  RenderResult a = render(s, o);
+  CHECK(a.aovs.at("error").rgb[0] == 0.0f);
+  CHECK(a.aovs.at("error_map").rgb[0] == Approx(0.5f));
+  CHECK(a.color.rgb == r.color.rgb);
+}
+
 TEST_CASE("error statistics: a flat background has zero variance and an exact value", "[render]") {
   SceneDesc s;
   s.settings.width = 8;
