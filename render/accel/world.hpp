@@ -221,7 +221,7 @@ class World {
     CsgTree tree;
     std::vector<uint32_t> leaf_instance;
     std::vector<AABB> leaf_bounds;   // world space, to skip the leaves a ray misses
-    bool has_meshes = false;         // a closed mesh among the leaves (World::trace_csg)
+    bool has_windowed = false;       // a leaf whose crossings a sweep lists from its start (World::trace_csg)
   };
 
   ShapeArrays shapes_;

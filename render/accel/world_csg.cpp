@@ -4,6 +4,7 @@
 // crossings (csg_tree.hpp), and computes the full hit only at the surface found; a shadow ray
 // stops at the sweep's answer.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <new>
@@ -16,6 +17,22 @@
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
+
+namespace {
+
+// The kinds whose crossings a sweep lists from where it starts, and only so many: closed meshes
+// and the solids with leaf_crossings_from (render/geometry/csg/leaf_crossings.hpp).
+template <std::size_t... I>
+constexpr std::array<bool, 256> windowed_kinds(std::index_sequence<I...>) {
+  std::array<bool, 256> k{};
+  ((k[I] = std::is_same_v<ShapeKind<I>, MeshRef> ||
+           requires(const ShapeKind<I>& g, const Ray& r, CsgLeafCrossings& c) { leaf_crossings_from(g, r, 0.0, c); }),
+   ...);
+  return k;
+}
+constexpr std::array<bool, 256> kWindowedKind = windowed_kinds(std::make_index_sequence<kShapeKindCount>());
+
+}  // namespace
 
 void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
                     AABB& world_bounds) {
@@ -96,7 +113,7 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     n.first = static_cast<uint32_t>(csg.leaf_instance.size());
     csg.leaf_instance.push_back(static_cast<uint32_t>(parts.size()));  // made absolute at the end
     csg.leaf_bounds.push_back(box);
-    csg.has_meshes = csg.has_meshes || std::holds_alternative<MeshRef>(shape.geometry);
+    csg.has_windowed = csg.has_windowed || kWindowedKind[shape.geometry.index()];
     csg.tree.nodes.push_back(n);
     parts.push_back(part);
     inst.transmissive = inst.transmissive || part.transmissive;
@@ -180,23 +197,35 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
   // stays infinite). An unbounded leaf's box is infinite (add_csg), which every ray meets:
   // its slabs give -inf and +inf, never NaN, since no infinite bound minus an origin is 0.
   auto widen = [&](const Interval& span) { return Interval(span.min - ties(span.min), span.max + ties(span.max)); };
-  // A closed mesh lists only its crossings from the span on, and only so many
-  // (MeshAccel::csg_crossings): the earliest place one stopped short is where this pass's
-  // answer stops being known.
+  // A closed mesh, and a solid a line may cross often (leaf_crossings_from), list only their
+  // crossings from the span on, and only so many (MeshAccel::csg_crossings,
+  // render/geometry/csg/leaf_crossings.hpp): the earliest place one stopped short is where this
+  // pass's answer stops being known.
   double stopped_short = Interval::kInfinity;
   Interval window = ray_t;  // where this pass looks for the surface (below)
+  // Such a leaf, out of line: the sweep's per-leaf step below stays small enough to be inlined
+  // into csg_gather (the profile's largest cost on the csg race scene).
+  auto windowed = [&](uint32_t l, const Interval& span) __attribute__((noinline)) {
+    CsgLeafCrossings& c = crossings[l];
+    const Instance& part = instances_[csg.leaf_instance[l]];
+    // From the span's start, or the window's when every leaf is listed over the whole line.
+    const double from = widen(Interval(std::max(span.min, window.min), span.max)).min;
+    bool short_list = false;
+    if (part.kind == kPrimKind<MeshRef>) {
+      short_list = meshes_[part.index]->csg_crossings(leaf_ray(part), from, tie_abs, tie_rel, c);
+    } else {
+      with_leaf(l, [&](const auto& shape, const Ray& ray) {
+        if constexpr (requires { leaf_crossings_from(shape, ray, 0.0, c); }) short_list = leaf_crossings_from(shape, ray, from, c);
+        return true;
+      });
+    }
+    if (short_list) stopped_short = std::min(stopped_short, c.t[c.count - 1]);
+  };
   auto compute = [&](uint32_t l, const Interval& span) {
     if (!slab_hit(csg.leaf_bounds[l], inv, widen(span))) return;
-    CsgLeafCrossings& c = crossings[l];
-    if (const Instance& part = instances_[csg.leaf_instance[l]]; csg.has_meshes && part.kind == kPrimKind<MeshRef>) {
-      // From the span's start, or the window's when every leaf is listed over the whole line.
-      const double from = widen(Interval(std::max(span.min, window.min), span.max)).min;
-      if (meshes_[part.index]->csg_crossings(leaf_ray(part), from, tie_abs, tie_rel, c))
-        stopped_short = std::min(stopped_short, c.t[c.count - 1]);
-      return;
-    }
+    if (csg.has_windowed && kWindowedKind[instances_[csg.leaf_instance[l]].kind]) return windowed(l, span);
     with_leaf(l, [&](const auto& shape, const Ray& ray) {
-      leaf_crossings(shape, ray, c);
+      leaf_crossings(shape, ray, crossings[l]);
       return true;
     });
   };

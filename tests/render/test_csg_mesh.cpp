@@ -11,6 +11,7 @@
 #include "render/accel/flatten.hpp"
 #include "render/accel/world.hpp"
 #include "render/geometry/shapes/mesh_closure.hpp"
+#include "render/geometry/shapes/prism.hpp"
 #include "scene_fixture.hpp"
 
 using namespace rts::render;
@@ -234,4 +235,51 @@ TEST_CASE("csg mesh: pruned and every-leaf sweeps agree on random blocks of mesh
     }
   }
   CHECK(hits > rays / 10);
+}
+
+TEST_CASE("csg: a prism crossed more than a sweep lists is swept again, as a mesh is", "[csg][prism]") {
+  // A comb outline: a spine along x with ten teeth towards +z; a ray along the teeth crosses
+  // 20 walls. Minus a box over the first six teeth, the ray sees the seventh tooth's wall.
+  std::vector<Vec3> pts = {Vec3(0, 0, 0)};
+  for (int i = 0; i < 10; ++i) {
+    pts.push_back(Vec3(2.0 * i + 1, 1, 0));  // up the tooth's left wall ...
+    pts.push_back(Vec3(2.0 * i + 1, 2, 0));
+    pts.push_back(Vec3(2.0 * i + 2, 2, 0));
+    pts.push_back(Vec3(2.0 * i + 2, 1, 0));  // ... and down its right one
+  }
+  // Back along the spine: its far corner, then the start, which closes the outline.
+  pts.back() = Vec3(20, 1, 0);
+  pts.push_back(Vec3(21, 1, 0));
+  pts.push_back(Vec3(21, 0, 0));
+  pts.push_back(Vec3(0, 0, 0));
+  Prism comb;
+  comb.points = pts;
+  comb.height1 = -0.5;
+  comb.height2 = 0.5;
+  prism_setup(comb);
+  Block b;
+  MaterialId red = b.mat(1, 0, 0), green = b.mat(0, 1, 0);
+  b.child(comb, red);
+  b.child(Box{Vec3(-1, -1, 0.5), Vec3(12.5, 1, 3)}, green);
+  b.place_block(CsgOp::Difference);
+  FlatScene flat = flatten_scene(b.scene);
+  World pruned(b.scene, flat), full(b.scene, flat);
+  full.set_csg_pruning(false);
+  for (World* w : {&full, &pruned}) {
+    INFO((w == &full ? "every leaf" : "pruned"));
+    WorldHit h;
+    // Along x through the teeth (z = 1.5, y = 0): the teeth's walls at x = 2i + 1, 2i + 2.
+    REQUIRE(w->intersect(Ray{Vec3(-5, 0, 1.5), Vec3(1, 0, 0)}, Interval::positive(), h));
+    CHECK(h.t == Approx(5 + 13.0));  // the seventh tooth's left wall, x = 13
+    CHECK(w->instance(h.instance).material == red);
+    CHECK(h.normal.x == Approx(-1.0));
+    // From inside the box, between the teeth: the same wall.
+    REQUIRE(w->intersect(Ray{Vec3(6.5, 0, 1.5), Vec3(1, 0, 0)}, Interval::positive(), h));
+    CHECK(h.t == Approx(6.5));
+    // Backwards from beyond the comb: the last tooth's right wall, x = 20.
+    REQUIRE(w->intersect(Ray{Vec3(30, 0, 1.5), Vec3(-1, 0, 0)}, Interval::positive(), h));
+    CHECK(h.t == Approx(10.0));
+    CHECK_FALSE(w->occluded(Ray{Vec3(11.2, 0, 1.5), Vec3(1, 0, 0)}, Interval(0.0, 1.5)));
+    CHECK(w->occluded(Ray{Vec3(11.2, 0, 1.5), Vec3(1, 0, 0)}, Interval(0.0, 2.0)));
+  }
 }

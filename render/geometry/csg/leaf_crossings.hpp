@@ -5,8 +5,16 @@
 // intersect() finds the entry over the whole line, then the exit beyond it. One crossing alone
 // is a graze along an edge or a tangent: no crossing. A plane is a half-space (inside:
 // dot(normal, p) < offset, the side away from its normal, as in POV-Ray).
+//
+// Solids a line may cross more often (sor, lathe, prism, blob, superellipsoid, isosurface,
+// height field) also have leaf_crossings_from: up to kMaxLineCrossings crossings of the whole
+// line, of which those from `from` on are listed (the state at `from` folded into
+// inside_at_start), at most kMaxLeafCrossings; it returns true when the list stops short, and
+// World::trace_csg sweeps again from there when it needs to (out of line: their buffers in the
+// sweep's dispatch over every kind cost scenes of other solids).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -26,6 +34,23 @@
 #include "render/geometry/shapes/torus.hpp"
 
 namespace rts::render {
+
+// The most crossings of one leaf's whole line computed for one sweep.
+inline constexpr int kMaxLineCrossings = 16;
+
+// Lists the crossings t[0..n) (ascending, alternating from `inside_at_start`) at or after
+// `from` in `out`, at most kMaxLeafCrossings. True when the list stops short: crossings were
+// left out after its last, or the line's computation was `full` (it may have more).
+inline bool keep_crossings_from(const double* t, int n, bool inside_at_start, bool full, double from,
+                                CsgLeafCrossings& out) {
+  int i = 0;
+  while (i < n && t[i] < from) ++i;
+  out.inside_at_start = inside_at_start != (i % 2 == 1);
+  const int kept = std::min(n - i, kMaxLeafCrossings);
+  for (int k = 0; k < kept; ++k) out.t[k] = t[i + k];
+  out.count = kept;
+  return kept > 0 && (i + kept < n || full);
+}
 
 template <class Convex>
 void convex_crossings(const Convex& shape, const Ray& ray, CsgLeafCrossings& out) {
@@ -124,6 +149,13 @@ inline void leaf_crossings(const Superellipsoid& s, const Ray& ray, CsgLeafCross
   if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
 }
 
+[[gnu::noinline]] inline bool leaf_crossings_from(const Superellipsoid& s, const Ray& ray, double from,
+                                                      CsgLeafCrossings& out) {
+  double t[kMaxLineCrossings];
+  const int raw = superellipsoid_crossings(s, ray, t, kMaxLineCrossings);
+  return keep_crossings_from(t, raw - raw % 2, false, raw == kMaxLineCrossings, from, out);
+}
+
 inline bool leaf_hit(const Superellipsoid& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
   superellipsoid_hit_at(s, ray, c.t[k], hit);
   return true;
@@ -133,6 +165,13 @@ inline void leaf_crossings(const Blob& b, const Ray& ray, CsgLeafCrossings& out)
   out.inside_at_start = false;
   out.count = blob_crossings(b, ray, out.t, kMaxLeafCrossings);
   if (out.count % 2 == 1) --out.count;  // more crossings than kept, or a tangent: drop the unpaired one
+}
+
+[[gnu::noinline]] inline bool leaf_crossings_from(const Blob& b, const Ray& ray, double from,
+                                                      CsgLeafCrossings& out) {
+  double t[kMaxLineCrossings];
+  const int raw = blob_crossings(b, ray, t, kMaxLineCrossings);
+  return keep_crossings_from(t, raw - raw % 2, false, raw == kMaxLineCrossings, from, out);
 }
 
 inline bool leaf_hit(const Blob& b, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
@@ -152,36 +191,62 @@ void walked_leaf_crossings(const Shape& s, const Ray& ray, CsgLeafCrossings& out
   for (int i = 0; i < out.count; ++i) out.t[i] = cs[i].t;
 }
 
+template <class Crossing, class Shape, class Walk>
+bool walked_leaf_crossings_from(const Shape& s, const Ray& ray, double from, CsgLeafCrossings& out, Walk walk) {
+  Crossing cs[kMaxLineCrossings];
+  const int raw = walk(s, ray, cs, kMaxLineCrossings);
+  double t[kMaxLineCrossings] = {};  // (filled up to raw; zeroed for GCC's -Wmaybe-uninitialized)
+  for (int i = 0; i < raw; ++i) t[i] = cs[i].t;
+  return keep_crossings_from(t, raw - raw % 2, false, raw == kMaxLineCrossings, from, out);
+}
+
+// The chosen crossing's part, found by walking again: the crossing with the same t (the walk
+// is deterministic, so the same bits).
 template <class Crossing, class Shape, class Walk, class HitAt>
-bool walked_leaf_hit(const Shape& s, const Ray& ray, int k, SurfaceHit& hit, Walk walk, HitAt hit_at) {
-  Crossing cs[kMaxLeafCrossings];
-  int n = walk(s, ray, cs, kMaxLeafCrossings);
-  if (k >= n) return false;
-  hit_at(s, ray, cs[k], hit);
-  return true;
+bool walked_leaf_hit(const Shape& s, const Ray& ray, double t, SurfaceHit& hit, Walk walk, HitAt hit_at) {
+  Crossing cs[kMaxLineCrossings];
+  const int n = walk(s, ray, cs, kMaxLineCrossings);
+  for (int i = 0; i < n; ++i)
+    if (cs[i].t == t) {
+      hit_at(s, ray, cs[i], hit);
+      return true;
+    }
+  return false;
 }
 
 inline void leaf_crossings(const Sor& s, const Ray& ray, CsgLeafCrossings& out) {
   walked_leaf_crossings<SorCrossing>(s, ray, out, [](auto&&... a) { return sor_crossings(a...); });
 }
-inline bool leaf_hit(const Sor& s, const Ray& ray, const CsgLeafCrossings&, int k, SurfaceHit& hit) {
-  return walked_leaf_hit<SorCrossing>(s, ray, k, hit, [](auto&&... a) { return sor_crossings(a...); },
+[[gnu::noinline]] inline bool leaf_crossings_from(const Sor& s, const Ray& ray, double from,
+                                                      CsgLeafCrossings& out) {
+  return walked_leaf_crossings_from<SorCrossing>(s, ray, from, out, [](auto&&... a) { return sor_crossings(a...); });
+}
+inline bool leaf_hit(const Sor& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  return walked_leaf_hit<SorCrossing>(s, ray, c.t[k], hit, [](auto&&... a) { return sor_crossings(a...); },
                                       [](auto&&... a) { sor_hit_at(a...); });
 }
 
 inline void leaf_crossings(const Lathe& l, const Ray& ray, CsgLeafCrossings& out) {
   walked_leaf_crossings<LatheCrossing>(l, ray, out, [](auto&&... a) { return lathe_crossings(a...); });
 }
-inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings&, int k, SurfaceHit& hit) {
-  return walked_leaf_hit<LatheCrossing>(l, ray, k, hit, [](auto&&... a) { return lathe_crossings(a...); },
+[[gnu::noinline]] inline bool leaf_crossings_from(const Lathe& l, const Ray& ray, double from,
+                                                      CsgLeafCrossings& out) {
+  return walked_leaf_crossings_from<LatheCrossing>(l, ray, from, out, [](auto&&... a) { return lathe_crossings(a...); });
+}
+inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  return walked_leaf_hit<LatheCrossing>(l, ray, c.t[k], hit, [](auto&&... a) { return lathe_crossings(a...); },
                                         [](auto&&... a) { lathe_hit_at(a...); });
 }
 
 inline void leaf_crossings(const Prism& p, const Ray& ray, CsgLeafCrossings& out) {
   walked_leaf_crossings<PrismCrossing>(p, ray, out, [](auto&&... a) { return prism_crossings(a...); });
 }
-inline bool leaf_hit(const Prism& p, const Ray& ray, const CsgLeafCrossings&, int k, SurfaceHit& hit) {
-  return walked_leaf_hit<PrismCrossing>(p, ray, k, hit, [](auto&&... a) { return prism_crossings(a...); },
+[[gnu::noinline]] inline bool leaf_crossings_from(const Prism& p, const Ray& ray, double from,
+                                                      CsgLeafCrossings& out) {
+  return walked_leaf_crossings_from<PrismCrossing>(p, ray, from, out, [](auto&&... a) { return prism_crossings(a...); });
+}
+inline bool leaf_hit(const Prism& p, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  return walked_leaf_hit<PrismCrossing>(p, ray, c.t[k], hit, [](auto&&... a) { return prism_crossings(a...); },
                                         [](auto&&... a) { prism_hit_at(a...); });
 }
 
@@ -195,6 +260,18 @@ inline void leaf_crossings(const Isosurface& s, const Ray& ray, CsgLeafCrossings
   bool on[kMaxLeafCrossings];
   out.count = iso_crossings(s, ray, t0, t1, t0, t1, out.t, on, kMaxLeafCrossings);
   if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
+}
+
+[[gnu::noinline]] inline bool leaf_crossings_from(const Isosurface& s, const Ray& ray, double from,
+                                                      CsgLeafCrossings& out) {
+  out.inside_at_start = false;
+  out.count = 0;
+  double t0, t1;
+  if (!iso_container_span(s, ray, t0, t1)) return false;
+  double t[kMaxLineCrossings];
+  bool on[kMaxLineCrossings];
+  const int raw = iso_crossings(s, ray, t0, t1, t0, t1, t, on, kMaxLineCrossings);
+  return keep_crossings_from(t, raw - raw % 2, false, raw == kMaxLineCrossings, from, out);
 }
 
 inline bool leaf_hit(const Isosurface& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
@@ -212,14 +289,28 @@ inline void leaf_crossings(const HeightField& f, const Ray& ray, CsgLeafCrossing
   for (int i = 0; i < out.count; ++i) out.t[i] = c[i].t;
 }
 
+[[gnu::noinline]] inline bool leaf_crossings_from(const HeightField& f, const Ray& ray, double from,
+                                                      CsgLeafCrossings& out) {
+  HeightFieldCrossing c[kMaxLineCrossings];
+  bool inside = false;
+  const int n = height_field_crossings(f, ray, c, kMaxLineCrossings, inside);
+  double t[kMaxLineCrossings] = {};
+  for (int i = 0; i < n; ++i) t[i] = c[i].t;
+  return keep_crossings_from(t, n, inside, n == kMaxLineCrossings, from, out);
+}
+
+// The chosen crossing's kind, found again: the crossing with the same t.
 inline bool leaf_hit(const HeightField& f, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
   bool inside = false;
-  HeightFieldCrossing all[kMaxLeafCrossings];
-  int n = height_field_crossings(f, ray, all, kMaxLeafCrossings, inside);
-  if (k >= n) return false;
-  height_field_crossing_hit(f, ray, all[k], hit);
-  hit.t = c.t[k];
-  return true;
+  HeightFieldCrossing all[kMaxLineCrossings];
+  const int n = height_field_crossings(f, ray, all, kMaxLineCrossings, inside);
+  for (int i = 0; i < n; ++i)
+    if (all[i].t == c.t[k]) {
+      height_field_crossing_hit(f, ray, all[i], hit);
+      hit.t = c.t[k];
+      return true;
+    }
+  return false;
 }
 
 inline void leaf_crossings(const Torus& tor, const Ray& ray, CsgLeafCrossings& out) {
