@@ -283,3 +283,31 @@ TEST_CASE("csg: a prism crossed more than a sweep lists is swept again, as a mes
     CHECK(w->occluded(Ray{Vec3(11.2, 0, 1.5), Vec3(1, 0, 0)}, Interval(0.0, 2.0)));
   }
 }
+
+TEST_CASE("csg mesh: an inverted closed mesh is everything outside it", "[csg][mesh]") {
+  // intersection { box, inverse cube mesh } is difference { box, cube mesh }.
+  Block inv, diff;
+  for (Block* b : {&inv, &diff}) {
+    MaterialId red = b->mat(1, 0, 0), green = b->mat(0, 1, 0);
+    b->child(Box{Vec3(-1), Vec3(1)}, red);
+    b->mesh_child(cube_mesh(Vec3(-0.5, -0.5, -2), Vec3(0.5, 0.5, 0)), green);
+    if (b == &inv) b->scene.shapes.back().inverse = true;
+    b->place_block(b == &inv ? CsgOp::Intersection : CsgOp::Difference);
+  }
+  FlatScene fi = flatten_scene(inv.scene), fd = flatten_scene(diff.scene);
+  World wi(inv.scene, fi), wd(diff.scene, fd);
+  int hits = 0;
+  for (double x = -1.2; x <= 1.2; x += 0.1)
+    for (double y = -1.2; y <= 1.2; y += 0.1) {
+      const Ray ray{Vec3(x + 0.013, y + 0.007, -5), Vec3(0.01, 0.02, 1)};
+      WorldHit hi, hd;
+      const bool a = wi.intersect(ray, Interval::positive(), hi), b = wd.intersect(ray, Interval::positive(), hd);
+      REQUIRE(a == b);
+      if (!a) continue;
+      ++hits;
+      CHECK(hi.t == hd.t);
+      CHECK(glm::dot(hi.normal, hd.normal) == Approx(1.0));
+      CHECK(wi.instance(hi.instance).material == wd.instance(hd.instance).material);
+    }
+  CHECK(hits > 300);
+}

@@ -29,7 +29,7 @@ struct ShapeTraits<MeshRef> {
       {"vertex_shininess", "list of numbers", "none", "Inline: a `shininess` per vertex, interpolated."},
   };
   static constexpr ShapeInfo kInfo{
-      .name = "mesh", .properties = kProperties, .closure = Closure::Open, .has_uv = true, .has_tangents = true};
+      .name = "mesh", .properties = kProperties, .closure = Closure::WhenWatertight, .has_uv = true, .has_tangents = true};
 };
 
 }  // namespace rts::render

@@ -21,8 +21,9 @@ struct PropertyInfo {
 
 // Closed shapes bound a solid (every ray that enters leaves again), so CSG can tell inside from
 // outside; open ones (a disc, a triangle, a quad: sheets) cannot. Cylinders and cones are
-// closed only with their caps; a mesh may or may not be (it is not checked).
-enum class Closure : uint8_t { Closed, Open, WhenCapped };
+// closed only with their caps; a mesh when it is watertight (mesh_closure.hpp, checked when
+// it is placed in CSG).
+enum class Closure : uint8_t { Closed, Open, WhenCapped, WhenWatertight };
 
 struct ShapeInfo {
   std::string_view name;                     // the block kind, "sphere"
