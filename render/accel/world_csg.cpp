@@ -229,9 +229,9 @@ bool World::trace_csg(const Instance& inst, const Ray& world_ray, const Interval
       return true;
     });
   };
-  // Usually one pass. When a mesh stopped short, a surface found before that place (less the
-  // ties its batch may span) stands; otherwise the sweep runs again from there, every leaf
-  // listing its crossings again (a mesh from the new start).
+  // Usually one pass. When a leaf's list stopped short, a surface found before that place (less
+  // the ties its batch may span) stands; otherwise the sweep runs again from there, every leaf
+  // listing its crossings again (a windowed one from the new start).
   CsgSurface surface;
   for (int pass = 0;; ++pass) {
     stopped_short = Interval::kInfinity;

@@ -143,12 +143,6 @@ inline void leaf_crossings(const Plane& p, const Ray& ray, CsgLeafCrossings& out
   }
 }
 
-inline void leaf_crossings(const Superellipsoid& s, const Ray& ray, CsgLeafCrossings& out) {
-  out.inside_at_start = false;
-  out.count = superellipsoid_crossings(s, ray, out.t, kMaxLeafCrossings);
-  if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
-}
-
 [[gnu::noinline]] inline bool leaf_crossings_from(const Superellipsoid& s, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
   double t[kMaxLineCrossings];
@@ -159,12 +153,6 @@ inline void leaf_crossings(const Superellipsoid& s, const Ray& ray, CsgLeafCross
 inline bool leaf_hit(const Superellipsoid& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
   superellipsoid_hit_at(s, ray, c.t[k], hit);
   return true;
-}
-
-inline void leaf_crossings(const Blob& b, const Ray& ray, CsgLeafCrossings& out) {
-  out.inside_at_start = false;
-  out.count = blob_crossings(b, ray, out.t, kMaxLeafCrossings);
-  if (out.count % 2 == 1) --out.count;  // more crossings than kept, or a tangent: drop the unpaired one
 }
 
 [[gnu::noinline]] inline bool leaf_crossings_from(const Blob& b, const Ray& ray, double from,
@@ -182,15 +170,6 @@ inline bool leaf_hit(const Blob& b, const Ray& ray, const CsgLeafCrossings& c, i
 // Sor, lathe and prism: their crossings come from one walk along the ray, kept in pairs (they
 // alternate in and out: POV-Ray's even-odd inside); the chosen one's part (cap, curve segment,
 // wall) is found by walking again (the walk is deterministic).
-template <class Crossing, class Shape, class Walk>
-void walked_leaf_crossings(const Shape& s, const Ray& ray, CsgLeafCrossings& out, Walk walk) {
-  out.inside_at_start = false;
-  Crossing cs[kMaxLeafCrossings];
-  out.count = walk(s, ray, cs, kMaxLeafCrossings);
-  if (out.count % 2 == 1) --out.count;  // more crossings than kept, or a joint counted oddly: drop the unpaired one
-  for (int i = 0; i < out.count; ++i) out.t[i] = cs[i].t;
-}
-
 template <class Crossing, class Shape, class Walk>
 bool walked_leaf_crossings_from(const Shape& s, const Ray& ray, double from, CsgLeafCrossings& out, Walk walk) {
   Crossing cs[kMaxLineCrossings];
@@ -214,9 +193,6 @@ bool walked_leaf_hit(const Shape& s, const Ray& ray, double t, SurfaceHit& hit, 
   return false;
 }
 
-inline void leaf_crossings(const Sor& s, const Ray& ray, CsgLeafCrossings& out) {
-  walked_leaf_crossings<SorCrossing>(s, ray, out, [](auto&&... a) { return sor_crossings(a...); });
-}
 [[gnu::noinline]] inline bool leaf_crossings_from(const Sor& s, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
   return walked_leaf_crossings_from<SorCrossing>(s, ray, from, out, [](auto&&... a) { return sor_crossings(a...); });
@@ -226,9 +202,6 @@ inline bool leaf_hit(const Sor& s, const Ray& ray, const CsgLeafCrossings& c, in
                                       [](auto&&... a) { sor_hit_at(a...); });
 }
 
-inline void leaf_crossings(const Lathe& l, const Ray& ray, CsgLeafCrossings& out) {
-  walked_leaf_crossings<LatheCrossing>(l, ray, out, [](auto&&... a) { return lathe_crossings(a...); });
-}
 [[gnu::noinline]] inline bool leaf_crossings_from(const Lathe& l, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
   return walked_leaf_crossings_from<LatheCrossing>(l, ray, from, out, [](auto&&... a) { return lathe_crossings(a...); });
@@ -238,9 +211,6 @@ inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings& c, 
                                         [](auto&&... a) { lathe_hit_at(a...); });
 }
 
-inline void leaf_crossings(const Prism& p, const Ray& ray, CsgLeafCrossings& out) {
-  walked_leaf_crossings<PrismCrossing>(p, ray, out, [](auto&&... a) { return prism_crossings(a...); });
-}
 [[gnu::noinline]] inline bool leaf_crossings_from(const Prism& p, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
   return walked_leaf_crossings_from<PrismCrossing>(p, ray, from, out, [](auto&&... a) { return prism_crossings(a...); });
@@ -252,16 +222,6 @@ inline bool leaf_hit(const Prism& p, const Ray& ray, const CsgLeafCrossings& c, 
 
 // The whole span inside the container; the crossing kinds (function or container) are found
 // again at the chosen one (a container crossing is exactly t0 or t1).
-inline void leaf_crossings(const Isosurface& s, const Ray& ray, CsgLeafCrossings& out) {
-  out.inside_at_start = false;
-  out.count = 0;
-  double t0, t1;
-  if (!iso_container_span(s, ray, t0, t1)) return;
-  bool on[kMaxLeafCrossings];
-  out.count = iso_crossings(s, ray, t0, t1, t0, t1, out.t, on, kMaxLeafCrossings);
-  if (out.count % 2 == 1) --out.count;  // more crossings than kept: drop the unpaired one
-}
-
 [[gnu::noinline]] inline bool leaf_crossings_from(const Isosurface& s, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
   out.inside_at_start = false;
@@ -283,12 +243,6 @@ inline bool leaf_hit(const Isosurface& s, const Ray& ray, const CsgLeafCrossings
 
 // The column under the surface (render/geometry/shapes/height_field.hpp): its walls, surface
 // and water plane; the kind of each crossing is found again at the chosen one.
-inline void leaf_crossings(const HeightField& f, const Ray& ray, CsgLeafCrossings& out) {
-  HeightFieldCrossing c[kMaxLeafCrossings];
-  out.count = height_field_crossings(f, ray, c, kMaxLeafCrossings, out.inside_at_start);
-  for (int i = 0; i < out.count; ++i) out.t[i] = c[i].t;
-}
-
 [[gnu::noinline]] inline bool leaf_crossings_from(const HeightField& f, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
   HeightFieldCrossing c[kMaxLineCrossings];
@@ -311,6 +265,15 @@ inline bool leaf_hit(const HeightField& f, const Ray& ray, const CsgLeafCrossing
       return true;
     }
   return false;
+}
+
+// The solids listed from a start (leaf_crossings_from) over the whole line: their first
+// kMaxLeafCrossings crossings, as every other leaf lists them (tests, and the sweep's dispatch,
+// which calls leaf_crossings_from for them instead).
+template <class Shape>
+  requires requires(const Shape& g, const Ray& r, CsgLeafCrossings& c) { leaf_crossings_from(g, r, 0.0, c); }
+void leaf_crossings(const Shape& shape, const Ray& ray, CsgLeafCrossings& out) {
+  leaf_crossings_from(shape, ray, -Interval::kInfinity, out);
 }
 
 inline void leaf_crossings(const Torus& tor, const Ray& ray, CsgLeafCrossings& out) {
