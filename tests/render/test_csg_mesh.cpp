@@ -65,6 +65,15 @@ struct Block {
   }
 };
 
+// One scene traced by both sweeps: with pruning (the default) and with every leaf computed.
+struct BothSweeps {
+  FlatScene flat;
+  World pruned, full;
+  explicit BothSweeps(const SceneDesc& s) : flat(flatten_scene(s)), pruned(s, flat), full(s, flat) {
+    full.set_csg_pruning(false);
+  }
+};
+
 }  // namespace
 
 TEST_CASE("mesh closure: a cube is closed, with shared or split vertices", "[csg][mesh]") {
@@ -158,11 +167,9 @@ TEST_CASE("csg mesh: a mesh crossed more often than one sweep lists is swept aga
   b.mesh_child(comb, red);
   b.child(Box{Vec3(-2, -2, -1), Vec3(2, 2, 11.5)}, green);
   b.place_block(CsgOp::Difference);
-  FlatScene flat = flatten_scene(b.scene);
-  World pruned(b.scene, flat), full(b.scene, flat);
-  full.set_csg_pruning(false);
-  for (World* w : {&full, &pruned}) {
-    INFO((w == &full ? "every leaf" : "pruned"));
+  BothSweeps both(b.scene);
+  for (World* w : {&both.full, &both.pruned}) {
+    INFO((w == &both.full ? "every leaf" : "pruned"));
     WorldHit h;
     REQUIRE(w->intersect(Ray{Vec3(0, 0, -5), Vec3(0, 0, 1)}, Interval::positive(), h));
     CHECK(h.t == Approx(5 + 12.0));  // the seventh cube's front face, z = 12
@@ -212,9 +219,8 @@ TEST_CASE("csg mesh: pruned and every-leaf sweeps agree on random blocks of mesh
                                               : rotate_deg(180.0 * c(rng), glm::normalize(Vec3(c(rng), c(rng), 1.0)));
     }
     b.place_block(op);
-    FlatScene flat = flatten_scene(b.scene);
-    World pruned(b.scene, flat), full(b.scene, flat);
-    full.set_csg_pruning(false);
+    BothSweeps both(b.scene);
+    World &pruned = both.pruned, &full = both.full;
     for (int r = 0; r < 300; ++r) {
       Vec3 o = u(rng) < 0.5 ? Vec3(3 * c(rng), 3 * c(rng), -4) : Vec3(c(rng), c(rng), c(rng));
       Ray ray{o, Vec3(c(rng), c(rng), c(rng)) - o};
@@ -262,11 +268,9 @@ TEST_CASE("csg: a prism crossed more than a sweep lists is swept again, as a mes
   b.child(comb, red);
   b.child(Box{Vec3(-1, -1, 0.5), Vec3(12.5, 1, 3)}, green);
   b.place_block(CsgOp::Difference);
-  FlatScene flat = flatten_scene(b.scene);
-  World pruned(b.scene, flat), full(b.scene, flat);
-  full.set_csg_pruning(false);
-  for (World* w : {&full, &pruned}) {
-    INFO((w == &full ? "every leaf" : "pruned"));
+  BothSweeps both(b.scene);
+  for (World* w : {&both.full, &both.pruned}) {
+    INFO((w == &both.full ? "every leaf" : "pruned"));
     WorldHit h;
     // Along x through the teeth (z = 1.5, y = 0): the teeth's walls at x = 2i + 1, 2i + 2.
     REQUIRE(w->intersect(Ray{Vec3(-5, 0, 1.5), Vec3(1, 0, 0)}, Interval::positive(), h));

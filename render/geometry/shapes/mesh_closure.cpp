@@ -77,19 +77,18 @@ MeshClosure mesh_closure(const MeshData& mesh) {
       ++e.total;
     }
   }
+  // Count the unbalanced edges; report the one with the smallest key (the same on every run).
+  uint64_t reported = UINT64_MAX;
   for (const auto& [key, e] : edges) {
     if (e.net == 0) continue;
     ++out.open_edges;
     if (e.total >= 2 && static_cast<uint32_t>(std::abs(e.net)) == e.total) out.inconsistent = true;
-  }
-  // The reported edge: the unbalanced one with the smallest key (deterministic).
-  uint64_t best = UINT64_MAX;
-  for (const auto& [key, e] : edges)
-    if (e.net != 0 && key < best) {
-      best = key;
+    if (key < reported) {
+      reported = key;
       out.edge_from = Vec3(mesh.positions[first_index[e.a]]) + mesh.origin;
       out.edge_to = Vec3(mesh.positions[first_index[e.b]]) + mesh.origin;
     }
+  }
   out.closed = out.triangles > 0 && out.open_edges == 0;
   return out;
 }
