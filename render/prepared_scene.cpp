@@ -10,6 +10,7 @@ PreparedScene::PreparedScene(const SceneDesc& scene, bool specialize, std::size_
   lights_ = compile_lights(flat_.lights);
   std::vector<bool> used = used_textures(scene, flat_);
   textures_ = compile_textures(scene, &used, max_memory);
+  media_ = compile_media(scene, textures_);
 }
 
 FeatureSet PreparedScene::features(const FeatureContext& context) const {

@@ -10,6 +10,7 @@
 #include "render/accel/flatten.hpp"
 #include "render/accel/world.hpp"
 #include "render/shade/features.hpp"
+#include "render/shade/medium.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/shade/lights.hpp"
 #include "render/shade/texture.hpp"
@@ -30,6 +31,7 @@ class PreparedScene {
   const World& world() const { return *world_; }
   const std::vector<CompiledLight>& lights() const { return lights_; }
   const std::vector<CompiledTexture>& textures() const { return textures_; }
+  const std::vector<CompiledMedium>& media() const { return media_; }
   bool specialized() const { return specialize_; }
   std::size_t max_memory() const { return max_memory_; }
 
@@ -46,6 +48,7 @@ class PreparedScene {
   std::unique_ptr<World> world_;
   std::vector<CompiledLight> lights_;
   std::vector<CompiledTexture> textures_;
+  std::vector<CompiledMedium> media_;
 };
 
 // Builds the scene as render() would for `options` (its --threads, --no-specialize and

@@ -240,12 +240,13 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   const std::vector<CompiledLight> lights = compile_lights(prep.flat().lights, rs.samples);
   Camera camera(scene.has_camera ? scene.camera : CameraDesc{}, rs.width, rs.height);
   Integrator integrator(world, lights, scene.materials, prep.textures(), scene.settings, rs.max_depth,
-                        prep.integrator_flags(features));
+                        prep.integrator_flags(features), &prep.media());
+  integrator.jitter_media(rs.samples > 1);
   // Path mode: the path tracer takes the camera samples (the Whitted integrator keeps the AOVs).
   const IntegratorKind integrator_kind = options.integrator.value_or(scene.settings.integrator);
   std::optional<path::PathIntegrator> path_tracer;
   if (integrator_kind == IntegratorKind::Path) {
-    path_tracer.emplace(world, scene, lights, prep.textures(), rs.max_depth, result.warnings);
+    path_tracer.emplace(world, scene, lights, prep.textures(), prep.media(), rs.max_depth, result.warnings);
     integrator.use_path_tracer(&*path_tracer);
   }
   const bool adaptive = options.target_error > 0 && rs.samples >= 2;

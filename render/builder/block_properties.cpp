@@ -34,6 +34,12 @@ constexpr PropertyInfo kSettings[] = {
     {"depth_miss", "number", "`0`", "Depth AOV value where nothing is hit, as --depth-miss."},
     {"normal_miss", "number", "`0`", "Normal AOV value where nothing is hit, as --normal-miss."},
     {"clamp", "number ≥ 0", "`0` (off)", "Path mode: the most one camera sample may add to a pixel (biased)."},
+    {"media_absorption", "color ≥ 0", "`rgb(0)`", "Medium around the objects: light absorbed per unit length (POV-Ray's media absorption)."},
+    {"media_scattering", "color ≥ 0", "`rgb(0)`", "Medium around the objects: light scattered per unit length (POV-Ray's scattering color)."},
+    {"media_emission", "color ≥ 0", "`rgb(0)`", "Medium around the objects: light given off per unit length."},
+    {"media_eccentricity", "number in (-1, 1)", "`0`", "Medium around the objects: the phase function's mean cosine (Henyey-Greenstein; 0 isotropic, > 0 forward)."},
+    {"media_density", "texture", "none", "Medium around the objects: scales the three above by the texture's value (mean channel, clamped to [0, 1]) at each world point."},
+    {"media_samples", "whole number ≥ 1", "`16`", "Whitted mode: points marched per ray segment in a medium."},
 };
 
 constexpr PropertyInfo kCamera[] = {
@@ -69,6 +75,11 @@ constexpr PropertyInfo kMaterial[] = {
     {"bump_scale", "number", "`1`", "The height of `bump`'s white."},
     {"normal_map", "texture", "none", "A tangent-space normal map."},
     {"highlight", "string", "`\"phong\"`", "The highlight's lobe: \"phong\" (R·V) or \"blinn\" (N·H)."},
+    {"media_absorption", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light absorbed per unit length (POV-Ray's media absorption)."},
+    {"media_scattering", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light scattered per unit length (POV-Ray's scattering color)."},
+    {"media_emission", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light given off per unit length."},
+    {"media_eccentricity", "number in (-1, 1)", "`0`", "Medium inside (needs `transmit`): the phase function's mean cosine (Henyey-Greenstein; 0 isotropic, > 0 forward)."},
+    {"media_density", "texture", "none", "Medium inside (needs `transmit`): scales the three above by the texture's value (mean channel, clamped to [0, 1]) at each world point."},
 };
 
 // The properties every light takes, in the order the builder has always listed them (which

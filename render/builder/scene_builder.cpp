@@ -261,6 +261,12 @@ void SceneBuilder::settings(ParamSet& ps) {
                        fmt::format("unknown output_gamma '{}' (expected srgb or linear)", name));
     s.output_linear = name == "linear";
   }
+  if (MediumId id = medium(ps); id != kNoId) s.medium = id;
+  if (ps.has("media_samples")) {
+    const int n = ps.integer("media_samples", s.media_samples);
+    require(ps, "media_samples", n >= 1 && n <= 4096, "a whole number from 1 to 4096", n);
+    s.media_samples = n;
+  }
   s.clamp = ps.number("clamp", s.clamp);
   require(ps, "clamp", s.clamp >= 0 && std::isfinite(s.clamp), ">= 0 (0: no clamping)", s.clamp);
   s.loc = ps.loc();
@@ -533,9 +539,46 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
   m.ior_relative = ps.boolean("ior_relative", m.ior_relative);
   m.fresnel = ps.boolean("fresnel", m.fresnel);
   m.roughness = non_negative(ps, "roughness", ps.number("roughness", m.roughness));
+  m.medium = medium(ps);
+  const bool lets_light_in = m.transmit_texture != kNoId || m.transmit.r > 0 || m.transmit.g > 0 || m.transmit.b > 0;
+  if (m.medium != kNoId && !lets_light_in)
+    scene_.warnings.push_back({scene_.media[m.medium].loc,
+                               "this material's medium is never seen: no light enters an object whose material has "
+                               "no 'transmit' (rgb(1) with ior = 1 and diffuse = 0 makes a clear container)"});
   ps.check_unused(kMaterialNames);
   scene_.materials.push_back(std::move(m));
   return static_cast<MaterialId>(scene_.materials.size() - 1);
+}
+
+MediumId SceneBuilder::medium(ParamSet& ps) {
+  static constexpr std::string_view kNames[] = {"media_absorption", "media_scattering", "media_emission",
+                                                "media_eccentricity", "media_density"};
+  bool any = false;
+  for (std::string_view n : kNames) any = any || ps.has(n);
+  if (!any) return kNoId;
+  MediumDesc d;
+  d.loc = ps.loc();
+  for (std::string_view n : kNames)
+    if (ps.has(n)) {
+      d.loc = loc_of(ps, n);  // the first media property: where a warning about the medium points
+      break;
+    }
+  d.absorption = ps.color("media_absorption", d.absorption);
+  non_negative_color(ps, "media_absorption", d.absorption);
+  d.scattering = ps.color("media_scattering", d.scattering);
+  non_negative_color(ps, "media_scattering", d.scattering);
+  d.emission = ps.color("media_emission", d.emission);
+  non_negative_color(ps, "media_emission", d.emission);
+  d.eccentricity = ps.number("media_eccentricity", d.eccentricity);
+  require(ps, "media_eccentricity", d.eccentricity > -1.0 && d.eccentricity < 1.0,
+          "between -1 and 1 (0: isotropic, 1 would be a beam)", d.eccentricity);
+  if (const TextureRef* t = reference<TextureRef>(ps, "media_density", ps.kind(), "texture")) d.density = t->id;
+  auto finite = [](const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); };
+  if (!finite(d.absorption)) require(ps, "media_absorption", false, "finite", d.absorption.r);
+  if (!finite(d.scattering)) require(ps, "media_scattering", false, "finite", d.scattering.r);
+  if (!finite(d.emission)) require(ps, "media_emission", false, "finite", d.emission.r);
+  scene_.media.push_back(d);
+  return static_cast<MediumId>(scene_.media.size() - 1);
 }
 
 }  // namespace rts::render

@@ -177,4 +177,19 @@ inline constexpr double kRectangleCosine = 1e-9;
 // of its value to rounding.
 inline constexpr double kFogLevelRay = 1e-9;
 
+// Media: tentative collisions one free-flight walk through a heterogeneous medium may take
+// (about majorant x length of them are expected). A ray that would take more, through a thick
+// medium's empty regions or to infinity through a patterned atmosphere, ends there (its light
+// is lost: biased, and only beyond what any scene resolves).
+inline constexpr int kMaxMediumCollisions = 100000;
+
+// Media: surfaces that only let light through (pass-through containers of media) one ray may
+// cross before it is ended, like kMaxShadowSurfaces for glass on shadow rays.
+inline constexpr int kMaxPassThrough = 64;
+
+// Media in the Whitted integrator: an infinite ray segment through a heterogeneous medium is
+// marched over the length whose optical depth at the majorant is this (e^-20 ~ 2e-9 of the
+// light would be left at density 1); beyond it the medium is taken as empty.
+inline constexpr double kMediaMarchDepth = 20.0;
+
 }  // namespace rts::render::tol

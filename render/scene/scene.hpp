@@ -41,6 +41,7 @@ struct Color {
 
 using TextureId = uint32_t;
 using MaterialId = uint32_t;
+using MediumId = uint32_t;
 using NodeId = uint32_t;
 using MeshId = uint32_t;
 inline constexpr uint32_t kNoId = std::numeric_limits<uint32_t>::max();
@@ -116,6 +117,22 @@ struct MaterialDesc {
   bool ior_relative = false;   // `ior` is the ratio to the surrounding medium instead
   bool fresnel = false;        // Schlick's approximation scales reflect/transmit
   double roughness = 0.0;      // > 0: glossy (blurred) reflection, sampled
+  MediumId medium = kNoId;     // what fills the inside (render/shade/medium.hpp), or none
+  SourceRef loc;
+};
+
+// A participating medium (POV-Ray's `media`): per unit length it absorbs `absorption`,
+// scatters `scattering` (extinction = absorption + scattering) and gives off `emission`, each
+// per channel and each times the density (1, or `density`'s value clamped to [0, 1] at each
+// world point). Scattered light leaves by the Henyey-Greenstein phase function with mean cosine
+// `eccentricity` (0: isotropic; > 0: forward). A material's medium fills its object's inside;
+// settings' fills the space outside every object that has a medium or is glass.
+struct MediumDesc {
+  Color absorption{0.0};
+  Color scattering{0.0};
+  Color emission{0.0};
+  double eccentricity = 0.0;
+  TextureId density = kNoId;
   SourceRef loc;
 };
 
@@ -343,6 +360,10 @@ struct Settings {
   Color fog_color{0.0};
   double fog_offset = 0.0;
   double fog_altitude = 0.0;
+  // The medium around the objects (settings' media_* properties), or none; media_samples is
+  // the Whitted integrator's march: scattering points per ray segment in a medium.
+  MediumId medium = kNoId;
+  int media_samples = 16;
   uint64_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;  // how pixel samples are placed
   // An animation's frame count: `rts render` without --frames renders frames 0..frames-1
@@ -400,6 +421,7 @@ struct SceneDesc {
 
   std::vector<TextureDesc> textures;
   std::vector<MaterialDesc> materials;
+  std::vector<MediumDesc> media;
   std::vector<std::shared_ptr<const MeshData>> meshes;
   std::vector<ShapeDesc> shapes;
   std::vector<LightDesc> lights;

@@ -184,6 +184,7 @@ void SceneDesc::dump(std::ostream& out) const {
   if (s.fog_distance > 0)
     out << fmt::format(" fog distance {} color {} offset {} altitude {}", num(s.fog_distance), col(s.fog_color),
                        num(s.fog_offset), num(s.fog_altitude));
+  if (s.medium != kNoId) out << fmt::format(" medium {} media_samples {}", s.medium, s.media_samples);
   out << '\n';
   const CameraDesc& c = camera;
   out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}{}{}\n",
@@ -235,6 +236,15 @@ void SceneDesc::dump(std::ostream& out) const {
       if (tex != kNoId) extra += fmt::format(" {} texture {}", name, tex);
     if (m.bump != kNoId) extra += fmt::format(" bump_scale {}", num(m.bump_scale));
     if (!extra.empty()) out << "    maps" << extra << '\n';
+    if (m.medium != kNoId) out << fmt::format("    medium {}\n", m.medium);
+  }
+  // Printed only when there are any, so the dumps of scenes without media stay as they were.
+  if (!media.empty()) out << fmt::format("media {}\n", media.size());
+  for (std::size_t i = 0; i < media.size(); ++i) {
+    const MediumDesc& d = media[i];
+    out << fmt::format("  medium {}: absorption {} scattering {} emission {} eccentricity {} density {}{}\n", i,
+                       col(d.absorption), col(d.scattering), col(d.emission), num(d.eccentricity), id(d.density),
+                       where(d.loc));
   }
   out << fmt::format("meshes {}\n", meshes.size());
   for (std::size_t i = 0; i < meshes.size(); ++i) {

@@ -135,6 +135,12 @@ constexpr FeatureRule kRules[] = {
        const TextureId env = p.scene.settings.environment;
        return env < p.scene.textures.size() && p.scene.textures[env].kind == TextureKind::SkySphere;
      }},
+    // A medium light can reach: around the objects, or inside a placed object that lets light
+    // in (a medium behind an opaque surface is never seen, and costs nothing).
+    {Feature::Media, "media", Scope::Shape,
+     [](const FeatureProbe& p) {
+       return p.scene.settings.medium != kNoId || (p.material->medium != kNoId && transmits(*p.material));
+     }},
 };
 
 constexpr bool rules_in_feature_order() {
@@ -234,9 +240,14 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
 
 std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
   std::vector<bool> used(scene.textures.size(), false);
+  auto use_medium = [&](MediumId m) {
+    if (m < scene.media.size() && scene.media[m].density < used.size()) used[scene.media[m].density] = true;
+  };
   auto use = [&](const ShapeDesc&, MaterialId id) {
-    if (id < scene.materials.size())
+    if (id < scene.materials.size()) {
       for_each_texture(scene.materials[id], [&](TextureId t) { if (t < used.size()) used[t] = true; });
+      use_medium(scene.materials[id].medium);
+    }
   };
   for (std::size_t i = 0; i < flat.shapes.size(); ++i) use(scene.shapes[flat.shapes[i].shape], flat.material(scene, i));
   for_each_instanced_group(flat, [&](uint32_t g) {
@@ -244,6 +255,7 @@ std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
   });
   for (const FlatCsg& fc : flat.csgs) for_each_csg_leaf(scene, fc.csg, use, fc.inherited);
   if (scene.settings.environment < used.size()) used[scene.settings.environment] = true;
+  use_medium(scene.settings.medium);
   return used;
 }
 

@@ -34,6 +34,7 @@ enum class Feature : uint8_t {
   // atmosphere
   Fog,
   SkySphere,   // the environment is a sky_sphere (layered patterns on the direction)
+  Media,       // a participating medium: in a transmissive material, or around the objects
   Count
 };
 

@@ -47,18 +47,28 @@ uint32_t sampler_values(const CompiledLight& l) {
 Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lights,
                        const std::vector<MaterialDesc>& materials,
                        const std::vector<CompiledTexture>& textures, const Settings& settings,
-                       int max_depth, unsigned mask)
+                       int max_depth, unsigned mask, const std::vector<CompiledMedium>* media)
     : world_(world), materials_(materials), textures_(textures),
       background_(to_rgb(settings.background)), ambient_light_(to_rgb(settings.ambient_light)),
       max_depth_(max_depth) {
   // Shadow rays through glass whose `transmit` is a texture need the hit point, which the
   // specialised one-pass crossing test does not keep: such scenes take the generic path.
   bool textured_transmit = false;
+  static const std::vector<CompiledMedium> kNoMedia;
+  media_ = media ? media : &kNoMedia;
+  atmosphere_ = settings.medium < media_->size() ? settings.medium : kNoId;
+  media_samples_ = std::max(1, settings.media_samples);
+  media_on_ = atmosphere_ != kNoId;
   for (std::size_t i = 0; i < world.instance_count(); ++i) {
     MaterialId id = world.instance(i).material;
-    if (id < materials.size() && materials[id].transmit_texture != kNoId) textured_transmit = true;
+    if (id >= materials.size()) continue;
+    if (materials[id].transmit_texture != kNoId) textured_transmit = true;
+    if (materials[id].medium < media_->size() && transmits(materials[id])) media_on_ = true;
+    if (passes_through(materials[id])) has_pass_through_ = true;
   }
-  bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit;
+  // Media scenes take the generic path: shadow rays walk the surfaces one by one to know which
+  // medium each stretch is in.
+  bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_;
   uint32_t skipped = 0;
   for (const CompiledLight& l : lights) {
     // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
@@ -161,7 +171,8 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
 }
 
 template <unsigned F>
-Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const {
+Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, const MediumStack& media,
+                                     Path& path) const {
   ++path.counters.shadow;
   Ray ray{origin, ls.direction};
   double end = shadow_end(ls);
@@ -188,6 +199,7 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   // Any opaque occluder blocks the light whatever else lies on the segment: test those first
   // with an early-exit traversal.
   if (world_.occluded(ray, Interval(0.0, end), /*opaque_only=*/true)) return Rgb(0.0);
+  if (media_on_) return media_shadow(ray, end, media);
   if (!world_.has_transmissive()) return Rgb(1.0);
   // Only transmissive surfaces remain: multiply through each one up to the light, restarting
   // just beyond each surface (offset by its own error bound, like any spawned ray).
@@ -209,7 +221,7 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
 template <unsigned F>
 Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo,
                              const Vec3& n, const Vec3& shadow_origin, const Vec3& view,
-                             Path& path) const {
+                             const MediumStack& media, Path& path) const {
   Sampler& sampler = path.sampler;
   Rgb sum(0.0);
   // Without kRandom no light is an area light and nothing later draws from the sampler: one
@@ -264,7 +276,7 @@ Rgb Integrator::direct_light(const WorldHit& hit, const MaterialDesc& m, const R
           if (world_.occluded_by(candidates, Ray{shadow_origin, ls.direction}, Interval(0.0, shadow_end(ls))))
             transmittance = Rgb(0.0);
         } else if (light.shadows) {
-          transmittance = shadow_transmittance<F>(shadow_origin, ls, path);
+          transmittance = shadow_transmittance<F>(shadow_origin, ls, media, path);
         }
         sum += shade * ls.radiance * transmittance;
       }
@@ -297,18 +309,53 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   // shade is never re-entered and World::intersect writes every field of a hit it returns
   // (tests/render/test_instancing.cpp checks it); a miss reads nothing from it.
   thread_local WorldHit hit;
-  if (!world_.intersect(ray, Interval::positive(), hit)) {
-    if (!fog_on_) return background(ray.direction);
+  const bool found = world_.intersect(ray, Interval::positive(), hit);
+  // A medium on the way: what it adds along the segment, and what it lets through (with no
+  // media, one test and the results bit for bit).
+  Rgb medium_in(0.0), medium_t(1.0);
+  const CompiledMedium* medium = media_on_ ? medium_of(pr.media) : nullptr;
+  if (medium) {
+    const double len = glm::length(ray.direction);
+    medium_in = medium_segment(*medium, ray.origin, ray.direction / len,
+                               found ? hit.t * len : std::numeric_limits<double>::infinity(), pr.media, path,
+                               medium_t);
+  }
+  auto through_medium = [&](const Rgb& c) { return medium ? medium_in + medium_t * c : c; };
+  if (!found) {
+    const Rgb c = through_medium(background(ray.direction));
+    if (!fog_on_) return c;
     double t = fog_.transmittance(ray.origin, ray.direction, std::numeric_limits<double>::infinity());
-    return t * background(ray.direction) + (1.0 - t) * fog_color_;
+    return t * c + (1.0 - t) * fog_color_;
   }
   // What the fog between the ray's origin and the hit leaves of the light from the hit (1: no
   // fog); the rest of the segment's light is the fog's colour.
   const double fog_t = fog_on_ ? fog_.transmittance(ray.origin, ray.direction, hit.t) : 1.0;
-  auto fogged = [&](const Rgb& c) { return fog_on_ ? fog_t * c + (1.0 - fog_t) * fog_color_ : c; };
+  auto fogged = [&](const Rgb& c) {
+    const Rgb seen = through_medium(c);
+    return fog_on_ ? fog_t * seen + (1.0 - fog_t) * fog_color_ : seen;
+  };
   MaterialScratch scratch;
   const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
   Vec3 incident = glm::normalize(ray.direction);
+  if (has_pass_through_ && passes_through(m) &&
+      [&] {
+        const Interface f = interface(pr.media, hit.medium, m, glm::dot(hit.normal, incident) < 0.0);
+        return f.n_from == f.n_to;
+      }()) {
+    // Not there for the light: the ray goes on from the far side, in the medium beyond.
+    if (pr.passes < tol::kMaxPassThrough) {
+      const bool into = glm::dot(hit.normal, incident) < 0.0;
+      const Vec3 inward = into ? -hit.normal : hit.normal;
+      PendingRay next{Ray{offset_ray_origin(hit.point, inward, incident, hit.error), ray.direction},
+                      saturate(pr.weight * fog_t * medium_t), pr.depth, pr.media, pr.passes + 1};
+      if (into)
+        next.media.enter(hit.medium, pr.media.current(), m.medium);
+      else
+        next.media.leave(hit.medium);
+      pending.push_back(next);
+    }
+    return fogged(Rgb(0.0));
+  }
 
   // The geometric normal decides the side: face it towards the incoming ray (leaving a solid
   // = hitting its back side). The shading normal is then put into the same hemisphere as the
@@ -324,14 +371,15 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   Rgb ambient = environment_ambient_ ? ambient_light_ * background(n) : ambient_light_;
   Rgb color = emitted_and_ambient(m, base, ambient);
   Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, hit.error);
-  color += direct_light<F>(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, path);
+  color += direct_light<F>(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, pr.media,
+                           path);
   color = saturate(color);
 
   if constexpr (!(F & trace_flags::kSecondary)) return fogged(color);  // nothing reflects or transmits
   if (pr.depth >= max_depth_) return fogged(color);
   // The light the secondary rays bring back crosses the same fog (x * 1.0 is exact: without
   // fog the weights are unchanged).
-  const Rgb weight = pr.weight * fog_t;
+  const Rgb weight = pr.weight * fog_t * medium_t;
 
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Interface f;
@@ -345,10 +393,10 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   if (max_channel(kt * weight) > tol::kMinPathWeight) {
     ++path.counters.refraction;
     Ray r{offset_ray_origin(hit.point, ng, refracted, hit.error), refracted};
-    pending.push_back(PendingRay{r, saturate(weight * kt), pr.depth + 1, pr.media});
+    pending.push_back(PendingRay{r, saturate(weight * kt), pr.depth + 1, pr.media, pr.passes});
     // The refracted ray is inside the object now, or has left it.
     if (entering)
-      pending.back().media.enter(hit.medium, f.n_to);
+      pending.back().media.enter(hit.medium, f.n_to, m.medium);
     else
       pending.back().media.leave(hit.medium);
   }
@@ -356,9 +404,114 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
     Vec3 dir = reflected_direction(m, incident + 2.0 * cos_i * n, ng, path.sampler);
     ++path.counters.reflection;
     Ray r{offset_ray_origin(hit.point, ng, dir, hit.error), dir};
-    pending.push_back(PendingRay{r, saturate(weight * kr), pr.depth + 1, pr.media});
+    pending.push_back(PendingRay{r, saturate(weight * kr), pr.depth + 1, pr.media, pr.passes});
   }
   return fogged(color);
+}
+
+// ---- media ----------------------------------------------------------------------------------
+
+Rgb Integrator::in_scattered(const CompiledMedium& medium, const Vec3& p, const Vec3& dir, const MediumStack& media,
+                             Path& path) const {
+  // One light sample per light at each marched point (an area light's centre, or a random
+  // point of it when the render samples): the march's points together cover the light.
+  Rgb sum(0.0);
+  for (const CompiledLight& light : lights_) {
+    const bool area = light.kind == LightKind::Area;
+    const glm::dvec2 on_light = area && media_jitter_ ? path.sampler.next2() : glm::dvec2(0.5);
+    LightSample ls = sample_light(light, p, on_light);
+    if (is_black(ls.radiance)) continue;
+    if (area) ls.radiance *= static_cast<double>(light.samples);  // one sample stands for all
+    Rgb tr(1.0);
+    if (light.shadows) {
+      ++path.counters.shadow;
+      const double end = shadow_end(ls);
+      Ray ray{p, ls.direction};
+      if (world_.occluded(ray, Interval(0.0, end), /*opaque_only=*/true)) continue;
+      tr = media_shadow(ray, end, media);
+    }
+    sum += hg_phase(glm::dot(dir, ls.direction), medium.eccentricity()) * ls.radiance * tr;
+  }
+  return sum;
+}
+
+Rgb Integrator::medium_segment(const CompiledMedium& medium, const Vec3& origin, const Vec3& dir, double length,
+                               const MediumStack& media, Path& path, Rgb& transmittance) const {
+  const int n = media_samples_;
+  const bool scatter = medium.scatters() && !lights_.empty();
+  // A render that samples anyway jitters the marched points (one value per segment); a
+  // deterministic one takes the midpoints of the strata, as POV-Ray's media do.
+  const double jitter = media_jitter_ && (scatter || !medium.homogeneous()) ? path.sampler.next() : 0.5;
+  Rgb in(0.0);
+  if (medium.homogeneous()) {
+    transmittance = medium.transmittance(length);
+    if (medium.emits()) in += medium.emitted(length);
+    if (!scatter) return in;
+    // Single scattering: the points are placed by the transmittance of the channel that
+    // fades slowest (exponential spacing: an infinite segment is covered too), each channel
+    // weighed by its own transmittance against it.
+    double sig = 0.0;
+    for (int c = 0; c < 3; ++c)
+      if (medium.sigma_t()[c] > 0.0 && (sig == 0.0 || medium.sigma_t()[c] < sig)) sig = medium.sigma_t()[c];
+    if (!(sig > 0.0)) return in;  // unreachable: sigma_t >= sigma_s > 0
+    const double span = -std::expm1(-sig * length);  // 1 for an infinite segment
+    for (int i = 0; i < n; ++i) {
+      const double u = (i + jitter) / n;
+      const double s = -std::log1p(-u * span) / sig;
+      Rgb w;
+      for (int c = 0; c < 3; ++c) w[c] = std::exp(-(medium.sigma_t()[c] - sig) * s) * span / (sig * n);
+      in += w * medium.sigma_s() * in_scattered(medium, origin + s * dir, dir, media, path);
+    }
+    return in;
+  }
+  // Heterogeneous: the midpoint rule over [0, reach], the optical depth summed on the way.
+  const double majorant = medium.majorant();
+  const double reach =
+      majorant > 0.0 ? std::min(length, tol::kMediaMarchDepth / majorant) : (std::isinf(length) ? 0.0 : length);
+  const double ds = reach / n;
+  double depth = 0.0;  // density times length so far
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = origin + (i + jitter) * ds * dir;
+    const double rho = medium.density(p);
+    if (rho > 0.0) {
+      Rgb tr;
+      for (int c = 0; c < 3; ++c) tr[c] = std::exp(-medium.sigma_t()[c] * (depth + rho * jitter * ds));
+      Rgb source = medium.emission();
+      if (scatter) source += medium.sigma_s() * in_scattered(medium, p, dir, media, path);
+      in += tr * (rho * ds) * source;
+    }
+    depth += rho * ds;
+  }
+  for (int c = 0; c < 3; ++c) transmittance[c] = std::exp(-medium.sigma_t()[c] * depth);
+  return in;
+}
+
+Rgb Integrator::media_shadow(Ray ray, double end, const MediumStack& media) const {
+  // Opaque blockers are already excluded: walk the glass and pass-through surfaces in order,
+  // each stretch between them in the medium the stack says, filtered by each surface.
+  MediumStack stack = media;
+  const double len = glm::length(ray.direction);
+  const Vec3 dir = ray.direction / len;
+  Rgb t(1.0);
+  for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
+    WorldHit hit;
+    const bool found = world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true);
+    if (const CompiledMedium* medium = medium_of(stack))
+      t *= medium->transmittance_marched(ray.origin, dir, (found ? hit.t : end) * len, media_samples_);
+    if (!found) return t;
+    MaterialScratch scratch;
+    const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
+    t *= glm::clamp(to_rgb(m.transmit), 0.0, 1.0);
+    if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
+    if (glm::dot(hit.normal, dir) < 0.0)
+      stack.enter(hit.medium, 1.0, m.medium);
+    else
+      stack.leave(hit.medium);
+    Vec3 next = offset_ray_origin(hit.point, hit.normal, dir, hit.error);
+    end -= glm::dot(next - ray.origin, ray.direction) / (len * len);
+    ray.origin = next;
+  }
+  return Rgb(0.0);
 }
 
 }  // namespace rts::render

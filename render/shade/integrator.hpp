@@ -9,6 +9,7 @@
 #include "render/shade/fog.hpp"
 #include "render/shade/lights.hpp"
 #include "render/shade/material.hpp"
+#include "render/shade/medium.hpp"
 #include "render/shade/medium_stack.hpp"
 #include "render/sample/sampler.hpp"
 #include "render/image/stats.hpp"
@@ -39,7 +40,8 @@ class Integrator {
   // `mask`: trace_flags::for_features(the scene's features), or trace_flags::kGeneric | trace_flags::kAll.
   Integrator(const World& world, const std::vector<CompiledLight>& lights,
              const std::vector<MaterialDesc>& materials, const std::vector<CompiledTexture>& textures,
-             const Settings& settings, int max_depth, unsigned mask = trace_flags::kGeneric | trace_flags::kAll);
+             const Settings& settings, int max_depth, unsigned mask = trace_flags::kGeneric | trace_flags::kAll,
+             const std::vector<CompiledMedium>* media = nullptr);
 
   // Radiance arriving along a camera ray.
   Rgb trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const;
@@ -48,6 +50,10 @@ class Integrator {
   // Whitted tree, through the same one indirect call, so Whitted scenes pay nothing for it.
   // The AOVs still come from first_hit.
   void use_path_tracer(const path::PathIntegrator* tracer);
+  // Media: jitter the marched points (one sampler value per segment) and area lights' points
+  // on them, for renders of several samples per pixel; else midpoints and centres (the same
+  // image every time at one sample).
+  void jitter_media(bool on) { media_jitter_ = on; }
 
  private:
   // What one camera sample's path carries along.
@@ -62,6 +68,7 @@ class Integrator {
     Rgb weight;
     int depth;
     MediumStack media;
+    int passes = 0;  // pass-through surfaces crossed on the way (tol::kMaxPassThrough)
   };
   // The indices on the two sides of a transmissive surface, from the side the ray comes from.
   struct Interface {
@@ -81,9 +88,23 @@ class Integrator {
   Rgb shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const;
   template <unsigned F>
   Rgb direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo, const Vec3& n,
-                   const Vec3& shadow_origin, const Vec3& view, Path& path) const;
+                   const Vec3& shadow_origin, const Vec3& view, const MediumStack& media, Path& path) const;
   template <unsigned F>
-  Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, Path& path) const;
+  Rgb shadow_transmittance(const Vec3& origin, const LightSample& ls, const MediumStack& media, Path& path) const;
+  // Media (only scenes with media, which take the generic path): what a ray segment of
+  // `length` from `origin` along unit `dir` inside `medium` adds (emission, and single
+  // scattering of the lights marched at settings.media_samples points), and its transmittance.
+  Rgb medium_segment(const CompiledMedium& medium, const Vec3& origin, const Vec3& dir, double length,
+                     const MediumStack& media, Path& path, Rgb& transmittance) const;
+  // The lights' light scattered at `p` inside `medium` towards -dir.
+  Rgb in_scattered(const CompiledMedium& medium, const Vec3& p, const Vec3& dir, const MediumStack& media,
+                   Path& path) const;
+  // The medium transmittance along a shadow ray through glass and pass-through surfaces.
+  Rgb media_shadow(Ray ray, double end, const MediumStack& media) const;
+  const CompiledMedium* medium_of(const MediumStack& media) const {
+    const MediumId id = media.medium(atmosphere_);
+    return id < media_->size() ? &(*media_)[id] : nullptr;
+  }
   const MaterialDesc& material(uint32_t instance) const;
   template <unsigned F = trace_flags::kAll>
   Rgb albedo(const MaterialDesc& m, const WorldHit& hit) const;
@@ -108,6 +129,14 @@ class Integrator {
   bool fog_on_ = false;
   Fog fog_;
   Rgb fog_color_{0.0};
+  // Media: off (one test per ray) unless a placed material or the settings have one.
+  const std::vector<CompiledMedium>* media_ = nullptr;
+  bool media_on_ = false;
+  MediumId atmosphere_ = kNoId;
+  int media_samples_ = 16;
+  bool media_jitter_ = false;
+  // Some placed material lets light through unchanged (passes_through): checked per hit only then.
+  bool has_pass_through_ = false;
   int max_depth_;
   const path::PathIntegrator* path_tracer_ = nullptr;
 };

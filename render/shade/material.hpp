@@ -45,6 +45,19 @@ inline double schlick(double cos_theta, double f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
+// A surface that may only let light through, unchanged: transmit 1 in every channel, ior 1,
+// and nothing reflected, emitted or diffused (the container of a medium, POV-Ray's `hollow`
+// object with a clear pigment). Where the indices on its two sides are also equal (always for
+// ior_relative; for an absolute ior 1, when the medium around is air: an air bubble in glass
+// still refracts), both integrators cross it as if it were not there, keeping the medium stack:
+// its ambient and fresnel have nothing to act on.
+inline bool passes_through(const MaterialDesc& m) {
+  return m.transmit.r == 1.0 && m.transmit.g == 1.0 && m.transmit.b == 1.0 && m.transmit_texture == kNoId &&
+         m.ior == 1.0 && m.diffuse == 0.0 && m.diffuse_texture == kNoId && m.specular == 0.0 &&
+         m.specular_texture == kNoId && is_black(to_rgb(m.reflect)) && m.reflect_texture == kNoId &&
+         is_black(to_rgb(m.emission)) && m.emission_texture == kNoId && m.bump == kNoId && m.normal_map == kNoId;
+}
+
 // ---- Whitted (Phong) evaluation ------------------------------------------------------------
 
 // What the surface sends back without any light: emission + ambient * base * ambient light.

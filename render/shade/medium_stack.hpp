@@ -2,12 +2,15 @@
 // the transmissive instances the path has entered, each with its absolute index of
 // refraction, so a surface refracts with the ratio of the media on its two sides (water 1.33
 // inside glass 1.5 bends by 1.5/1.33, not by 1/1.33). Outside everything is vacuum/air, 1.
+// Each entry also names the participating medium that fills the inside (render/shade/
+// medium.hpp), if any: the innermost entry's is the one the path travels through.
 #pragma once
 
 #include <array>
 #include <cstdint>
 
 #include "render/geometry/tolerances.hpp"
+#include "render/scene/scene.hpp"
 
 namespace rts::render {
 
@@ -15,6 +18,10 @@ class MediumStack {
  public:
   // The index of the medium the path is in now.
   double current() const { return size_ > 0 ? entries_[size_ - 1].ior : 1.0; }
+
+  // The participating medium the path is in: the innermost entry's (kNoId: a clear inside),
+  // or `outside` (the scene's, or kNoId) when it is inside nothing.
+  MediumId medium(MediumId outside) const { return size_ > 0 ? entries_[size_ - 1].medium : outside; }
 
   // The absolute index of `instance` if the path is inside it.
   bool find(uint32_t instance, double& ior) const {
@@ -40,8 +47,8 @@ class MediumStack {
 
   // Deeper nesting than the stack holds is not tracked: the path keeps the ratio of the
   // innermost media it does track (documented in docs/rendering.md).
-  void enter(uint32_t instance, double ior) {
-    if (size_ < tol::kMaxNestedMedia) entries_[size_++] = Entry{instance, static_cast<float>(ior)};
+  void enter(uint32_t instance, double ior, MediumId medium = kNoId) {
+    if (size_ < tol::kMaxNestedMedia) entries_[size_++] = Entry{instance, static_cast<float>(ior), medium};
   }
 
   void leave(uint32_t instance) {
@@ -61,6 +68,7 @@ class MediumStack {
   struct Entry {
     uint32_t instance;
     float ior;
+    MediumId medium;
   };
   std::array<Entry, tol::kMaxNestedMedia> entries_{};
   int size_ = 0;

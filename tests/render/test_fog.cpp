@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "render/renderer.hpp"
 #include "render/shade/fog.hpp"
 #include "scene_fixture.hpp"
 #include "tracer.hpp"
@@ -94,4 +95,56 @@ TEST_CASE("reflected light crosses the fog of both segments", "[fog]") {
   c = Tracer(s).trace(Ray{Vec3(0), Vec3(0, 0, 1)});
   const double t1 = std::exp(-2.0 / 3.5), t2 = std::exp(-5.0 / 3.5);
   CHECK(c.r == Approx(t1 * (t2 * 1.0 + (1 - t2) * 0.5) + (1 - t1) * 0.5));
+}
+
+TEST_CASE("path mode: fog blends every path segment, and dims what shadow rays bring", "[fog]") {
+  // The same closed forms as the Whitted integrator's, through the path tracer: an emissive
+  // wall 5 units away seen through fog of distance 2.5 (no lights: nothing is random).
+  auto render_centre = [](SceneDesc s) {
+    s.settings.width = s.settings.height = 4;
+    s.settings.integrator = IntegratorKind::Path;
+    s.has_camera = true;
+    s.camera.projection = Projection::Orthographic;
+    s.camera.view_width = 0.1;
+    s.camera.position = Vec3(0);
+    s.camera.look_at = Vec3(0, 0, 1);
+    RenderOptions o;
+    o.threads = 1;
+    const RenderResult r = render(s, o);
+    return Rgb(r.color.rgb[0], r.color.rgb[1], r.color.rgb[2]);
+  };
+  SceneDesc s;
+  place(s, add_shape(s, Plane{Vec3(0, 0, -1), -5.0}, add_material(s, emissive(Color(1.0, 0.5, 0.25)))));
+  s.settings.fog_distance = 2.5;
+  s.settings.fog_color = Color(0.5, 0.6, 0.7);
+  const double t = std::exp(-5.0 / 2.5);
+  const Rgb c = render_centre(s);
+  CHECK(c.r == Approx(t * 1.0 + (1 - t) * 0.5).epsilon(1e-6));
+  CHECK(c.g == Approx(t * 0.5 + (1 - t) * 0.6).epsilon(1e-6));
+  CHECK(c.b == Approx(t * 0.25 + (1 - t) * 0.7).epsilon(1e-6));
+
+  // A mirror 2 away and the wall 3 behind the camera: both segments, 7 in all.
+  SceneDesc m;
+  MaterialDesc mirror;
+  mirror.color = Color(0.0);
+  mirror.diffuse = 0.0;
+  mirror.reflect = Color(1.0);
+  place(m, add_shape(m, Plane{Vec3(0, 0, -1), -2.0}, add_material(m, mirror)));
+  place(m, add_shape(m, Plane{Vec3(0, 0, 1), -3.0}, add_material(m, emissive(Color(1.0)))));
+  m.settings.fog_distance = 3.5;
+  CHECK(render_centre(m).r == Approx(std::exp(-7.0 / 3.5)).epsilon(1e-6));
+
+  // A directional light through constant fog comes from infinitely far: nothing is left of it.
+  SceneDesc lit;
+  MaterialDesc white;
+  white.color = Color(1.0);
+  white.diffuse = 1.0;
+  place(lit, add_shape(lit, Plane{Vec3(0, 0, -1), -5.0}, add_material(lit, white)));
+  LightDesc sun;
+  sun.kind = LightKind::Directional;
+  sun.direction = Vec3(0, 0, 1);
+  place(lit, add_light(lit, sun));
+  CHECK(render_centre(lit).r > 0.1);
+  lit.settings.fog_distance = 100.0;
+  CHECK(render_centre(lit).r == 0.0);
 }

@@ -22,7 +22,7 @@ struct Tracer {
     const FeatureSet features = prepared.features(FeatureContext{scene.settings.samples, max_depth, false});
     integrator = std::make_unique<Integrator>(prepared.world(), prepared.lights(), scene.materials,
                                               prepared.textures(), scene.settings, max_depth,
-                                              prepared.integrator_flags(features));
+                                              prepared.integrator_flags(features), &prepared.media());
   }
   Tracer(const Tracer&) = delete;
   Tracer& operator=(const Tracer&) = delete;

@@ -8,14 +8,13 @@
 
 #include "render/geometry/tolerances.hpp"
 #include "render/shade/medium_stack.hpp"
+#include "render/shade/material.hpp"
 #include "render/shade/shading.hpp"
 
 namespace rts::render::path {
 namespace {
 
-Rgb to_rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
-double max_channel(const Rgb& c) { return std::max({c.x, c.y, c.z}); }
-bool is_black(const Rgb& c) { return !(max_channel(c) > 0.0); }
+// to_rgb, max_channel and is_black are material.hpp's.
 Rgb unit_clamp(const Rgb& c) { return glm::clamp(c, 0.0, 1.0); }
 bool finite(const Rgb& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
 
@@ -52,10 +51,17 @@ void interface(const MediumStack& media, uint32_t instance, const MaterialDesc& 
 }  // namespace
 
 PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const std::vector<CompiledLight>& lights,
-                               const std::vector<CompiledTexture>& textures, int max_depth,
-                               std::vector<Warning>& warnings)
+                               const std::vector<CompiledTexture>& textures, const std::vector<CompiledMedium>& media,
+                               int max_depth, std::vector<Warning>& warnings)
     : world_(world), materials_(scene.materials), textures_(textures),
-      lights_(world, scene, lights, textures), max_depth_(max_depth), clamp_(scene.settings.clamp) {
+      lights_(world, scene, lights, textures), max_depth_(max_depth), clamp_(scene.settings.clamp), media_(media) {
+  atmosphere_ = scene.settings.medium < media.size() ? scene.settings.medium : kNoId;
+  if (scene.settings.fog_distance > 0.0) {
+    fog_on_ = true;
+    fog_ = Fog{scene.settings.fog_distance, scene.settings.fog_offset, scene.settings.fog_altitude};
+    fog_color_ = to_rgb(scene.settings.fog_color);
+  }
+  has_media_ = atmosphere_ != kNoId;
   std::vector<bool> placed(scene.materials.size(), false);
   for (std::size_t i = 0; i < world.instance_count(); ++i)
     if (world.instance(i).material < placed.size()) placed[world.instance(i).material] = true;
@@ -63,7 +69,11 @@ PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const
   for (std::size_t id = 0; id < scene.materials.size(); ++id) {
     if (!placed[id]) continue;
     const MaterialDesc& m = scene.materials[id];
-    if (max_channel(to_rgb(m.transmit)) > 0.0 || m.transmit_texture != kNoId) has_transmission_ = true;
+    if (max_channel(to_rgb(m.transmit)) > 0.0 || m.transmit_texture != kNoId) {
+      has_transmission_ = true;
+      if (m.medium < media.size()) has_media_ = true;
+    }
+    if (passes_through(m)) has_pass_through_ = true;
     if (m.specular > 0.0 || m.roughness > 0.0) has_microfacets_ = true;
     double sum = reflected_fraction(m);
     if (sum > 1.0 + 1e-9) {
@@ -86,6 +96,9 @@ void PathIntegrator::describe(std::vector<std::string>& used, std::vector<std::s
   report(lights_.has_sky(), "sky_light");
   report(has_transmission_, "dielectric_medium_stack");
   report(has_microfacets_, "microfacet_lobes");
+  report(has_media_, "media");
+  report(fog_on_, "fog");
+  report(has_pass_through_, "pass_through_surfaces");
   report(max_depth_ >= kRouletteStart, "russian_roulette");
   report(clamp_ > 0.0, "clamp");
 }
@@ -107,6 +120,60 @@ Lobes PathIntegrator::lobes(const MaterialDesc& m, uint32_t material_id, const W
   return lb;
 }
 
+const MaterialDesc& PathIntegrator::material(uint32_t instance) const {
+  const uint32_t id = world_.instance(instance).material;
+  return id < materials_.size() ? materials_[id] : default_material_;
+}
+
+Rgb PathIntegrator::shadow(const Vec3& origin, const Vec3& dir, double end, const MediumStack& media,
+                           Sampler& sampler) const {
+  if (!has_media_ && !has_pass_through_) return world_.occluded(Ray{origin, dir}, Interval(0.0, end)) ? Rgb(0.0) : Rgb(1.0);
+  // One sampler value seeds the ratio tracking of every heterogeneous stretch on the way.
+  MediumRng rng(sampler.next());
+  MediumStack stack = media;
+  Ray ray{origin, dir};
+  Rgb t(1.0);
+  for (int i = 0; i <= tol::kMaxPassThrough; ++i) {
+    WorldHit hit;
+    const bool found = world_.intersect(ray, Interval(0.0, end), hit);
+    if (const CompiledMedium* medium = medium_of(stack))
+      t *= medium->transmittance(ray.origin, dir, found ? hit.t : end, rng);
+    if (!found) return t;
+    const MaterialDesc& m = material(hit.instance);
+    const bool into = glm::dot(hit.normal, dir) < 0.0;
+    double n_from = 1.0, n_to = 1.0;
+    if (passes_through(m)) interface(stack, hit.medium, m, into, n_from, n_to);
+    if (!passes_through(m) || n_from != n_to || !(max_channel(t) > 0.0)) return Rgb(0.0);
+    if (into)
+      stack.enter(hit.medium, n_to, m.medium);
+    else
+      stack.leave(hit.medium);
+    const Vec3 next = offset_ray_origin(hit.point, into ? -hit.normal : hit.normal, dir, hit.error);
+    end -= glm::dot(next - ray.origin, dir);
+    ray.origin = next;
+  }
+  return Rgb(0.0);
+}
+
+template <class Response, class Pdf>
+Rgb PathIntegrator::light_sample(const Vec3& point, const Vec3& ng, double error, const MediumStack& media, double u_pick,
+                                 glm::dvec2 u_light, Sampler& sampler, RayCounters& counters, Response&& response,
+                                 Pdf&& scatter_pdf) const {
+  LightSample ls;
+  if (!lights_.sample(point, u_pick, u_light, ls) || is_black(ls.radiance)) return Rgb(0.0);
+  const Rgb f = response(ls.wi);
+  if (is_black(f)) return Rgb(0.0);
+  ++counters.shadow;
+  const double end = std::isinf(ls.distance) ? Interval::kInfinity : ls.distance * (1.0 - tol::kShadowEndRelative);
+  const Vec3 origin = offset_ray_origin(point, ng, ls.wi, error);
+  Rgb tr = shadow(origin, ls.wi, end, media, sampler);
+  if (fog_on_) tr *= fog_.transmittance(origin, ls.wi, end);
+  if (is_black(tr)) return Rgb(0.0);
+  const double w = ls.delta ? 1.0 : power_heuristic(ls.pdf, scatter_pdf(ls.wi));
+  const Rgb c = f * tr * ls.radiance * (w / ls.pdf);
+  return finite(c) ? c : Rgb(0.0);
+}
+
 Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& counters) const {
   Rgb radiance(0.0), beta(1.0);
   // The product of the (n_from / n_to)^2 factors refraction put into beta: Russian roulette
@@ -115,13 +182,78 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
   double eta_scale = 1.0;
   Ray ray = camera_ray;
   bool specular = true;   // the last vertex was the camera or a delta lobe: no MIS for what it finds
-  double prev_pdf = 0.0;  // the BSDF density that chose the current ray (solid angle)
+  double prev_pdf = 0.0;  // the density that chose the current ray (solid angle): BSDF or phase
   Vec3 prev_point(0.0);
   MediumStack media;
+  int passes = 0;  // pass-through surfaces crossed (they are not bounces)
   for (int bounce = 0;; ++bounce) {
     Vec3 dir = glm::normalize(ray.direction);
     WorldHit hit;
-    if (!world_.intersect(ray, Interval::positive(), hit)) {
+    const bool found = world_.intersect(ray, Interval::positive(), hit);
+
+    // Fog over a segment of length t (in units of `d`): what it leaves of the light behind it,
+    // and its own colour for the rest.
+    auto fog_segment = [&](const Vec3& d, double t) {
+      const double tr = fog_.transmittance(ray.origin, d, t);
+      radiance += beta * ((1.0 - tr) * fog_color_);
+      beta *= tr;
+    };
+    bool fogged = false;
+    // A medium on the way: emission found, survival, or a scattering event inside it (the
+    // free flight draws from its own stream, seeded by one sampler value per segment).
+    if (has_media_) {
+      const double u_seed = sampler.next();
+      if (const CompiledMedium* medium = medium_of(media)) {
+        const double len = glm::length(ray.direction);
+        double t = 0.0;
+        MediumRng rng(u_seed);
+        const bool scattered = medium->free_flight(ray.origin, dir, found ? hit.t * len : Interval::kInfinity, rng,
+                                                   beta, radiance, t);
+        if (fog_on_ && scattered) {
+          fog_segment(dir, t);
+          fogged = true;
+        }
+        if (!finite(beta) || is_black(beta)) break;
+        if (scattered) {
+          if (bounce > max_depth_) break;
+          const Vec3 p = ray.origin + t * dir;
+          const double g = medium->eccentricity();
+          // The same sampler dimensions as a surface vertex: light pick, light point, (lobe
+          // choice: unused here), direction, roulette.
+          const double u_pick = !lights_.single() ? sampler.next() : (sampler.skip(1), 0.0);
+          const glm::dvec2 u_light = sampler.next2();
+          sampler.skip(1);
+          const glm::dvec2 u_dir = sampler.next2();
+          const bool roulette = bounce + 1 >= kRouletteStart;
+          const double u_roulette = roulette ? sampler.next() : (sampler.skip(1), 0.0);
+          if (!lights_.empty()) {
+            auto phase = [&](const Vec3& wi) { return Rgb(hg_phase(glm::dot(dir, wi), g)); };
+            auto phase_pdf = [&](const Vec3& wi) { return hg_phase(glm::dot(dir, wi), g); };
+            radiance += beta * light_sample(p, Vec3(0.0), 0.0, media, u_pick, u_light, sampler, counters, phase,
+                                            phase_pdf);
+          }
+          double pdf = 0.0;
+          const Vec3 wi = hg_sample(dir, g, u_dir, pdf);  // phase / pdf = 1: beta is unchanged
+          specular = false;
+          prev_pdf = pdf;
+          prev_point = p;
+          ray = Ray{p, wi};
+          ++counters.reflection;
+          if (roulette) {
+            const double q = std::min(1.0, max_channel(beta) / eta_scale);
+            if (u_roulette >= q) break;
+            beta /= q;
+          }
+          continue;
+        }
+      }
+    }
+
+    if (fog_on_ && !fogged) {
+      fog_segment(ray.direction, found ? hit.t : Interval::kInfinity);
+      if (is_black(beta)) break;
+    }
+    if (!found) {
       if (lights_.has_sky()) {
         double w = specular ? 1.0 : power_heuristic(prev_pdf, lights_.pdf_sky(dir));
         radiance += beta * lights_.sky(dir) * w;
@@ -130,6 +262,21 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
     }
     const uint32_t material_id = world_.instance(hit.instance).material;
     const MaterialDesc& base = material_id < materials_.size() ? materials_[material_id] : default_material_;
+    double pass_from = 0.0, pass_to = 1.0;
+    const bool into = glm::dot(hit.normal, dir) < 0.0;
+    if (has_pass_through_ && passes_through(base)) interface(media, hit.medium, base, into, pass_from, pass_to);
+    if (pass_from == pass_to) {
+      // Not a bounce: the ray goes on from the far side, into the medium beyond, with what
+      // chose it (MIS still weighs what it finds against the last real vertex).
+      if (++passes > tol::kMaxPassThrough) break;
+      if (into)
+        media.enter(hit.medium, pass_to, base.medium);
+      else
+        media.leave(hit.medium);
+      ray = Ray{offset_ray_origin(hit.point, into ? -hit.normal : hit.normal, dir, hit.error), dir};
+      --bounce;
+      continue;
+    }
     MaterialScratch scratch;
     const MaterialDesc& m = shading_material(base, world_, hit, textures_, scratch);
 
@@ -168,20 +315,15 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
     const double u_pick = nee && !lights_.single() ? sampler.next() : (sampler.skip(1), 0.0);
     const glm::dvec2 u_light = nee ? sampler.next2() : (sampler.skip(2), glm::dvec2(0.0));
     if (nee) {
-      LightSample ls;
-      if (lights_.sample(hit.point, u_pick, u_light, ls) && !is_black(ls.radiance)) {
-        Rgb f = bsdf.f(ls.wi);
-        if (!is_black(f)) {
-          ++counters.shadow;
-          Vec3 origin = offset_ray_origin(hit.point, ng, ls.wi, hit.error);
-          double end = std::isinf(ls.distance) ? Interval::kInfinity : ls.distance * (1.0 - tol::kShadowEndRelative);
-          if (!world_.occluded(Ray{origin, ls.wi}, Interval(0.0, end))) {
-            double w = ls.delta ? 1.0 : power_heuristic(ls.pdf, bsdf.pdf(ls.wi));
-            Rgb c = beta * f * ls.radiance * (bsdf.cos_theta(ls.wi) * w / ls.pdf);
-            if (finite(c)) radiance += c;
-          }
-        }
-      }
+      auto response = [&](const Vec3& wi) {
+        const Rgb f = bsdf.f(wi);
+        return is_black(f) ? f : f * bsdf.cos_theta(wi);
+      };
+      auto bsdf_pdf = [&](const Vec3& wi) { return bsdf.pdf(wi); };
+      // A shadow ray towards the back of a transmissive surface is blocked by it (its BSDF
+      // lobe there is a delta), so the media it starts in are the ones on the ray's side.
+      radiance += beta * light_sample(hit.point, ng, hit.error, media, u_pick, u_light, sampler, counters,
+                                      response, bsdf_pdf);
     }
 
     // Continue along a direction sampled from the BSDF.
@@ -201,7 +343,7 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
       ++counters.refraction;
       eta_scale *= lb.eta * lb.eta;
       if (entering)
-        media.enter(hit.medium, n_to);
+        media.enter(hit.medium, n_to, m.medium);
       else
         media.leave(hit.medium);
     } else {

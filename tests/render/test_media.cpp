@@ -1,0 +1,285 @@
+// Participating media (render/shade/medium.*) against closed forms, in both integrators:
+// Beer-Lambert transmittance through a slab, a slab's own emission, single scattering of a
+// directional light in a slab, and white furnaces (a medium that only scatters, under a uniform
+// sky, keeps the sky's radiance). The heterogeneous walks (null collisions, ratio tracking) are
+// run on a density texture of constant value 0.5, whose answers are known exactly.
+//
+// Statistical checks allow 5 standard errors (a normal mean fails by chance with probability
+// 5.7e-7; the renders are seeded, so a given build passes or fails every time).
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "render/renderer.hpp"
+#include "render/shade/features.hpp"
+#include "render/shade/medium.hpp"
+#include "scene_fixture.hpp"
+
+using namespace rts::render;
+using namespace rts::render::test;
+
+namespace {
+
+constexpr double kSigmas = 5.0;
+constexpr double kPi = std::numbers::pi;
+
+// A clear container: light crosses its surface unchanged (passes_through).
+MaterialDesc container(MediumId medium) {
+  MaterialDesc m;
+  m.transmit = Color(1.0);
+  m.ior = 1.0;
+  m.diffuse = 0.0;
+  m.medium = medium;
+  return m;
+}
+
+MediumId add_medium(SceneDesc& s, const MediumDesc& d) {
+  s.media.push_back(d);
+  return static_cast<MediumId>(s.media.size() - 1);
+}
+
+// A slab 2 units thick (z from -1 to 1), wide enough to fill an orthographic view along +z.
+SceneDesc slab_scene(const MediumDesc& d, Color background) {
+  SceneDesc s;
+  s.settings.background = background;
+  s.has_camera = true;
+  s.camera.projection = Projection::Orthographic;
+  s.camera.view_width = 1.0;
+  s.camera.position = Vec3(0, 0, -5);
+  s.camera.look_at = Vec3(0, 0, 0);
+  const MediumId id = add_medium(s, d);
+  place(s, add_shape(s, Box{Vec3(-20, -20, -1), Vec3(20, 20, 1)}, add_material(s, container(id))));
+  return s;
+}
+
+struct Rendered {
+  std::vector<double> mean, standard_error;  // per channel over the pixels
+  RenderResult result;
+};
+
+Rendered render_image(SceneDesc s, int size, int spp, bool path) {
+  s.settings.width = s.settings.height = size;
+  s.settings.samples = spp;
+  s.settings.integrator = path ? IntegratorKind::Path : IntegratorKind::Whitted;
+  RenderOptions o;
+  o.threads = 2;
+  Rendered img;
+  img.result = render(s, o);
+  const std::vector<float>& rgb = img.result.color.rgb;
+  const double n = static_cast<double>(rgb.size() / 3);
+  for (int c = 0; c < 3; ++c) {
+    double sum = 0, sum2 = 0;
+    for (std::size_t i = c; i < rgb.size(); i += 3) {
+      sum += rgb[i];
+      sum2 += static_cast<double>(rgb[i]) * rgb[i];
+    }
+    const double mean = sum / n;
+    img.mean.push_back(mean);
+    img.standard_error.push_back(std::sqrt(std::max(0.0, (sum2 / n - mean * mean) * n / (n - 1)) / n));
+  }
+  return img;
+}
+
+void check_within_noise(const Rendered& img, const std::vector<double>& expected) {
+  CHECK(img.result.stats.rays.nan_samples == 0);
+  for (int c = 0; c < 3; ++c) {
+    INFO("channel " << c << ": mean " << img.mean[c] << " expected " << expected[c] << " standard error "
+                    << img.standard_error[c]);
+    CHECK(std::abs(img.mean[c] - expected[c]) <= kSigmas * img.standard_error[c] + 1e-4 * expected[c]);
+  }
+}
+
+// Texture 0 of `s`: a checker of one value, so the density is `value` everywhere but the
+// medium takes the heterogeneous code (null collisions, ratio tracking, the march).
+TextureId constant_density(SceneDesc& s, double value) {
+  TextureDesc t;
+  t.kind = TextureKind::Checker;
+  t.color1 = t.color2 = Color(value);
+  s.textures.push_back(t);
+  return static_cast<TextureId>(s.textures.size() - 1);
+}
+
+}  // namespace
+
+TEST_CASE("Henyey-Greenstein: normalised, sampled as its density, mean cosine g", "[media]") {
+  for (double g : {0.0, 0.5, -0.3, 0.9}) {
+    INFO("g = " << g);
+    // The integral over the sphere, 2 pi times the integral over cos in [-1, 1] (midpoint rule).
+    const int n = 200000;
+    double integral = 0.0;
+    for (int i = 0; i < n; ++i) integral += hg_phase(-1.0 + 2.0 * (i + 0.5) / n, g) * (2.0 / n);
+    CHECK(2.0 * kPi * integral == Approx(1.0).epsilon(1e-4));
+    // Sampling: the returned pdf is the phase at the direction, and the mean cosine is g.
+    const Vec3 d_in = glm::normalize(Vec3(0.3, -0.5, 0.8));
+    double sum = 0.0;
+    const int m = 40000;
+    for (int i = 0; i < m; ++i) {
+      glm::dvec2 u((i + 0.5) / m, std::fmod(i * 0.618033988749895, 1.0));
+      double pdf = 0.0;
+      const Vec3 w = hg_sample(d_in, g, u, pdf);
+      CHECK(glm::length(w) == Approx(1.0));
+      CHECK(pdf == Approx(hg_phase(glm::dot(d_in, w), g)).epsilon(1e-9));
+      sum += glm::dot(d_in, w);
+    }
+    CHECK(sum / m == Approx(g).margin(2e-3));
+  }
+}
+
+TEST_CASE("Beer-Lambert: a slab of absorbing medium lets exp(-sigma_a d) through, in both integrators", "[media]") {
+  MediumDesc d;
+  d.absorption = Color(0.1, 0.5, 1.0);
+  const SceneDesc s = slab_scene(d, Color(1.0));
+  const std::vector<double> expected{std::exp(-0.2), std::exp(-1.0), std::exp(-2.0)};
+  for (bool path : {false, true}) {
+    INFO((path ? "path" : "whitted"));
+    const Rendered img = render_image(s, 8, 1, path);
+    // Absorption alone is computed in closed form: no noise, every pixel exact.
+    for (int c = 0; c < 3; ++c) {
+      CHECK(img.mean[c] == Approx(expected[c]).epsilon(1e-6));
+      CHECK(img.standard_error[c] < 1e-7);
+    }
+  }
+}
+
+TEST_CASE("a homogeneous slab's emission: eps (1 - exp(-sigma d)) / sigma + background exp(-sigma d)", "[media]") {
+  MediumDesc d;
+  d.absorption = Color(0.5, 1.0, 0.0);
+  d.emission = Color(0.3, 0.6, 0.1);
+  const SceneDesc s = slab_scene(d, Color(0.2));
+  auto expect = [](double eps, double sigma) {
+    return sigma > 0 ? eps * -std::expm1(-2 * sigma) / sigma + 0.2 * std::exp(-2 * sigma) : eps * 2 + 0.2;
+  };
+  const std::vector<double> expected{expect(0.3, 0.5), expect(0.6, 1.0), expect(0.1, 0.0)};
+  for (bool path : {false, true}) {
+    INFO((path ? "path" : "whitted"));
+    const Rendered img = render_image(s, 8, 1, path);
+    for (int c = 0; c < 3; ++c) CHECK(img.mean[c] == Approx(expected[c]).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("single scattering of a directional light in a slab matches its closed form", "[media]") {
+  // The light travels along +z, as the camera looks: a point at depth s sees it through s of
+  // medium, and scatters it back by the angle pi. Single-scattered radiance:
+  // sigma_s p(-1) E (1 - exp(-2 sigma_t d)) / (2 sigma_t); nothing else reaches the camera.
+  const double sigma_s = 0.6, sigma_a = 0.3, g = 0.4, e = 2.0;
+  MediumDesc d;
+  d.scattering = Color(sigma_s);
+  d.absorption = Color(sigma_a);
+  d.eccentricity = g;
+  SceneDesc s = slab_scene(d, Color(0.0));
+  LightDesc sun;
+  sun.kind = LightKind::Directional;
+  sun.direction = Vec3(0, 0, 1);
+  sun.intensity = e;
+  place(s, add_light(s, sun));
+  const double st = sigma_s + sigma_a;
+  const double expected = sigma_s * hg_phase(-1.0, g) * e * -std::expm1(-2 * st * 2) / (2 * st);
+  SECTION("Whitted: the march (256 points) within 0.1%") {
+    s.settings.media_samples = 256;
+    const Rendered img = render_image(s, 4, 1, false);
+    for (int c = 0; c < 3; ++c) CHECK(img.mean[c] == Approx(expected).epsilon(1e-3));
+  }
+  SECTION("path, one scattering event at most (max_depth 0): within noise") {
+    s.settings.max_depth = 0;
+    check_within_noise(render_image(s, 16, 64, true), {expected, expected, expected});
+  }
+  SECTION("the same through the heterogeneous walks, density 0.5 (sigma halved)") {
+    s.media[0].density = constant_density(s, 0.5);
+    const double half = sigma_s / 2 * hg_phase(-1.0, g) * e * -std::expm1(-2 * st / 2 * 2) / (2 * st / 2);
+    s.settings.media_samples = 256;
+    const Rendered w = render_image(s, 4, 1, false);
+    for (int c = 0; c < 3; ++c) CHECK(w.mean[c] == Approx(half).epsilon(1e-3));
+    s.settings.max_depth = 0;
+    check_within_noise(render_image(s, 16, 64, true), {half, half, half});
+  }
+}
+
+TEST_CASE("white furnace: a medium that only scatters keeps a uniform sky's radiance", "[media]") {
+  // A cloud in a sphere under a sky of radiance 1, all bounces: every pixel's expected value
+  // is 1 whatever the scattering, the phase function or the density; absorption only lowers it.
+  auto cloud = [](const MediumDesc& d) {
+    SceneDesc s;
+    s.settings.background = Color(1.0);
+    s.settings.max_depth = 10000;  // Russian roulette ends the paths, unbiased
+    s.has_camera = true;
+    s.camera.position = Vec3(0, 0, -4);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.camera.fov = 25;  // the sphere fills the view
+    const MediumId id = add_medium(s, d);
+    place(s, add_shape(s, Sphere{Vec3(0), 1.0}, add_material(s, container(id))));
+    return s;
+  };
+  MediumDesc d;
+  d.scattering = Color(2.0);
+  d.eccentricity = 0.5;
+  SECTION("homogeneous, forward scattering") { check_within_noise(render_image(cloud(d), 16, 64, true), {1, 1, 1}); }
+  SECTION("chromatic, backward scattering, heterogeneous density (spectral tracking)") {
+    d.scattering = Color(4.0, 2.0, 0.5);
+    d.eccentricity = -0.3;
+    SceneDesc s = cloud(d);
+    s.media[0].density = constant_density(s, 0.5);
+    check_within_noise(render_image(s, 16, 64, true), {1, 1, 1});
+  }
+  SECTION("absorption takes light away, only in its channel") {
+    d.scattering = Color(1.5);
+    d.absorption = Color(0.5, 0.0, 0.0);
+    const Rendered img = render_image(cloud(d), 16, 64, true);
+    check_within_noise(img, {img.mean[0], 1, 1});
+    CHECK(img.mean[0] < 0.95);
+    CHECK(img.mean[0] > 0.5);
+  }
+}
+
+TEST_CASE("ratio tracking and the march agree with the closed form on a constant density", "[media]") {
+  SceneDesc s;
+  MediumDesc d;
+  d.absorption = Color(0.4, 1.0, 2.0);
+  d.density = constant_density(s, 0.5);
+  s.media.push_back(d);
+  const std::vector<CompiledTexture> textures{CompiledTexture(s.textures[0], nullptr)};
+  const std::vector<CompiledMedium> media = compile_media(s, textures);
+  const CompiledMedium& m = media[0];
+  REQUIRE_FALSE(m.homogeneous());
+  const double length = 1.5;
+  const Vec3 o(0.1, 0.2, 0.3), dir(0, 0, 1);
+  MediumRng rng(0.25);
+  Rgb sum(0.0);
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) sum += m.transmittance(o, dir, length, rng);
+  const Rgb marched = m.transmittance_marched(o, dir, length, 16);
+  for (int c = 0; c < 3; ++c) {
+    const double sigma[3] = {d.absorption.r, d.absorption.g, d.absorption.b};
+    const double exact = std::exp(-0.5 * sigma[c] * length);
+    INFO("channel " << c);
+    CHECK(sum[c] / n == Approx(exact).margin(4e-3));
+    CHECK(marched[c] == Approx(exact).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("media are left out of scenes without them, and reported where used", "[media]") {
+  SceneDesc s;
+  place(s, add_shape(s, Sphere{Vec3(0), 1.0}));
+  s.settings.width = s.settings.height = 4;
+  RenderOptions o;
+  o.threads = 1;
+  RenderResult plain = render(s, o);
+  auto has = [](const RenderResult& r, std::string_view name) {
+    for (const std::string& f : r.stats.features_used)
+      if (f == name) return true;
+    return false;
+  };
+  CHECK_FALSE(has(plain, "media"));
+  MediumDesc d;
+  d.absorption = Color(1.0);
+  const MediumId id = add_medium(s, d);
+  // Behind an opaque surface a medium is never seen: still left out.
+  MaterialDesc opaque;
+  opaque.medium = id;
+  SceneDesc hidden = s;
+  place(hidden, add_shape(hidden, Sphere{Vec3(3, 0, 0), 1.0}, add_material(hidden, opaque)));
+  CHECK_FALSE(has(render(hidden, o), "media"));
+  place(s, add_shape(s, Sphere{Vec3(3, 0, 0), 1.0}, add_material(s, container(id))));
+  CHECK(has(render(s, o), "media"));
+}
