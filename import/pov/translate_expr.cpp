@@ -1,6 +1,7 @@
 // POV-Ray expressions as rts expressions: operators (`=` compares, `&` `|` `!`), the axis
 // constants, float-to-vector promotion, colour keywords, built-in functions.
 #include <cmath>
+#include <numbers>
 #include <map>
 
 #include <fmt/format.h>
@@ -68,6 +69,10 @@ std::string Translator::rename(const std::string& n) const {
 bool Translator::literal_number(const Expr& e, double& out) {
   if (e.kind == Expr::Number) {
     out = e.number;
+    return true;
+  }
+  if (e.kind == Expr::Name && e.text == "pi") {  // a POV-Ray keyword: never redeclared
+    out = std::numbers::pi;
     return true;
   }
   if (e.kind == Expr::Unary && (e.text == "-" || e.text == "+") && literal_number(*e.args[0], out)) {

@@ -3,6 +3,7 @@
 // out, colour maps and patterns as rts textures. Objects are in translate_object.cpp.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 
 #include <fmt/format.h>
@@ -13,8 +14,33 @@ namespace rts::import::pov {
 
 namespace {
 
+// A whole literal number (what the translator writes for literal values).
+bool parse_number(const std::string& text, double& out) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  out = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && std::isfinite(out);
+}
+
 bool is_texture_part(const std::string& k) {
   return k == "texture" || k == "pigment" || k == "finish" || k == "normal" || k == "interior" || k == "material";
+}
+
+// The largest component of a literal `rgb(...)` colour; 1 when it is not one.
+double max_component(const std::string& c) {
+  if (c.rfind("rgb(", 0) != 0 || c.back() != ')') return 1.0;
+  double best = 0.0;
+  std::size_t pos = 4;
+  int count = 0;
+  while (pos < c.size() - 1) {
+    std::size_t end = c.find_first_of(",)", pos);
+    double v = 0;
+    if (!parse_number(c.substr(pos, end - pos), v)) return 1.0;
+    best = std::max(best, v);
+    ++count;
+    pos = end + 1;
+  }
+  return count > 0 ? best : 1.0;
 }
 
 }  // namespace
@@ -54,6 +80,13 @@ std::string Translator::material_text(const MaterialProps& m, bool with_defaults
     }
     for (const auto& p : m.props) full.set(p.first, p.second);
     default_finish(full);
+    if (m.opacity < 1.0) {
+      for (auto& p : full.props) {
+        if (p.first != "ambient" && p.first != "diffuse") continue;
+        double v = 0;
+        p.second = parse_number(p.second, v) ? num(v * m.opacity) : fmt::format("{} * {}", p.second, num(m.opacity));
+      }
+    }
     // Keep the order readable: colour first, then the finish in POV-Ray's order.
     std::stable_sort(full.props.begin(), full.props.end(), [](const auto& a, const auto& b) {
       auto rank = [](const std::string& n) {
@@ -280,11 +313,13 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
   } else if (!xforms.empty() && m.has("color")) {
     // A transformed plain colour is the same colour.
   }
+  m.opacity = 1.0;
   if (filter > 0 || transmit > 0) {
     // POV-Ray: filtered light takes the surface's colour, transmitted light passes as it is.
     std::string c;
     for (const auto& p : m.props)
       if (p.first == "color") c = p.second;
+    m.opacity = std::max(0.0, 1.0 - (filter * max_component(c) + transmit));
     std::string t = filter > 0 && !c.empty()
                         ? (transmit > 0 ? fmt::format("{} * {} + rgb({})", c, num(filter), num(transmit))
                                         : fmt::format("{} * {}", c, num(filter)))
@@ -387,6 +422,7 @@ bool Translator::library_part(const std::string& name, MaterialProps& m) {
 }
 
 void Translator::interior(const Block& b, MaterialProps& m) {
+  bool media_seen = false;
   for (const Item& it : b.items) {
     if (it.kind == Item::Value && it.args[0]->kind == Expr::Name) {
       if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Interior) {
@@ -405,9 +441,14 @@ void Translator::interior(const Block& b, MaterialProps& m) {
       m.set("ior", value(*it.args[0]));
     } else if (it.kind == Item::Keyword && (it.name == "fade_distance" || it.name == "fade_power" ||
                                             it.name == "dispersion" || it.name == "caustics")) {
-      unsupported(it.loc, it.name, "transmit colour (no absorption along the path in rts)", false);
+      unsupported(it.loc, it.name, "media_absorption (Beer-Lambert absorption inside the object)", false);
     } else if (it.kind == Item::Nested && it.block->kind == "media") {
-      unsupported(it.loc, "media", "emission or fog (settings { fog_distance })", false);
+      if (media_seen) {
+        unsupported(it.loc, "media", "one medium per object (POV-Ray adds several)", false);
+        continue;
+      }
+      media_seen = true;
+      for (const auto& p : media(*it.block)) m.set(p.first, p.second);
     }
   }
 }

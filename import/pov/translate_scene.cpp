@@ -367,8 +367,15 @@ void Translator::place_block(Writer& w, const Block& b) {
     unsupported(b.loc, "radiosity", "settings { integrator = \"path\" }", true);
     return;
   }
-  if (k == "media" || k == "photons" || k == "rainbow") {
-    unsupported(b.loc, k, k == "media" ? "fog (settings { fog_distance })" : "none", false);
+  if (k == "media") {
+    // The atmosphere: rts's settings medium fills the space around the objects.
+    std::string props;
+    for (const auto& p : media(b)) props += "  " + p.first + " = " + p.second;
+    if (!props.empty()) w.line("settings {" + props.substr(1) + " }");
+    return;
+  }
+  if (k == "photons" || k == "rainbow") {
+    unsupported(b.loc, k, "none", false);
     return;
   }
   unsupported(b.loc, k, "see docs/from-povray.md", false);

@@ -38,6 +38,10 @@ struct MaterialProps {
   void set(const std::string& name, const std::string& value);
   bool has(const std::string& name) const;
   bool empty() const { return base.empty() && props.empty(); }
+  // POV-Ray lets a pigment's filtered and transmitted light past the surface instead of lighting
+  // it: ambient and diffuse are scaled by 1 - (filter * max(colour) + transmit), which rts's
+  // material writes out (material_text).
+  double opacity = 1.0;
 };
 
 // A declared name. What a use needs from its block is worked out when it is declared, so
@@ -109,6 +113,8 @@ class Translator {
   void pigment(const Block& b, MaterialProps& m);
   void finish(const Block& b, MaterialProps& m);
   void interior(const Block& b, MaterialProps& m);
+  // A media block's rts properties (media_absorption = ..., ...), warning about what differs.
+  std::vector<std::pair<std::string, std::string>> media(const Block& b);  // translate_media.cpp
   void normal(const Block& b, MaterialProps& m);
   std::string pigment_value(const Block& b);  // a colour or a texture expression
   std::string material_text(const MaterialProps& m, bool with_defaults);
