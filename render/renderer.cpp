@@ -242,11 +242,15 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   Integrator integrator(world, lights, scene.materials, prep.textures(), scene.settings, rs.max_depth,
                         prep.integrator_flags(features), &prep.media());
   integrator.jitter_media(rs.samples > 1);
+  // Rays start inside the media around the camera (the centre ray's origin: the eye).
+  const Vec3 eye = camera.generate(0.5 * rs.width, 0.5 * rs.height, glm::dvec2(0.5)).origin;
+  integrator.start_at(eye);
   // Path mode: the path tracer takes the camera samples (the Whitted integrator keeps the AOVs).
   const IntegratorKind integrator_kind = options.integrator.value_or(scene.settings.integrator);
   std::optional<path::PathIntegrator> path_tracer;
   if (integrator_kind == IntegratorKind::Path) {
     path_tracer.emplace(world, scene, lights, prep.textures(), prep.media(), rs.max_depth, result.warnings);
+    path_tracer->start_at(eye);
     integrator.use_path_tracer(&*path_tracer);
   }
   const bool adaptive = options.target_error > 0 && rs.samples >= 2;

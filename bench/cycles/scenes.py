@@ -34,6 +34,9 @@ MATERIALS = {
     'frosted': ('glass', 1.5, 0.3),
     'gold': ('metal', (1.0, 0.78, 0.34), 0.3),
     'grey': ('diffuse', (0.5, 0.5, 0.5)),
+    # A medium in a clear container (no surface): scattering and absorption per unit length,
+    # and the Henyey-Greenstein mean cosine.
+    'smoke': ('medium', (1.6, 1.6, 1.6), (0.15, 0.35, 0.7), 0.4),
 }
 
 
@@ -83,8 +86,14 @@ def env_lit():
                          ('sphere', (0.7, 0.6, 0.2), 0.6, 'gold')])
 
 
+def smoke():
+    """A ball of scattering, tinted smoke on the floor of the room, lit by the softbox (issue 23)."""
+    return dict(camera=((0, 1.6, -3.2), (0, 0.5, 0), 40), depth=8,
+                objects=room([('sphere', (0, 0.7, 0), 0.7, 'smoke')]))
+
+
 SCENES = {'cornell': cornell, 'caustic': caustic, 'rough_metal': rough_metal, 'env_lit': env_lit,
-          'rough_glass': rough_glass}
+          'rough_glass': rough_glass, 'smoke': smoke}
 
 
 # The environment: a sky gradient and a small bright sun, as a flat (uncompressed) Radiance .hdr
@@ -162,6 +171,9 @@ def rts_material(name):
     if m[0] == 'metal':
         return ('material { color = rgb(0)  diffuse = 0  specular = 0  reflect = %s  roughness = %g }'
                 % (rts_rgb(m[1]), m[2]))
+    if m[0] == 'medium':
+        return ('material { transmit = 1  ior = 1  diffuse = 0  media_scattering = %s  media_absorption = %s  '
+                'media_eccentricity = %g }' % (rts_rgb(m[1]), rts_rgb(m[2]), m[3]))
     raise ValueError(name)
 
 
@@ -237,6 +249,24 @@ def blender_material(bpy, name, cache={}):
         b.inputs['Color'].default_value = (1, 1, 1, 1)
         b.inputs['IOR'].default_value = m[1]
         nt.links.new(b.outputs[0], out.inputs['Surface'])
+    elif m[0] == 'medium':
+        # No surface shader: the boundary lets light through unchanged. Cycles' Volume Scatter
+        # scatters color x density per unit length; Volume Absorption absorbs (1 - color) x
+        # density (svm_node_closure_volume), so colour = 1 - sigma_a / density.
+        sigma_s, sigma_a, g = m[1], m[2], m[3]
+        ds, da = max(sigma_s), max(sigma_a)
+        sc = nt.nodes.new('ShaderNodeVolumeScatter')
+        sc.inputs['Color'].default_value = (*[c / ds for c in sigma_s], 1)
+        sc.inputs['Density'].default_value = ds
+        sc.inputs['Anisotropy'].default_value = g
+        ab = nt.nodes.new('ShaderNodeVolumeAbsorption')
+        ab.inputs['Color'].default_value = (*[1 - c / da for c in sigma_a], 1)
+        ab.inputs['Density'].default_value = da
+        add = nt.nodes.new('ShaderNodeAddShader')
+        nt.links.new(sc.outputs[0], add.inputs[0])
+        nt.links.new(ab.outputs[0], add.inputs[1])
+        nt.links.new(add.outputs[0], out.inputs['Volume'])
+        mat.cycles.homogeneous_volume = True  # exact distance sampling, no ray marching
     elif m[0] == 'metal':
         b = nt.nodes.new('ShaderNodeBsdfGlossy')
         b.distribution = 'GGX'  # single scattering, as rts
@@ -282,7 +312,7 @@ def build_blender(bpy, name, samples, seed, threads, env_path):
     c.diffuse_bounces = d
     c.glossy_bounces = d
     c.transmission_bounces = d
-    c.volume_bounces = 0
+    c.volume_bounces = d  # only the smoke scene has a volume
     c.transparent_max_bounces = d
     c.seed = seed
     # rts averages each pixel's samples uniformly over the pixel (a box of width 1): the same

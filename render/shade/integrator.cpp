@@ -145,9 +145,9 @@ Rgb Integrator::trace_tree(const Ray& ray, Path& path) const {
   pending.clear();
   if constexpr (!(F & trace_flags::kSecondary)) {
     // Nothing reflects or transmits: the tree is the camera ray's hit alone.
-    return shade<F>(PendingRay{ray, Rgb(1.0), 0, MediumStack{}}, path, pending);
+    return shade<F>(PendingRay{ray, Rgb(1.0), 0, camera_media_}, path, pending);
   }
-  pending.push_back(PendingRay{ray, Rgb(1.0), 0, MediumStack{}});
+  pending.push_back(PendingRay{ray, Rgb(1.0), 0, camera_media_});
   Rgb color(0.0);
   while (!pending.empty()) {
     PendingRay pr = pending.back();
@@ -320,7 +320,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
                                found ? hit.t * len : std::numeric_limits<double>::infinity(), pr.media, path,
                                medium_t);
   }
-  auto through_medium = [&](const Rgb& c) { return medium ? medium_in + medium_t * c : c; };
+  auto through_medium = [&](const Rgb& c) { return medium ? saturate(medium_in + medium_t * c) : c; };
   if (!found) {
     const Rgb c = through_medium(background(ray.direction));
     if (!fog_on_) return c;

@@ -54,6 +54,10 @@ class Integrator {
   // on them, for renders of several samples per pixel; else midpoints and centres (the same
   // image every time at one sample).
   void jitter_media(bool on) { media_jitter_ = on; }
+  // Media: the objects around the camera at `eye` (media_around), which its rays start inside.
+  void start_at(const Vec3& eye) {
+    if (media_on_) camera_media_ = media_around(world_, materials_, eye);
+  }
 
  private:
   // What one camera sample's path carries along.
@@ -135,6 +139,7 @@ class Integrator {
   MediumId atmosphere_ = kNoId;
   int media_samples_ = 16;
   bool media_jitter_ = false;
+  MediumStack camera_media_;
   // Some placed material lets light through unchanged (passes_through): checked per hit only then.
   bool has_pass_through_ = false;
   int max_depth_;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "render/geometry/tolerances.hpp"
+#include "render/shade/material.hpp"
 #include "render/shade/path/warp.hpp"
 
 namespace rts::render {
@@ -69,8 +70,10 @@ Rgb CompiledMedium::emitted(double length) const {
   Rgb e(0.0);
   for (int c = 0; c < 3; ++c) {
     if (!(emission_[c] > 0.0)) continue;
-    e[c] = sigma_t_[c] > 0.0 ? emission_[c] * -std::expm1(-sigma_t_[c] * length) / sigma_t_[c]
-                             : std::min(emission_[c] * length, tol::kMaxRadiance);
+    // Saturated like every radiance: eps / sigma_t overflows for extreme coefficients.
+    e[c] = std::min(sigma_t_[c] > 0.0 ? emission_[c] * (-std::expm1(-sigma_t_[c] * length) / sigma_t_[c])
+                                      : emission_[c] * length,
+                    tol::kMaxRadiance);
   }
   return e;
 }
@@ -124,7 +127,7 @@ bool CompiledMedium::free_flight(const Vec3& origin, const Vec3& dir, double len
     if (s >= length) return false;
     const Vec3 p = origin + s * dir;
     const double rho = density(p);
-    if (emits_) radiance += beta * (rho / sbar) * emission_;
+    if (emits_) radiance += glm::min(beta * (rho / sbar) * emission_, Rgb(tol::kMaxRadiance));
     const Rgb scatter = rho * sigma_s_;
     const Rgb null = glm::max(Rgb(sbar) - rho * sigma_t_, 0.0);
     const double ps = max_of(scatter), pn = max_of(null);
@@ -152,6 +155,42 @@ std::vector<CompiledMedium> compile_media(const SceneDesc& scene, const std::vec
   for (const MediumDesc& m : scene.media)
     out.emplace_back(m, m.density < textures.size() ? &textures[m.density] : nullptr);
   return out;
+}
+
+MediumStack media_around(const World& world, const std::vector<MaterialDesc>& materials, const Vec3& point) {
+  // A direction unlikely to run along an edge or face of a scene built on the axes.
+  const Vec3 dir = glm::normalize(Vec3(0.2113248654, 0.5773502692, 0.7886751346));
+  struct Around {
+    uint32_t medium;
+    MaterialId material;
+    double exit;  // distance to where the walk leaves it
+  };
+  std::vector<uint32_t> seen;
+  std::vector<Around> around;
+  Ray ray{point, dir};
+  double travelled = 0.0;
+  for (int i = 0; i < tol::kMaxMediumCollisions; ++i) {
+    WorldHit hit;
+    if (!world.intersect(ray, Interval::positive(), hit, /*transmissive_only=*/true)) break;
+    if (std::find(seen.begin(), seen.end(), hit.medium) == seen.end()) {
+      seen.push_back(hit.medium);
+      if (glm::dot(hit.normal, dir) > 0.0)  // first met from inside: it holds the point
+        around.push_back({hit.medium, world.instance(hit.instance).material, travelled + hit.t});
+    }
+    const Vec3 next = offset_ray_origin(hit.point, hit.normal, dir, hit.error);
+    travelled += glm::dot(next - ray.origin, dir);
+    ray.origin = next;
+  }
+  // Outermost (left last) first, as a path entering them from outside would have pushed them.
+  std::sort(around.begin(), around.end(), [](const Around& a, const Around& b) { return a.exit > b.exit; });
+  MediumStack stack;
+  for (const Around& a : around) {
+    const MaterialDesc* m = a.material < materials.size() ? &materials[a.material] : nullptr;
+    const double outside = stack.current();
+    const double ior = !m ? outside : m->ior_relative ? outside * m->ior : (passes_through(*m) ? outside : m->ior);
+    stack.enter(a.medium, ior, m ? m->medium : kNoId);
+  }
+  return stack;
 }
 
 }  // namespace rts::render

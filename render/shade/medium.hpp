@@ -18,10 +18,12 @@
 
 #include <glm/glm.hpp>
 
+#include "render/accel/world.hpp"
 #include "render/scene/scene.hpp"
 #include "render/shade/lights.hpp"
 #include "render/shade/texture.hpp"
 #include "render/sample/sampler.hpp"
+#include "render/shade/medium_stack.hpp"
 
 namespace rts::render {
 
@@ -89,6 +91,11 @@ class CompiledMedium {
   bool scatters_ = false, emits_ = false;
   const CompiledTexture* density_ = nullptr;
 };
+
+// The media stack of a path that starts at `point` (the camera): the transmissive objects
+// around it, outermost first, found by walking one ray from it to infinity (an object whose
+// first crossing is an exit holds the point). A camera inside a clear box of haze sees the haze.
+MediumStack media_around(const World& world, const std::vector<MaterialDesc>& materials, const Vec3& point);
 
 // The scene's media compiled against its textures (by MediumId).
 std::vector<CompiledMedium> compile_media(const SceneDesc& scene, const std::vector<CompiledTexture>& textures);

@@ -283,3 +283,57 @@ TEST_CASE("media are left out of scenes without them, and reported where used", 
   place(s, add_shape(s, Sphere{Vec3(3, 0, 0), 1.0}, add_material(s, container(id))));
   CHECK(has(render(s, o), "media"));
 }
+
+TEST_CASE("media with extreme coefficients stay finite in both integrators", "[media]") {
+  // Coefficients at the edges of the doubles, a patterned density, an atmosphere to infinity,
+  // emission without extinction: every pixel finite, nothing counted as NaN.
+  const double values[] = {0.0, 1e-300, 1e-9, 1.0, 1e9, 1e300};
+  for (double a : values)
+    for (double s : {0.0, 1e-300, 1.0, 1e300})
+      for (double e : {0.0, 1.0, 1e300}) {
+        MediumDesc d;
+        d.absorption = Color(a, 0.5 * a, 0.0);
+        d.scattering = Color(s);
+        d.emission = Color(e, 0.0, e);
+        d.eccentricity = 0.9;
+        SceneDesc scene = slab_scene(d, Color(0.5));
+        LightDesc sun;
+        sun.kind = LightKind::Directional;
+        sun.direction = glm::normalize(Vec3(0.3, -1, 1));
+        place(scene, add_light(scene, sun));
+        scene.settings.medium = add_medium(scene, d);  // and around the slab
+        scene.settings.max_depth = 3;
+        for (bool path : {false, true}) {
+          for (bool patterned : {false, true}) {
+            SceneDesc v = scene;
+            if (patterned) v.media[0].density = constant_density(v, 0.5);
+            const Rendered img = render_image(v, 4, 2, path);
+            INFO("absorption " << a << " scattering " << s << " emission " << e << (path ? " path" : " whitted")
+                               << (patterned ? " patterned" : ""));
+            CHECK(img.result.stats.rays.nan_samples == 0);
+            for (float x : img.result.color.rgb) CHECK(std::isfinite(x));
+          }
+        }
+      }
+}
+
+TEST_CASE("a camera inside a medium's container sees the medium from its first ray", "[media]") {
+  // The camera in the middle of the slab, looking out through 1 unit of it; and inside two
+  // nested containers (the inner clear, the outer absorbing), where it sees only the outer.
+  MediumDesc d;
+  d.absorption = Color(0.5, 1.0, 2.0);
+  SceneDesc s = slab_scene(d, Color(1.0));
+  s.camera.position = Vec3(0, 0, 0);
+  s.camera.look_at = Vec3(0, 0, 1);
+  const std::vector<double> expected{std::exp(-0.5), std::exp(-1.0), std::exp(-2.0)};
+  SceneDesc nested = s;
+  place(nested, add_shape(nested, Box{Vec3(-1, -1, -0.5), Vec3(1, 1, 0.3)}, add_material(nested, container(kNoId))));
+  for (bool path : {false, true}) {
+    INFO((path ? "path" : "whitted"));
+    const Rendered img = render_image(s, 4, 1, path);
+    for (int c = 0; c < 3; ++c) CHECK(img.mean[c] == Approx(expected[c]).epsilon(1e-6));
+    // Inside the clear box: its 0.3 to the box's face is clear, then 0.7 of the slab.
+    const Rendered in = render_image(nested, 4, 1, path);
+    for (int c = 0; c < 3; ++c) CHECK(in.mean[c] == Approx(std::pow(expected[c], 0.7)).epsilon(1e-6));
+  }
+}

@@ -184,7 +184,7 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
   bool specular = true;   // the last vertex was the camera or a delta lobe: no MIS for what it finds
   double prev_pdf = 0.0;  // the density that chose the current ray (solid angle): BSDF or phase
   Vec3 prev_point(0.0);
-  MediumStack media;
+  MediumStack media = camera_media_;
   int passes = 0;  // pass-through surfaces crossed (they are not bounces)
   for (int bounce = 0;; ++bounce) {
     Vec3 dir = glm::normalize(ray.direction);

@@ -37,6 +37,11 @@ class PathIntegrator {
   // Radiance arriving along a camera ray.
   Rgb trace(const Ray& ray, Sampler& sampler, RayCounters& counters) const;
 
+  // Media: the objects around the camera at `eye` (media_around), which its rays start inside.
+  void start_at(const Vec3& eye) {
+    if (has_media_) camera_media_ = media_around(world_, materials_, eye);
+  }
+
   // The path features this scene uses and leaves out (for --stats).
   void describe(std::vector<std::string>& used, std::vector<std::string>& left_out) const;
 
@@ -77,6 +82,7 @@ class PathIntegrator {
   // Fog (settings.fog_*): in path mode a medium that absorbs and glows with its colour, so
   // every path segment brings T L + (1 - T) fog_color, and light reaching a point by a
   // shadow ray is dimmed by T too (unlike the Whitted integrator's POV-Ray rule).
+  MediumStack camera_media_;
   bool fog_on_ = false;
   Fog fog_;
   Rgb fog_color_{0.0};
