@@ -352,7 +352,11 @@ void Translator::place_block(Writer& w, const Block& b) {
         else if (it.name == "color" || it.name == "colour") props += "  fog_color = " + color_value(*it.args[0]);
         else if (it.name == "fog_offset") props += "  fog_offset = " + value(*it.args[0]);
         else if (it.name == "fog_alt") props += "  fog_altitude = " + value(*it.args[0]);
-        else if (it.name != "fog_type") unsupported(it.loc, it.name, "fog_distance, fog_color, fog_offset, fog_altitude", false);
+        else if (it.name == "turbulence") props += "  fog_turbulence = " + vector_value(*it.args[0]);
+        else if (it.name == "turb_depth" || it.name == "octaves" || it.name == "omega" || it.name == "lambda")
+          props += "  fog_" + it.name + " = " + value(*it.args[0]);
+        else if (it.name != "fog_type")
+          unsupported(it.loc, it.name, "fog_distance, fog_color, fog_offset, fog_altitude, fog_turbulence", false);
       } else if (it.kind == Item::Value) {
         props += "  fog_color = " + color_value(*it.args[0]);
       } else if (it.kind == Item::Nested) {

@@ -228,6 +228,23 @@ void SceneBuilder::settings(ParamSet& ps) {
   s.fog_offset = ps.number("fog_offset", s.fog_offset);
   s.fog_altitude = ps.number("fog_altitude", s.fog_altitude);
   require(ps, "fog_altitude", s.fog_altitude >= 0, ">= 0 (0: constant fog)", s.fog_altitude);
+  if (const ParamValue* v = ps.value("fog_turbulence")) {
+    if (const double* x = std::get_if<double>(v))
+      s.fog_turbulence = Vec3(*x);
+    else
+      s.fog_turbulence = ps.vec3("fog_turbulence", s.fog_turbulence);
+    const Vec3& t = s.fog_turbulence;
+    require(ps, "fog_turbulence", t.x >= 0 && t.y >= 0 && t.z >= 0 && std::isfinite(t.x + t.y + t.z),
+            "finite and >= 0 in every component", std::min({t.x, t.y, t.z}));
+  }
+  s.fog_turb_depth = non_negative(ps, "fog_turb_depth", ps.number("fog_turb_depth", s.fog_turb_depth));
+  s.fog_octaves = ps.integer("fog_octaves", s.fog_octaves);
+  require(ps, "fog_octaves", s.fog_octaves >= 1 && s.fog_octaves <= 16, "from 1 to 16", s.fog_octaves);
+  s.fog_omega = ps.number("fog_omega", s.fog_omega);
+  require(ps, "fog_omega", std::isfinite(s.fog_omega) && std::abs(s.fog_omega) <= 16, "finite, |omega| <= 16", s.fog_omega);
+  s.fog_lambda = ps.number("fog_lambda", s.fog_lambda);
+  require(ps, "fog_lambda", std::isfinite(s.fog_lambda) && std::abs(s.fog_lambda) <= 16, "finite, |lambda| <= 16",
+          s.fog_lambda);
   if (ps.has("seed")) {
     double seed = ps.number("seed", 0);
     constexpr double kMaxExactWhole = 9007199254740992.0;  // 2^53: larger doubles skip integers

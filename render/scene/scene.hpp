@@ -360,6 +360,11 @@ struct Settings {
   Color fog_color{0.0};
   double fog_offset = 0.0;
   double fog_altitude = 0.0;
+  // Turbulent fog (POV-Ray's fog turbulence): non-zero in any component turns it on.
+  Vec3 fog_turbulence{0.0};
+  double fog_turb_depth = 0.5;
+  int fog_octaves = 6;
+  double fog_omega = 0.5, fog_lambda = 2.0;
   // The medium around the objects (settings' media_* properties), or none; media_samples is
   // the Whitted integrator's march: scattering points per ray segment in a medium.
   MediumId medium = kNoId;

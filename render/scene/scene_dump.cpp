@@ -184,6 +184,9 @@ void SceneDesc::dump(std::ostream& out) const {
   if (s.fog_distance > 0)
     out << fmt::format(" fog distance {} color {} offset {} altitude {}", num(s.fog_distance), col(s.fog_color),
                        num(s.fog_offset), num(s.fog_altitude));
+  if (s.fog_distance > 0 && s.fog_turbulence != Vec3(0.0))
+    out << fmt::format(" fog_turbulence {} turb_depth {} octaves {} omega {} lambda {}", vec(s.fog_turbulence),
+                       num(s.fog_turb_depth), s.fog_octaves, num(s.fog_omega), num(s.fog_lambda));
   if (s.medium != kNoId) out << fmt::format(" medium {} media_samples {}", s.medium, s.media_samples);
   out << '\n';
   const CameraDesc& c = camera;

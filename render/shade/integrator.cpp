@@ -88,7 +88,7 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
   }
   if (settings.fog_distance > 0.0) {
     fog_on_ = true;
-    fog_ = Fog{settings.fog_distance, settings.fog_offset, settings.fog_altitude};
+    fog_ = Fog::from(settings);
     fog_color_ = to_rgb(settings.fog_color);
   }
 }

@@ -28,23 +28,24 @@ TEST_CASE("constant fog transmits exp(-s / distance)", "[fog]") {
   CHECK(f.transmittance(Vec3(0), Vec3(0, 0, 1), 0.0) == 1.0);
 }
 
-TEST_CASE("ground fog: density 1 below the offset, 1/(1 + h/altitude)^2 above", "[fog]") {
+TEST_CASE("ground fog: density 1 below the offset, 1/(1 + (h/altitude)^2) above (POV-Ray's)", "[fog]") {
   const double d = 2.0, off = 1.0, alt = 0.5;
   Fog f{d, off, alt};
   // Level rays: the density at their height times their length.
   CHECK(f.transmittance(Vec3(0, 0.5, 0), Vec3(1, 0, 0), 3.0) == Approx(std::exp(-3.0 / d)));
-  CHECK(f.transmittance(Vec3(0, off + alt, 0), Vec3(1, 0, 0), 3.0) == Approx(std::exp(-3.0 * 0.25 / d)));
-  // Straight up from the offset: the integral of 1/(1 + h/alt)^2 from 0 to alt is alt/2, and
-  // to infinity alt.
-  CHECK(f.transmittance(Vec3(0, off, 0), Vec3(0, 1, 0), alt) == Approx(std::exp(-alt / 2 / d)));
-  CHECK(f.transmittance(Vec3(0, off, 0), Vec3(0, 1, 0), kInf) == Approx(std::exp(-alt / d)));
+  CHECK(f.transmittance(Vec3(0, off + alt, 0), Vec3(1, 0, 0), 3.0) == Approx(std::exp(-3.0 * 0.5 / d)));
+  // Straight up from the offset: the integral of 1/(1 + (h/alt)^2) from 0 to alt is
+  // alt atan(1) = alt pi/4, and to infinity alt pi/2.
+  const double quarter = alt * M_PI / 4;
+  CHECK(f.transmittance(Vec3(0, off, 0), Vec3(0, 1, 0), alt) == Approx(std::exp(-quarter / d)));
+  CHECK(f.transmittance(Vec3(0, off, 0), Vec3(0, 1, 0), kInf) == Approx(std::exp(-alt * M_PI / 2 / d)));
   // Down from the same point to 0.4 below the offset, then on into the ground for ever.
   CHECK(f.transmittance(Vec3(0, off + alt, 0), Vec3(0, -1, 0), alt + 0.4) ==
-        Approx(std::exp(-(alt / 2 + 0.4) / d)));
+        Approx(std::exp(-(quarter + 0.4) / d)));
   CHECK(f.transmittance(Vec3(0, off + alt, 0), Vec3(0, -1, 0), kInf) == 0.0);
   // A slanted ray covers its height change over 1/sin of the length: at 30 degrees, twice.
   Vec3 up30(std::cos(M_PI / 6), 0.5, 0);
-  CHECK(f.transmittance(Vec3(0, off, 0), up30, 2 * alt) == Approx(std::exp(-2 * (alt / 2) / d)));
+  CHECK(f.transmittance(Vec3(0, off, 0), up30, 2 * alt) == Approx(std::exp(-2 * quarter / d)));
   // Nearly level rays agree with level ones (no division blow-up).
   CHECK(f.transmittance(Vec3(0, 0.5, 0), Vec3(1, 1e-12, 0), 3.0) == Approx(std::exp(-3.0 / d)));
 }
@@ -147,4 +148,33 @@ TEST_CASE("path mode: fog blends every path segment, and dims what shadow rays b
   CHECK(render_centre(lit).r > 0.1);
   lit.settings.fog_distance = 100.0;
   CHECK(render_centre(lit).r == 0.0);
+}
+
+TEST_CASE("turbulent fog thins each segment by POV-Ray's turbulence at its middle", "[fog]") {
+  Fog f{4.0, 0.0, 0.0, Vec3(0.5, 1.0, 2.0), 0.7, 1, 0.5, 2.0};
+  const Vec3 o(0.3, -1.2, 2.5), d(0, 0, 2);  // t in units of d: a segment of 2 t
+  for (double t : {0.1, 1.0, 3.0, 40.0}) {
+    const double s = 2 * t;
+    // One octave: the noise at the segment's middle, scaled by the turbulence vector.
+    const Vec3 middle = (o + 0.5 * t * d) * Vec3(0.5, 1.0, 2.0);
+    const double factor = 1.0 - std::exp(-s / 4.0) * std::min(1.0, pattern::noise01(middle) * 0.7);
+    INFO("t = " << t << ", factor " << factor);
+    CHECK(factor >= 1.0 - std::exp(-s / 4.0));
+    CHECK(factor <= 1.0);
+    CHECK(f.transmittance(o, d, t) == Approx(std::exp(-s / 4.0 * factor)).epsilon(1e-12));
+  }
+  // A ray to infinity is not thinned; neither is any segment without turbulence or depth.
+  CHECK(f.transmittance(o, d, kInf) == 0.0);
+  Fog calm = f;
+  calm.turb_depth = 0.0;
+  CHECK(calm.transmittance(o, d, 1.0) == Approx(std::exp(-0.5)).epsilon(1e-15));
+  calm = f;
+  calm.turbulence = Vec3(0.0);
+  CHECK(calm.transmittance(o, d, 1.0) == std::exp(-2.0 / 4.0));
+  // Octaves add omega^i noise01(lambda^i p): with 3 octaves the sum is read at p, 2p and 4p.
+  Fog three = f;
+  three.octaves = 3;
+  const Vec3 m = (o + 0.5 * d) * Vec3(0.5, 1.0, 2.0);
+  const double sum = pattern::noise01(m) + 0.5 * pattern::noise01(2.0 * m) + 0.25 * pattern::noise01(4.0 * m);
+  CHECK(three.thinning(o + 0.5 * d, 2.0) == Approx(1.0 - std::exp(-0.5) * std::min(1.0, sum * 0.7)).epsilon(1e-15));
 }

@@ -58,7 +58,7 @@ PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const
   atmosphere_ = scene.settings.medium < media.size() ? scene.settings.medium : kNoId;
   if (scene.settings.fog_distance > 0.0) {
     fog_on_ = true;
-    fog_ = Fog{scene.settings.fog_distance, scene.settings.fog_offset, scene.settings.fog_altitude};
+    fog_ = Fog::from(scene.settings);
     fog_color_ = to_rgb(scene.settings.fog_color);
   }
   has_media_ = atmosphere_ != kNoId;
