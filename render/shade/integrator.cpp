@@ -66,9 +66,10 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
     if (materials[id].medium < media_->size() && transmits(materials[id])) media_on_ = true;
     if (passes_through(materials[id])) has_pass_through_ = true;
   }
-  // Media scenes take the generic path: shadow rays walk the surfaces one by one to know which
-  // medium each stretch is in.
-  bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_;
+  // Media scenes, and scenes with surfaces light passes through unchanged, take the generic
+  // path: shadow rays walk surface by surface to know which medium each stretch is in, and
+  // the specialised paths carry none of this (leave-out: a scene without media pays nothing).
+  bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_ || has_pass_through_;
   uint32_t skipped = 0;
   for (const CompiledLight& l : lights) {
     // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
@@ -145,9 +146,10 @@ Rgb Integrator::trace_tree(const Ray& ray, Path& path) const {
   pending.clear();
   if constexpr (!(F & trace_flags::kSecondary)) {
     // Nothing reflects or transmits: the tree is the camera ray's hit alone.
-    return shade<F>(PendingRay{ray, Rgb(1.0), 0, camera_media_}, path, pending);
+    return shade<F>(PendingRay{ray, Rgb(1.0), 0, MediumStack{}}, path, pending);
   }
-  pending.push_back(PendingRay{ray, Rgb(1.0), 0, camera_media_});
+  // Only the generic path knows media (the others are never used with them).
+  pending.push_back(PendingRay{ray, Rgb(1.0), 0, (F & trace_flags::kGeneric) ? camera_media_ : MediumStack{}});
   Rgb color(0.0);
   while (!pending.empty()) {
     PendingRay pr = pending.back();
@@ -313,14 +315,18 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   // A medium on the way: what it adds along the segment, and what it lets through (with no
   // media, one test and the results bit for bit).
   Rgb medium_in(0.0), medium_t(1.0);
-  const CompiledMedium* medium = media_on_ ? medium_of(pr.media) : nullptr;
+  constexpr bool kMedia = (F & trace_flags::kGeneric) != 0;
+  const CompiledMedium* medium = kMedia && media_on_ ? medium_of(pr.media) : nullptr;
   if (medium) {
     const double len = glm::length(ray.direction);
     medium_in = medium_segment(*medium, ray.origin, ray.direction / len,
                                found ? hit.t * len : std::numeric_limits<double>::infinity(), pr.media, path,
                                medium_t);
   }
-  auto through_medium = [&](const Rgb& c) { return medium ? saturate(medium_in + medium_t * c) : c; };
+  auto through_medium = [&](const Rgb& c) {
+    if constexpr (kMedia) return medium ? saturate(medium_in + medium_t * c) : c;
+    return c;
+  };
   if (!found) {
     const Rgb c = through_medium(background(ray.direction));
     if (!fog_on_) return c;
@@ -337,7 +343,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   MaterialScratch scratch;
   const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
   Vec3 incident = glm::normalize(ray.direction);
-  if (has_pass_through_ && passes_through(m) &&
+  if (kMedia && has_pass_through_ && passes_through(m) &&
       [&] {
         const Interface f = interface(pr.media, hit.medium, m, glm::dot(hit.normal, incident) < 0.0);
         return f.n_from == f.n_to;
@@ -379,7 +385,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   if (pr.depth >= max_depth_) return fogged(color);
   // The light the secondary rays bring back crosses the same fog (x * 1.0 is exact: without
   // fog the weights are unchanged).
-  const Rgb weight = pr.weight * fog_t * medium_t;
+  const Rgb weight = kMedia ? pr.weight * fog_t * medium_t : pr.weight * fog_t;
 
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Interface f;
