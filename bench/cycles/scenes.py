@@ -17,7 +17,7 @@ import os
 import struct
 import sys
 
-SIZE = 128
+SIZE = int(os.environ.get("RTS_CYCLES_SIZE", "128"))  # the stored test references are smaller
 
 # Materials: kind and its parameters. 'diffuse' albedo; 'emit' radiance on a diffuse surface;
 # 'glass' dielectric, smooth or (a third value) GGX-rough with alpha = roughness; 'metal' GGX
@@ -37,6 +37,7 @@ MATERIALS = {
     # A medium in a clear container (no surface): scattering and absorption per unit length,
     # and the Henyey-Greenstein mean cosine.
     'smoke': ('medium', (1.6, 1.6, 1.6), (0.15, 0.35, 0.7), 0.4),
+    'lamp_ball': ('emit', (0.0, 0.0, 0.0), (40.0, 36.0, 30.0)),
 }
 
 
@@ -92,8 +93,15 @@ def smoke():
                 objects=room([('sphere', (0, 0.7, 0), 0.7, 'smoke')]))
 
 
+def smoke_lamp():
+    """The smoke ball alone in the dark, lit by a small glowing ball out of view: the stored Cycles reference
+    of tests/render/test_media.cpp (no walls, whose lighting the two engines differ on)."""
+    return dict(camera=((0, 1.0, -3.2), (0, 0.7, 0), 40), depth=8,
+                objects=[('sphere', (0, 0.7, 0), 0.7, 'smoke'), ('sphere', (-1.6, 2.0, -0.3), 0.25, 'lamp_ball')])
+
+
 SCENES = {'cornell': cornell, 'caustic': caustic, 'rough_metal': rough_metal, 'env_lit': env_lit,
-          'rough_glass': rough_glass, 'smoke': smoke}
+          'rough_glass': rough_glass, 'smoke': smoke, 'smoke_lamp': smoke_lamp}
 
 
 # The environment: a sky gradient and a small bright sun, as a flat (uncompressed) Radiance .hdr
