@@ -112,15 +112,40 @@ Rgb CompiledMedium::transmittance_marched(const Vec3& origin, const Vec3& dir, d
 
 bool CompiledMedium::free_flight(const Vec3& origin, const Vec3& dir, double length, MediumRng& rng, Rgb& beta,
                                  Rgb& radiance, double& t) const {
-  if (homogeneous() && !scatters_) {
-    // Absorption and emission alone: closed form, no noise.
+  if (homogeneous()) {
+    // Emission in closed form (its integral over the segment, whatever happens on it).
     if (emits_) radiance += beta * emitted(length);
-    beta *= transmittance(length);
+    if (!scatters_) {  // absorption alone: closed form, no noise
+      beta *= transmittance(length);
+      return false;
+    }
+    // Exact distance sampling, one channel's extinction picked at random and the three
+    // densities averaged (one-sample MIS over the channels): no null collisions, however
+    // different the channels are.
+    const int c = std::min(2, static_cast<int>(rng.next() * 3.0));
+    const double d = sigma_t_[c] > 0.0 ? -std::log1p(-rng.next()) / sigma_t_[c] : kInf;
+    if (d < length) {
+      const Rgb tr = transmittance(d);
+      const double pdf = (sigma_t_.x * tr.x + sigma_t_.y * tr.y + sigma_t_.z * tr.z) / 3.0;
+      if (!(pdf > 0.0)) {
+        beta = Rgb(0.0);
+        return false;
+      }
+      beta *= sigma_s_ * tr / pdf;
+      t = d;
+      return true;
+    }
+    const Rgb tr = transmittance(length);
+    const double survive = (tr.x + tr.y + tr.z) / 3.0;  // the chance of reaching the end
+    beta = survive > 0.0 ? beta * tr / survive : Rgb(0.0);
     return false;
   }
   // Null collisions against a majorant (any positive one is exact; an emitting medium without
   // extinction takes 1 per unit length).
   const double sbar = majorant_ > 0.0 ? majorant_ : 1.0;
+  // Russian roulette once the null collisions have taken most of the weight (unbiased): a
+  // dense patterned absorber then ends in a few dozen steps, not majorant x length of them.
+  const double entry = max_of(beta);
   double s = 0.0;
   for (int i = 0; i < tol::kMaxMediumCollisions; ++i) {
     s -= std::log1p(-rng.next()) / sbar;
@@ -144,6 +169,13 @@ bool CompiledMedium::free_flight(const Vec3& origin, const Vec3& dir, double len
     }
     beta *= null * ((ps + pn) / (sbar * pn));
     if (!(max_of(beta) > 0.0)) return false;
+    if (max_of(beta) < 0.1 * entry) {
+      if (rng.next() < 0.5) {
+        beta = Rgb(0.0);
+        return false;
+      }
+      beta *= 2.0;
+    }
   }
   beta = Rgb(0.0);
   return false;

@@ -6,7 +6,9 @@
 // (infinite for a ray that leaves the scene). Extinction sigma_t = absorption + scattering.
 //
 // A homogeneous medium (no density texture) is computed in closed form wherever it can be:
-// transmittance exp(-sigma_t s), emission eps (1 - exp(-sigma_t s)) / sigma_t. A heterogeneous
+// transmittance exp(-sigma_t s), emission eps (1 - exp(-sigma_t s)) / sigma_t; the path tracer
+// samples its scattering distances exactly (one channel's extinction, the three averaged in the
+// density). A heterogeneous
 // one (density in [0, 1] from a texture) is walked with null collisions against the majorant
 // max(sigma_t) (Woodcock/delta tracking; ratio tracking for transmittance), and the channels are
 // weighted as in spectral tracking (Kutz et al. 2017), so every estimate is unbiased.
