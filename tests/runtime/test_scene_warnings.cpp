@@ -59,6 +59,11 @@ TEST_CASE("the inside test follows the placement's transform and each shape's ex
   CHECK(check(cam + "difference { sphere { radius = 9 } sphere { radius = 8 } }\n").warnings.empty());
   // Open surfaces never contain the camera.
   CHECK(check(cam + "plane { normal = <0, 1, 0>  offset = 2 }\n").warnings.empty());
+  // A clear container (a box of haze around the scene) or glass is seen through: no warning.
+  const std::string big = "box { min = <-9, -9, -9>  max = <9, 9, 9>  material = material { ";
+  CHECK(check(cam + big + "transmit = 1  ior = 1  diffuse = 0  media_scattering = rgb(0.1) } }\n").warnings.empty());
+  CHECK(check(cam + big + "transmit = 0.9  ior = 1.33 } }\n").warnings.empty());
+  CHECK(check(cam + big + "color = rgb(0.5) } }\n").warnings.size() == 1);
 }
 
 TEST_CASE("what the builder skipped and an empty or unlit scene are warnings too", "[warnings]") {
