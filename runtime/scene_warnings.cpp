@@ -103,11 +103,7 @@ struct CameraSearch {
     if (shape.inverse || closed_shape(shape.geometry) == nullptr) return;
     // A clear or glass shape around the camera is seen through (a box of haze around a
     // scene, docs/rendering.md#media): no warning.
-    if (shape.material < scene.materials.size()) {
-      const render::MaterialDesc& mat = scene.materials[shape.material];
-      if (mat.transmit_texture != render::kNoId || mat.transmit.r > 0 || mat.transmit.g > 0 || mat.transmit.b > 0)
-        return;
-    }
+    if (shape.material < scene.materials.size() && render::transmits(scene.materials[shape.material])) return;
     const double det = glm::determinant(m);
     if (!std::isfinite(det) || det == 0.0) return;  // the render reports a singular transform
     const Vec3 p = Vec3(glm::inverse(m) * glm::dvec4(eye, 1.0));

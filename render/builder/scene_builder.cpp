@@ -557,8 +557,7 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
   m.fresnel = ps.boolean("fresnel", m.fresnel);
   m.roughness = non_negative(ps, "roughness", ps.number("roughness", m.roughness));
   m.medium = medium(ps);
-  const bool lets_light_in = m.transmit_texture != kNoId || m.transmit.r > 0 || m.transmit.g > 0 || m.transmit.b > 0;
-  if (m.medium != kNoId && !lets_light_in)
+  if (m.medium != kNoId && !transmits(m))
     scene_.warnings.push_back({scene_.media[m.medium].loc,
                                "this material's medium is never seen: no light enters an object whose material has "
                                "no 'transmit' (rgb(1) with ior = 1 and diffuse = 0 makes a clear container)"});

@@ -121,6 +121,11 @@ struct MaterialDesc {
   SourceRef loc;
 };
 
+// Does this material let light through at all (a zero weight is none; a transmit texture may)?
+inline bool transmits(const MaterialDesc& m) {
+  return m.transmit.r > 0.0 || m.transmit.g > 0.0 || m.transmit.b > 0.0 || m.transmit_texture != kNoId;
+}
+
 // A participating medium (POV-Ray's `media`): per unit length it absorbs `absorption`,
 // scatters `scattering` (extinction = absorption + scattering) and gives off `emission`, each
 // per channel and each times the density (1, or `density`'s value clamped to [0, 1] at each

@@ -15,9 +15,6 @@ bool nonzero(const Color& c) { return c.r != 0.0 || c.g != 0.0 || c.b != 0.0; }
 
 bool light_emits(const LightDesc& l) { return l.intensity != 0.0 && nonzero(l.color); }
 bool reflects(const MaterialDesc& m) { return nonzero(m.reflect) || m.reflect_texture != kNoId; }
-bool transmits(const MaterialDesc& m) {
-  return m.transmit.r > 0.0 || m.transmit.g > 0.0 || m.transmit.b > 0.0 || m.transmit_texture != kNoId;
-}
 
 // Every texture a material may evaluate (its color and each channel, bump and normal maps).
 template <class F>

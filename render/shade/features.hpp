@@ -106,7 +106,7 @@ struct FeatureContext {
 bool light_emits(const LightDesc& light);
 // Does this material reflect / transmit at all (a zero weight is no reflection)?
 bool reflects(const MaterialDesc& m);
-bool transmits(const MaterialDesc& m);
+// transmits(MaterialDesc) is render/scene/scene.hpp's.
 
 // The features the placed scene uses. `bvh` is decided by the World (see World::uses_bvh) and
 // added by the caller.

@@ -293,13 +293,7 @@ Integrator::Interface Integrator::interface(const MediumStack& media, uint32_t i
   // `ior` is absolute (the medium inside the object) unless `ior_relative` says it is the
   // ratio to the medium around the object (the pre-medium-stack idiom `ior = 1/1.5`).
   Interface f;
-  if (entering) {
-    f.n_from = media.current();
-    f.n_to = m.ior_relative ? f.n_from * m.ior : m.ior;
-  } else {
-    f.n_to = media.outside(instance);
-    if (!media.find(instance, f.n_from)) f.n_from = m.ior_relative ? f.n_to * m.ior : m.ior;
-  }
+  media.interface(instance, m, entering, f.n_from, f.n_to);
   return f;
 }
 
@@ -343,24 +337,18 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   MaterialScratch scratch;
   const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
   Vec3 incident = glm::normalize(ray.direction);
-  if (kMedia && has_pass_through_ && passes_through(m) &&
-      [&] {
-        const Interface f = interface(pr.media, hit.medium, m, glm::dot(hit.normal, incident) < 0.0);
-        return f.n_from == f.n_to;
-      }()) {
-    // Not there for the light: the ray goes on from the far side, in the medium beyond.
-    if (pr.passes < tol::kMaxPassThrough) {
-      const bool into = glm::dot(hit.normal, incident) < 0.0;
-      const Vec3 inward = into ? -hit.normal : hit.normal;
-      PendingRay next{Ray{offset_ray_origin(hit.point, inward, incident, hit.error), ray.direction},
-                      saturate(pr.weight * fog_t * medium_t), pr.depth, pr.media, pr.passes + 1};
-      if (into)
-        next.media.enter(hit.medium, pr.media.current(), m.medium);
-      else
-        next.media.leave(hit.medium);
-      pending.push_back(next);
+  if (kMedia && has_pass_through_ && passes_through(m)) {
+    const bool into = glm::dot(hit.normal, incident) < 0.0;
+    MediumStack beyond = pr.media;
+    if (beyond.cross_clear(hit.medium, m, into)) {
+      // Not there for the light: the ray goes on from the far side, in the medium beyond.
+      if (pr.passes < tol::kMaxPassThrough)
+        pending.push_back(PendingRay{Ray{offset_ray_origin(hit.point, into ? -hit.normal : hit.normal, incident,
+                                                           hit.error),
+                                         ray.direction},
+                                     saturate(pr.weight * fog_t * medium_t), pr.depth, beyond, pr.passes + 1});
+      return fogged(Rgb(0.0));
     }
-    return fogged(Rgb(0.0));
   }
 
   // The geometric normal decides the side: face it towards the incoming ray (leaving a solid

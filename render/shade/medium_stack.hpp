@@ -11,6 +11,7 @@
 
 #include "render/geometry/tolerances.hpp"
 #include "render/scene/scene.hpp"
+#include "render/shade/material.hpp"
 
 namespace rts::render {
 
@@ -43,6 +44,34 @@ class MediumStack {
         return 1.0;
       }
     return current();
+  }
+
+  // The indices on the two sides of a surface of `m` around `instance`, seen from the side a
+  // ray comes from (`entering`: from outside): `ior` is absolute unless `ior_relative`, and a
+  // surface left without having been entered (a camera inside) takes its own index inside.
+  void interface(uint32_t instance, const MaterialDesc& m, bool entering, double& n_from, double& n_to) const {
+    if (entering) {
+      n_from = current();
+      n_to = m.ior_relative ? n_from * m.ior : m.ior;
+    } else {
+      n_to = outside(instance);
+      if (!find(instance, n_from)) n_from = m.ior_relative ? n_to * m.ior : m.ior;
+    }
+  }
+
+  // Crosses a surface light passes through unchanged (passes_through(m), with the same index
+  // on both sides): enters or leaves `instance` and returns true. Any other surface: false,
+  // and the stack is as it was.
+  bool cross_clear(uint32_t instance, const MaterialDesc& m, bool entering) {
+    if (!passes_through(m)) return false;
+    double n_from = 1.0, n_to = 1.0;
+    interface(instance, m, entering, n_from, n_to);
+    if (n_from != n_to) return false;
+    if (entering)
+      enter(instance, n_to, m.medium);
+    else
+      leave(instance);
+    return true;
   }
 
   // Deeper nesting than the stack holds is not tracked: the path keeps the ratio of the

@@ -35,19 +35,6 @@ double reflected_fraction(const MaterialDesc& m) {
   return max_channel(sum);
 }
 
-// The indices on the two sides of a transmissive surface, from the medium stack, as the
-// Whitted integrator reads them: `ior` is absolute unless `ior_relative`.
-void interface(const MediumStack& media, uint32_t instance, const MaterialDesc& m, bool entering,
-               double& n_from, double& n_to) {
-  if (entering) {
-    n_from = media.current();
-    n_to = m.ior_relative ? n_from * m.ior : m.ior;
-  } else {
-    n_to = media.outside(instance);
-    if (!media.find(instance, n_from)) n_from = m.ior_relative ? n_to * m.ior : m.ior;
-  }
-}
-
 }  // namespace
 
 PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const std::vector<CompiledLight>& lights,
@@ -69,7 +56,7 @@ PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const
   for (std::size_t id = 0; id < scene.materials.size(); ++id) {
     if (!placed[id]) continue;
     const MaterialDesc& m = scene.materials[id];
-    if (max_channel(to_rgb(m.transmit)) > 0.0 || m.transmit_texture != kNoId) {
+    if (transmits(m)) {
       has_transmission_ = true;
       if (m.medium < media.size()) has_media_ = true;
     }
@@ -141,13 +128,7 @@ Rgb PathIntegrator::shadow(const Vec3& origin, const Vec3& dir, double end, cons
     if (!found) return t;
     const MaterialDesc& m = material(hit.instance);
     const bool into = glm::dot(hit.normal, dir) < 0.0;
-    double n_from = 1.0, n_to = 1.0;
-    if (passes_through(m)) interface(stack, hit.medium, m, into, n_from, n_to);
-    if (!passes_through(m) || n_from != n_to || !(max_channel(t) > 0.0)) return Rgb(0.0);
-    if (into)
-      stack.enter(hit.medium, n_to, m.medium);
-    else
-      stack.leave(hit.medium);
+    if (!(max_channel(t) > 0.0) || !stack.cross_clear(hit.medium, m, into)) return Rgb(0.0);
     const Vec3 next = offset_ray_origin(hit.point, into ? -hit.normal : hit.normal, dir, hit.error);
     end -= glm::dot(next - ray.origin, dir);
     ray.origin = next;
@@ -262,17 +243,11 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
     }
     const uint32_t material_id = world_.instance(hit.instance).material;
     const MaterialDesc& base = material_id < materials_.size() ? materials_[material_id] : default_material_;
-    double pass_from = 0.0, pass_to = 1.0;
     const bool into = glm::dot(hit.normal, dir) < 0.0;
-    if (has_pass_through_ && passes_through(base)) interface(media, hit.medium, base, into, pass_from, pass_to);
-    if (pass_from == pass_to) {
+    if (has_pass_through_ && media.cross_clear(hit.medium, base, into)) {
       // Not a bounce: the ray goes on from the far side, into the medium beyond, with what
       // chose it (MIS still weighs what it finds against the last real vertex).
       if (++passes > tol::kMaxPassThrough) break;
-      if (into)
-        media.enter(hit.medium, pass_to, base.medium);
-      else
-        media.leave(hit.medium);
       ray = Ray{offset_ray_origin(hit.point, into ? -hit.normal : hit.normal, dir, hit.error), dir};
       --bounce;
       continue;
@@ -300,7 +275,7 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
     Lobes lb = lobes(m, material_id, hit);
     double n_from = 1.0, n_to = 1.0;
     if (has_transmission_ && !is_black(lb.transmit)) {
-      interface(media, hit.medium, m, entering, n_from, n_to);
+      media.interface(hit.medium, m, entering, n_from, n_to);
       lb.eta = n_from / n_to;
     }
     Bsdf bsdf(lb, n, ng, -dir);
