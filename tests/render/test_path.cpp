@@ -7,6 +7,7 @@
 // standard errors (plus 1e-4 relative, as the plane seen is not quite one point): for a
 // normal mean that fails by chance with probability 5.7e-7 (the
 // renders are seeded, so a given build passes or fails every time).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -20,6 +21,9 @@
 #include "render/sample/camera.hpp"
 #include "render/sample/sampler.hpp"
 #include "render/shade/texture.hpp"
+#include "render/accel/world.hpp"
+#include "render/shade/lights.hpp"
+#include "render/shade/path/light_set.hpp"
 #include "render/shade/path/sky_distribution.hpp"
 #include "scene_fixture.hpp"
 
@@ -442,6 +446,45 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
     place(s, add_shape(s, MeshRef{0, false}, add_material(s, lamp)));
     check_within_noise(render_path(s, 8, 16), a * 2.0);
   }
+}
+
+TEST_CASE("lights are picked by power (a quarter uniformly), distant ones 1/n; the sum stays unbiased", "[path]") {
+  const double a = 0.6;
+  SceneDesc s;
+  s.settings.max_depth = 4;
+  look_down(s, 0.01, 0.5);
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, lambert(a))));
+  LightDesc dim, bright, sun;
+  dim.position = Vec3(0, 2, 0);
+  dim.intensity = 1;
+  bright.position = Vec3(0, 3, 0);
+  bright.intensity = 9;
+  sun.kind = LightKind::Directional;
+  sun.direction = Vec3(0, -1, 0);
+  sun.intensity = 0.5;
+  for (const LightDesc& l : {dim, bright, sun}) place(s, add_light(s, l));
+  FlatScene flat = flatten_scene(s);
+  World world(s, flat);
+  path::LightSet set(world, s, compile_lights(flat.lights), {});
+  // Local lights share 2/3 by 0.75 power + 0.25 uniform: powers 4 pi and 36 pi.
+  const std::vector<double> pick = set.pick_probabilities();
+  REQUIRE(pick.size() == 3);
+  CHECK(pick[0] == Approx(2.0 / 3.0 * (0.75 * 0.1 + 0.25 / 2)));
+  CHECK(pick[1] == Approx(2.0 / 3.0 * (0.75 * 0.9 + 0.25 / 2)));
+  CHECK(pick[2] == Approx(1.0 / 3.0));
+  // Whatever the probabilities, the estimate is the sum of the three lights.
+  check_within_noise(render_path(s, 8, 16), a / std::numbers::pi * (1.0 / 4 + 9.0 / 9 + 0.5));
+  // One light is always picked; a black one is never in the set.
+  SceneDesc one;
+  look_down(one, 0.01, 0.5);
+  place(one, add_shape(one, Plane{Vec3(0, 1, 0), 0.0}, add_material(one, lambert(a))));
+  dim.color = Color(0.0);
+  place(one, add_light(one, dim));
+  place(one, add_light(one, bright));
+  FlatScene flat_one = flatten_scene(one);
+  World world_one(one, flat_one);
+  CHECK(path::LightSet(world_one, one, compile_lights(flat_one.lights), {}).pick_probabilities() ==
+        std::vector<double>{1.0});
 }
 
 namespace {

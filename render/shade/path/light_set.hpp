@@ -9,8 +9,9 @@
 //                    intensity: radiance 2 I / area (no geometry: it is reached by sampling only);
 //   environment      sky radiance: the environment map (importance-sampled by its luminance,
 //                    SkyDistribution), else a non-black background colour (uniform).
-// One light is picked per shading point, uniformly (a mesh counts as one light; its triangles
-// are picked by area).
+// One light is picked per shading point: directional light and the sky each 1/n, the lights in
+// the scene by their power (luminance) with a uniform share mixed in (light_set.cpp,
+// kUniformPickShare); a mesh counts as one light, its triangles picked by area.
 #pragma once
 
 #include <cstdint>
@@ -57,7 +58,7 @@ class LightSet {
   bool has_sky() const { return sky_ != kNoEntry; }
   Rgb sky(const Vec3& direction) const;
   double pdf_sky(const Vec3& direction) const {
-    return pick_pdf_ * (sky_distribution_ ? sky_distribution_->pdf(direction) : 1.0 / (4.0 * kPi));
+    return entries_[sky_].pick * (sky_distribution_ ? sky_distribution_->pdf(direction) : 1.0 / (4.0 * kPi));
   }
 
   // What the set holds, for --stats.
@@ -65,6 +66,9 @@ class LightSet {
   bool has_delta_lights() const { return delta_lights_ > 0; }
   bool has_area_lights() const { return area_lights_ > 0; }
   std::size_t unsampled_emitters() const { return unsampled_emitters_; }
+  // Each light's probability of being picked, in the set's order: sampled emitters (by
+  // instance), then the scene's lights, then the sky.
+  std::vector<double> pick_probabilities() const;
 
  private:
   enum class Type : uint8_t { Sphere, Quad, Triangle, Mesh, Disc, Box, Point, Spot, Directional, AreaLight, Sky };
@@ -79,6 +83,8 @@ class LightSet {
     bool rect = false;               // quad: e1 and e2 orthogonal, sampled by solid angle
     uint32_t first = 0, count = 0;   // meshes: their triangles in tris_
     CompiledLight light;             // point, spot
+    double pick = 0.0;               // probability that sample() picks this light
+    double pick_cdf = 0.0;           // sum of pick up to and including this light
   };
   struct Tri {
     Vec3 p0, e1, e2;
@@ -87,6 +93,8 @@ class LightSet {
   static constexpr uint32_t kNoEntry = 0xffffffffu;
 
   void add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le);
+  // Sets each entry's pick probability: distant lights 1/n, the others by power.
+  void set_pick_probabilities();
   // Area-sampled point and normal to a solid-angle sample seen from `point`.
   bool to_solid_angle(const Vec3& point, const Vec3& on_light, const Vec3& normal, double area_pdf,
                       LightSample& out) const;
@@ -98,7 +106,6 @@ class LightSet {
   const CompiledTexture* environment_ = nullptr;
   std::optional<SkyDistribution> sky_distribution_;   // environment maps only
   Rgb background_{0.0};
-  double pick_pdf_ = 0.0;              // 1 / entries
   std::size_t shape_emitters_ = 0, delta_lights_ = 0, area_lights_ = 0, unsampled_emitters_ = 0;
 };
 
