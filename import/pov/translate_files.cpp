@@ -105,6 +105,10 @@ void Translator::include(Writer& w, const Item& it) {
   std::error_code ec;
   std::vector<std::string> dirs = {dir_};
   dirs.insert(dirs.end(), opt_.include_dirs.begin(), opt_.include_dirs.end());
+  // Last, POV-Ray's own library folder where it is installed (its Library_Path): include files
+  // that are not standard includes rts maps, such as the woods' and stones' `.map` files.
+  for (const char* lib : {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"})
+    if (fs::is_directory(lib, ec)) dirs.emplace_back(lib);
   for (const std::string& d : dirs) {
     fs::path p = fs::path(d.empty() ? "." : d) / name;
     if (fs::is_regular_file(p, ec)) {
@@ -131,7 +135,7 @@ void Translator::include(Writer& w, const Item& it) {
       w.line(fmt::format("// #include \"{}\": not in rts's standard library", name));
       return;
     }
-    error(it.loc, fmt::format("cannot find include file '{}' (searched {} and the -I folders)", name,
+    error(it.loc, fmt::format("cannot find include file '{}' (searched {}, the -I folders and POV-Ray's library folder)", name,
                               dir_.empty() ? "." : dir_));
   }
   // The user's own include: translated to its own .rts beside the scene, once.

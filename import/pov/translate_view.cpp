@@ -64,10 +64,13 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
       point_at = vector_value(*it.args[0]);
     } else if (k == "radius" && !it.args.empty()) {
       double r;
-      // POV-Ray allows a hot spot of 0 degrees; rts's radius must be above 0.
-      radius = literal_number(*it.args[0], r) && r <= 0 ? "0.01" : value(*it.args[0]);
+      // POV-Ray allows a hot spot of 0 degrees; rts's radius must be above 0. It takes the
+      // angles' cosines, so a negative angle is its opposite (`falloff -90` in its samples).
+      if (!literal_number(*it.args[0], r)) radius = "abs(" + value(*it.args[0]) + ")";
+      else radius = r == 0 ? "0.01" : fmt::format("{}", std::abs(r));
     } else if (k == "falloff" && !it.args.empty()) {
-      falloff = value(*it.args[0]);
+      double f;
+      falloff = literal_number(*it.args[0], f) ? fmt::format("{}", std::abs(f)) : "abs(" + value(*it.args[0]) + ")";
     } else if (k == "tightness" && !it.args.empty()) {
       double v;
       if (!literal_number(*it.args[0], v) || v != 0)

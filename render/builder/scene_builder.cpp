@@ -458,7 +458,13 @@ void SceneBuilder::sky_sphere(ParamSet& ps, TextureDesc& t) {
     layers = *list;
   else if (auto* one = std::get_if<TextureRef>(v))
     layers = LayersParam{{one->id}, {Color(0.0)}};
-  else if (std::holds_alternative<Color>(*v) || std::holds_alternative<Vec3>(*v) || std::holds_alternative<double>(*v))
+  else if (auto* colors = std::get_if<std::vector<Vec3>>(v)) {
+    // A list of solid colours only (`layers = [rgb(0.8, 0.9, 1)]`): colours travel as vectors.
+    for (const Vec3& c : *colors) {
+      layers.textures.push_back(kNoId);
+      layers.colors.emplace_back(c.x, c.y, c.z);
+    }
+  } else if (std::holds_alternative<Color>(*v) || std::holds_alternative<Vec3>(*v) || std::holds_alternative<double>(*v))
     layers = LayersParam{{kNoId}, {ps.color("layers", Color(0.0))}};
   else
     ps.fail(*ps.find("layers"), fmt::format("property 'layers' of sky_sphere expects a list of textures (and colors), "

@@ -386,6 +386,14 @@ TEST_CASE("sky_sphere: layers bottom first, gradient with a color map, transmit,
   CHECK(sky.sky_layers[2] == kNoId);
   CHECK(sky.sky_layer_colors[2].r == Approx(0.1));
   CHECK(sky.transform[2][0] == Approx(std::sin(30.0 * 3.14159265358979 / 180.0)));   // the sky's own rotate
+  // Solid colours alone (POV-Ray's `sky_sphere { pigment { rgb ... } }`, imported): a list of
+  // colours travels as a list of vectors and is still layers.
+  SceneDesc plain = eval_text("settings { environment = sky_sphere { layers = [rgb(0.2, 0.3, 0.4), rgb(0.5)] } }");
+  const TextureDesc& plain_sky = plain.textures[plain.settings.environment];
+  REQUIRE(plain_sky.sky_layers.size() == 2);
+  CHECK(plain_sky.sky_layers[0] == kNoId);
+  CHECK(plain_sky.sky_layer_colors[0].b == Approx(0.4));
+  CHECK(plain_sky.sky_layer_colors[1].g == Approx(0.5));
   // The two-colour gradient is unchanged without a color_map.
   CHECK(eval_text("settings { environment = gradient { axis = \"y\" } }").textures[0].kind == TextureKind::Gradient);
 
