@@ -61,10 +61,11 @@ bool MaterialProps::has(const std::string& name) const {
 void Translator::default_finish(MaterialProps& m) const {
   // POV-Ray's default texture: a black pigment, ambient 0.1, diffuse 0.6 (rts's own default
   // diffuse is 0.7), changed by #default.
+  // A texture's own finish starts from #default's and changes what it names: its own values win.
+  for (const auto& p : default_texture_.props)
+    if (p.first != "color" && p.first != "texture" && !m.has(p.first)) m.set(p.first, p.second);
   if (!m.has("ambient")) m.set("ambient", "0.1");
   if (!m.has("diffuse")) m.set("diffuse", "0.6");
-  for (const auto& p : default_texture_.props)
-    if (p.first != "color" && p.first != "texture") m.set(p.first, p.second);
 }
 
 std::string Translator::material_text(const MaterialProps& m, bool with_defaults) {
