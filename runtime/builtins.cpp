@@ -74,6 +74,17 @@ Value extreme(BuiltinCall& c) {
     n = as_list(c.args[0]).size();
     if (n == 0) c.in.fail(arg_loc(c, 0), fmt::format("'{}' of an empty list", c.def.name));
   }
+  if (n > 0 && items[0].type == Type::Vector) {
+    // Vectors: component by component (a box's corners from two points in any order).
+    glm::dvec3 best = items[0].v;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (items[i].type != Type::Vector)
+        c.in.fail(arg_loc(c, c.argc == n ? i : 0),
+                  fmt::format("'{}' of vectors needs vectors only, got {}", c.def.name, with_article(items[i].type)));
+      best = Max ? glm::max(best, items[i].v) : glm::min(best, items[i].v);
+    }
+    return Value::vector(best);
+  }
   double best = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (items[i].type != Type::Number)

@@ -268,13 +268,24 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   } else if (k == "box") {
     need(2, "two corners: box { <x1, y1, z1>, <x2, y2, z2> }");
     std::vector<double> a, c;
-    if (literal_vector(*v(0), a) && literal_vector(*v(1), c) && a.size() == 3 && c.size() == 3) {
+    // A literal vector, or a literal float promoted to <f, f, f> (`box { -0.4, 0.4 }`).
+    auto point = [](const Expr& e, std::vector<double>& out) {
+      double k;
+      if (literal_number(e, k)) {
+        out.assign(3, k);
+        return true;
+      }
+      return literal_vector(e, out) && out.size() == 3;
+    };
+    if (point(*v(0), a) && point(*v(1), c)) {
       glm::dvec3 lo(std::min(a[0], c[0]), std::min(a[1], c[1]), std::min(a[2], c[2]));
       glm::dvec3 hi(std::max(a[0], c[0]), std::max(a[1], c[1]), std::max(a[2], c[2]));
       if (lo != glm::dvec3(a[0], a[1], a[2])) comments.push_back("corners sorted: POV-Ray takes them in any order");
       props.insert(props.begin(), {"min = " + vec(lo), "max = " + vec(hi)});
     } else {
-      props.insert(props.begin(), {"min = " + vector_value(*v(0)), "max = " + vector_value(*v(1))});
+      // Computed corners may come in either order (POV-Ray takes both): sorted when evaluated.
+      const std::string a0 = vector_value(*v(0)), a1 = vector_value(*v(1));
+      props.insert(props.begin(), {fmt::format("min = min({}, {})", a0, a1), fmt::format("max = max({}, {})", a0, a1)});
     }
   } else if (k == "plane") {
     need(2, "a normal and a distance: plane { <x, y, z>, d }");

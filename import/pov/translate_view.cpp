@@ -31,6 +31,8 @@ bool literal3(const Expr* e, glm::dvec3& out) {
 
 void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
   std::string position, color = "rgb(1)", point_at = "<0, 0, 0>", radius, falloff, kind = "point_light";
+  bool area = false;                    // area_light given: its u, v, samples and disc in area_props
+  std::vector<std::string> area_props;
   std::vector<std::string> extra, xforms;
   std::string fade_distance;
   const Expr* fade_power = nullptr;
@@ -64,10 +66,9 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
       point_at = vector_value(*it.args[0]);
     } else if (k == "radius" && !it.args.empty()) {
       double r;
-      // POV-Ray allows a hot spot of 0 degrees; rts's radius must be above 0. It takes the
-      // angles' cosines, so a negative angle is its opposite (`falloff -90` in its samples).
-      if (!literal_number(*it.args[0], r)) radius = "abs(" + value(*it.args[0]) + ")";
-      else radius = r == 0 ? "0.01" : fmt::format("{}", std::abs(r));
+      // POV-Ray takes the angles' cosines, so a negative angle is its opposite (`falloff -90`
+      // in its samples).
+      radius = literal_number(*it.args[0], r) ? fmt::format("{}", std::abs(r)) : "abs(" + value(*it.args[0]) + ")";
     } else if (k == "falloff" && !it.args.empty()) {
       double f;
       falloff = literal_number(*it.args[0], f) ? fmt::format("{}", std::abs(f)) : "abs(" + value(*it.args[0]) + ")";
@@ -76,12 +77,12 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
       if (!literal_number(*it.args[0], v) || v != 0)
         unsupported(it.loc, "tightness", "radius and falloff shape the spot's edge", false);
     } else if (k == "area_light" && it.args.size() >= 4) {
-      kind = kind == "spot_light" ? "spot_area" : "area_light";
-      extra.push_back("u = " + vector_value(*it.args[0]));
-      extra.push_back("v = " + vector_value(*it.args[1]));
-      extra.push_back(fmt::format("samples = {} * {}", value(*it.args[2]), value(*it.args[3])));
+      area = true;
+      area_props.push_back("u = " + vector_value(*it.args[0]));
+      area_props.push_back("v = " + vector_value(*it.args[1]));
+      area_props.push_back(fmt::format("samples = {} * {}", value(*it.args[2]), value(*it.args[3])));
     } else if (k == "circular") {
-      extra.push_back("disc = true");
+      area_props.push_back("disc = true");
     } else if (k == "adaptive" || k == "jitter" || k == "orient" || k == "media_attenuation" ||
                k == "media_interaction") {
       // sampling refinements: rts samples area lights stratified
@@ -102,10 +103,12 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
   // (fuzz_pov: `light_source { nt { ... } }` gave `position =` with no value).
   if (position.empty())
     error(b.loc, "a light_source begins with its location vector: light_source { <x, y, z> color rgb <r, g, b> }");
-  if (kind == "spot_area") {
+  // An area light's keywords may come before or after `spotlight`: rts has no spot area light.
+  if (area && kind == "spot_light") {
     unsupported(b.loc, "spotlight area_light", "area_light or spot_light", false);
-    kind = "spot_light";
-    extra.clear();
+  } else if (area && kind == "point_light") {
+    kind = "area_light";
+    extra.insert(extra.begin(), area_props.begin(), area_props.end());
   }
   std::vector<std::string> props;
   if (kind == "directional_light") {

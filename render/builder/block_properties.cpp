@@ -106,7 +106,7 @@ constexpr PropertyInfo kPointLight[] = {
 constexpr PropertyInfo kSpotLight[] = {
     {"position", "vector", "*required*", "Where the light is."},
     {"point_at", "vector", "*required*", "The point the cone's axis goes through."},
-    {"radius", "degrees in (0, 90]", "`30`", "Full intensity within this half-angle (90: the whole half-space in front)."},
+    {"radius", "degrees in [0, 90]", "`30`", "Full intensity within this half-angle (90: the whole half-space in front; 0: the falloff cone alone)."},
     {"falloff", "degrees, radius to 90", "`45`", "Zero intensity from this half-angle."},
     RTS_LIGHT_COLOR,
     RTS_LIGHT_ATTENUATION,

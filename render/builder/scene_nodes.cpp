@@ -378,8 +378,9 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     l.point_at = ps.require_vec3("point_at");
     direction(ps, "point_at", l.point_at - l.position);
     l.radius = ps.number("radius", l.radius);
-    // 90: full intensity over the whole front half-space (POV-Ray scenes use it).
-    require(ps, "radius", l.radius > 0 && l.radius <= 90, "above 0 and at most 90 degrees", l.radius);
+    // 90: full intensity over the whole front half-space; 0: none at full intensity, the
+    // falloff cone alone (POV-Ray scenes use both).
+    require(ps, "radius", l.radius >= 0 && l.radius <= 90, "from 0 to 90 degrees", l.radius);
     l.falloff = ps.number("falloff", std::max(l.falloff, l.radius));
     require(ps, "falloff", l.falloff >= l.radius && l.falloff <= 90, ">= radius and <= 90 degrees", l.falloff);
     attenuation();

@@ -110,6 +110,10 @@ TEST_CASE("builtins", "[eval]") {
   CHECK(probe1("probe(sin(radians(90)))") == Approx(1.0));
   CHECK(probe1("probe(degrees(atan2(1, 1)))") == Approx(45.0));
   CHECK(probe1("probe(min(3, 1, 2) + max([4, 9, 2]))") == 10);
+  // Vectors component by component: a box from two corners in any order.
+  CHECK(probe1("let a = min(<1, -2, 3>, <0, 5, 4>)  probe(a.x + 10 * a.y + 100 * a.z)") == 0 - 20 + 300);
+  CHECK(probe1("let b = max([<1, -2, 3>, <0, 5, 4>, <2, 0, 0>])  probe(b.x + 10 * b.y + 100 * b.z)") == 2 + 50 + 400);
+  CHECK_THAT(test::eval_error("let c = min(<1, 2, 3>, 4)"), Catch::Contains("'min' of vectors needs vectors only, got a number"));
   CHECK(probe1("probe(clamp(5, 0, 2) + mix(0, 10, 0.25))") == 4.5);
   CHECK(probe1("probe(dot(<1,2,3>, <4,5,6>))") == 32);
   CHECK(probe1("probe(length(cross(<1,0,0>, <0,1,0>) * 3))") == 3);
