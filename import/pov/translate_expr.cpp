@@ -216,13 +216,19 @@ Text Translator::expr(const Expr& e) {
       return Text{rename(n), Type::Unknown};
     }
     case Expr::Vector: {
+      // POV-Ray's 2-D vectors (uv and spline points) promote to 3-D with z = 0 wherever a vector
+      // is used; rts's vectors have three components, so a 2-D one is written with its 0.
       std::vector<double> lit;
-      if (literal_vector(e, lit) && lit.size() >= 2) return Text{vec_text(lit), Type::Vector};
+      if (literal_vector(e, lit) && lit.size() >= 2) {
+        if (lit.size() == 2) lit.push_back(0.0);
+        return Text{vec_text(lit), Type::Vector};
+      }
       std::string s = "<";
       for (std::size_t i = 0; i < e.args.size() && i < 4; ++i) {
         Text c = expr(*e.args[i]);
         s += (i ? ", " : "") + paren(c, 7);
       }
+      if (e.args.size() == 2) s += ", 0";
       if (e.args.size() > 4) warn(e.loc, "vectors of more than 4 components are cut to 4");
       return Text{s + ">", Type::Vector};
     }

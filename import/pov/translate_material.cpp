@@ -91,8 +91,9 @@ std::string Translator::material_text(const MaterialProps& m, bool with_defaults
     // Keep the order readable: colour first, then the finish in POV-Ray's order.
     std::stable_sort(full.props.begin(), full.props.end(), [](const auto& a, const auto& b) {
       auto rank = [](const std::string& n) {
-        static const std::vector<std::string> order = {"color", "texture", "ambient", "diffuse", "specular",
-                                                       "shininess", "reflect", "transmit", "ior", "emission"};
+        static const std::vector<std::string> order = {"color", "texture", "ambient", "diffuse", "brilliance",
+                                                       "specular", "shininess", "metallic", "reflect", "transmit",
+                                                       "ior", "emission"};
         auto it = std::find(order.begin(), order.end(), n);
         return static_cast<int>(it - order.begin());
       };
@@ -359,8 +360,11 @@ void Translator::finish(const Block& b, MaterialProps& m) {
       for (const Item& v : it.block->items)
         if (v.kind == Item::Value) r = value(*v.args[0]);
       if (!r.empty()) m.set("reflect", r);
-      for (const Item& v : it.block->items)
+      for (const Item& v : it.block->items) {
         if (v.kind == Item::Keyword && v.name == "fresnel") m.set("fresnel", "true");
+        if (v.kind == Item::Keyword && v.name == "metallic")
+          unsupported(v.loc, "reflection { metallic }", "a reflect colour: rts's reflection is not tinted by angle", false);
+      }
       continue;
     }
     if (it.kind != Item::Keyword) {
@@ -399,7 +403,11 @@ void Translator::finish(const Block& b, MaterialProps& m) {
       m.set("emission", color_value(*it.args[0]));
     } else if (k == "conserve_energy" || k == "crand" || k == "reflection_exponent") {
       // no effect worth a warning in the Whitted image
-    } else if (k == "metallic" || k == "brilliance" || k == "irid" || k == "subsurface") {
+    } else if (k == "brilliance" && !v.empty()) {
+      m.set("brilliance", v);
+    } else if (k == "metallic") {
+      m.set("metallic", v.empty() ? "1" : v);   // `metallic` alone is metallic 1
+    } else if (k == "irid" || k == "subsurface") {
       unsupported(it.loc, k, "not in rts's material model", false);
     } else {
       unsupported(it.loc, k, "rts's material properties (docs/rendering.md#materials)", false);
@@ -467,7 +475,14 @@ void Translator::normal(const Block& b, MaterialProps& m) {
     }
     if (patterns.count(it.name)) {
       pattern = it.name;
-      if (!it.args.empty()) amount = value(*it.args[0]);
+      std::size_t first = 0;
+      std::vector<double> v;
+      if (it.name == "gradient" && !it.args.empty() && literal_vector(*it.args[0], v) && v.size() == 3) {
+        // `gradient x, 0.5`: the orientation first, then the amount.
+        props.push_back(std::string("axis = ") + (v[0] != 0 ? "\"x\"" : v[2] != 0 ? "\"z\"" : "\"y\""));
+        first = 1;
+      }
+      if (it.args.size() > first) amount = value(*it.args[first]);
       continue;
     }
     if (it.name == "turbulence" || it.name == "octaves" || it.name == "frequency" || it.name == "phase" ||
@@ -516,7 +531,13 @@ void Translator::texture_part(const Item& it, MaterialProps& m) {
         }
       }
       if (part.kind == Item::Value) {
-        m.base = value(*part.args[0]);  // a macro call giving a texture
+        const Expr& e = *part.args[0];
+        if (Symbol* s = e.kind == Expr::Call ? lookup(e.text) : nullptr;
+            s && s->type == Type::Macro && s->object_kind == "pigment") {
+          m.set("texture", value(e));   // a macro giving a pigment: the material's pattern
+          continue;
+        }
+        m.base = value(e);  // a macro call giving a texture
         continue;
       }
       if (part.kind == Item::Nested && is_texture_part(part.block->kind)) {

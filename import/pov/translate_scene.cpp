@@ -85,7 +85,12 @@ void Translator::item(Writer& w, const Item& it, bool top) {
     case Item::Nested: place_block(w, *it.block); return;
     case Item::Declare: declare(w, it); return;
     case Item::Macro: {
-      define(it.name, Symbol{Type::Macro, nullptr, ""});
+      // What the macro gives, when its body is one block (a pigment, a texture, an object):
+      // a texture { M(...) } of a pigment macro is then a pattern, not a material to derive.
+      std::string gives;
+      for (const Item& b : it.body)
+        if (b.kind == Item::Nested) gives = gives.empty() ? b.block->kind : "several";
+      define(it.name, Symbol{Type::Macro, nullptr, gives});
       std::string params;
       for (const std::string& p : it.params) params += (params.empty() ? "" : ", ") + rename(p);
       w.open(fmt::format("macro {}({})", rename(it.name), params));

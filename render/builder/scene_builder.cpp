@@ -542,6 +542,8 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
       throw SceneError(loc_of(ps, "highlight"), fmt::format("unknown highlight '{}' (expected phong or blinn)", lobe));
     m.blinn = lobe == "blinn";
   }
+  m.brilliance = non_negative(ps, "brilliance", ps.number("brilliance", m.brilliance));
+  m.metallic = non_negative(ps, "metallic", ps.number("metallic", m.metallic));
   if (!channel_texture("reflect", m.reflect_texture)) {
     m.reflect = ps.color("reflect", m.reflect);
     non_negative_color(ps, "reflect", m.reflect);

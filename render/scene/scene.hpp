@@ -111,6 +111,11 @@ struct MaterialDesc {
   // The highlight's lobe: Phong's (r · view)^shininess, or with `blinn` (POV-Ray's `specular`
   // + `roughness`) the half-vector's (n · h)^shininess, h = normalize(to_light + view).
   bool blinn = false;
+  // POV-Ray's empirical finish terms, Whitted only: the diffuse term is (n · l)^brilliance, and
+  // `metallic` tints the highlight towards the surface colour, less at grazing light
+  // (render/shade/material.hpp).
+  double brilliance = 1.0;
+  double metallic = 0.0;
   Color reflect{0.0};          // mirror reflection weight per channel
   Color transmit{0.0};         // transmission weight per channel (also filters shadows)
   double ior = 1.0;            // absolute index of the inside (the medium stack pairs media)

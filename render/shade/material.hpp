@@ -69,22 +69,39 @@ inline Rgb emitted_and_ambient(const MaterialDesc& m, const Rgb& base, const Rgb
 // > 0: diffuse * n_dot_l * diffuse_color, plus (when kSpecular) the highlight
 // specular * (r · view)^shininess * specular_color, r being to_light mirrored about n. The
 // caller multiplies it by the light's radiance and shadow transmittance.
+// POV-Ray's `metallic` highlight colour: the light's colour turned towards the surface's by
+// metallic * (1 - F), F POV-Ray's empirical Fresnel curve of the light's angle x = acos(n · l)
+// / (pi / 2): 0 facing the light, 1 at grazing (its lighting code, [DB 9/94]).
+inline Rgb metallic_tint(const MaterialDesc& m, const Rgb& surface, double n_dot_l) {
+  const double x = std::acos(std::clamp(n_dot_l, -1.0, 1.0)) / (0.5 * std::numbers::pi);
+  const double f = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
+  return Rgb(1.0) + m.metallic * (1.0 - f) * (surface - Rgb(1.0));
+}
+
 template <bool kSpecular>
 inline Rgb phong(const MaterialDesc& m, const Rgb& diffuse_color, const Vec3& n, const Vec3& to_light,
                  double n_dot_l, const Vec3& view) {
-  Rgb shade = m.diffuse * n_dot_l * diffuse_color;
+  // POV-Ray's brilliance: a steeper fall-off of the diffuse term (1 is Lambert's).
+  const double lambert = m.brilliance == 1.0 ? n_dot_l : std::pow(n_dot_l, m.brilliance);
+  Rgb shade = m.diffuse * lambert * diffuse_color;
   if (kSpecular && m.specular > 0.0) {
+    double lobe = 0.0;
     if (m.blinn) {
       // POV-Ray's `specular`: the half-vector between light and eye against the normal.
       Vec3 h = to_light + view;
       double len = glm::length(h);
       double n_dot_h = len > 0.0 ? glm::dot(n, h) / len : 0.0;
-      if (n_dot_h > 0.0) shade += m.specular * std::pow(n_dot_h, m.shininess) * to_rgb(m.specular_color);
-      return shade;
+      if (n_dot_h > 0.0) lobe = std::pow(n_dot_h, m.shininess);
+    } else {
+      Vec3 r = 2.0 * n_dot_l * n - to_light;  // mirror of the light direction
+      double r_dot_v = glm::dot(r, view);
+      if (r_dot_v > 0.0) lobe = std::pow(r_dot_v, m.shininess);
     }
-    Vec3 r = 2.0 * n_dot_l * n - to_light;  // mirror of the light direction
-    double r_dot_v = glm::dot(r, view);
-    if (r_dot_v > 0.0) shade += m.specular * std::pow(r_dot_v, m.shininess) * to_rgb(m.specular_color);
+    if (lobe > 0.0) {
+      Rgb highlight = m.specular * lobe * to_rgb(m.specular_color);
+      if (m.metallic > 0.0) highlight *= metallic_tint(m, diffuse_color, n_dot_l);
+      shade += highlight;
+    }
   }
   return shade;
 }

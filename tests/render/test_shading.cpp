@@ -221,6 +221,42 @@ TEST_CASE("material unit: Fresnel glass splits one budget, TIR reflects it all, 
   CHECK(specular_weights(metal, Vec3(0, -1, 0), n, 0.0, 1.0, 1.0).reflect.x == 0.5);
 }
 
+TEST_CASE("material unit: POV-Ray's brilliance steepens the diffuse term; metallic tints the highlight", "[shading]") {
+  MaterialDesc m;
+  m.diffuse = 0.5;
+  m.brilliance = 3;
+  const Vec3 n(0, 1, 0), to_light = glm::normalize(Vec3(1, 1, 0));
+  const double n_dot_l = glm::dot(n, to_light);
+  const Rgb surface(0.9, 0.5, 0.2);
+  CHECK(phong<false>(m, surface, n, to_light, n_dot_l, n).y == Approx(0.5 * std::pow(n_dot_l, 3) * 0.5));
+  // Metallic: the highlight takes the surface's colour facing the light (POV-Ray's F is 5e-7
+  // there) and the light's own colour at grazing (F = 1).
+  m.diffuse = 0;
+  m.brilliance = 1;
+  m.specular = 1;
+  m.shininess = 10;
+  m.blinn = true;
+  m.metallic = 1;
+  const Rgb facing = phong<true>(m, surface, n, n, 1.0, n);
+  CHECK(facing.x == Approx(0.9).epsilon(1e-5));
+  CHECK(facing.z == Approx(0.2).epsilon(1e-5));
+  const Vec3 grazing = glm::normalize(Vec3(1, 1e-9, 0));
+  const Rgb edge = phong<true>(m, surface, n, grazing, glm::dot(n, grazing), glm::normalize(Vec3(-1, 1e-9, 0)));
+  CHECK(edge.z / edge.x == Approx(1.0).epsilon(1e-3));
+  // Half metallic at 60 degrees: POV-Ray's curve gives F = 0.0114 there (x = 2/3).
+  m.metallic = 0.5;
+  const Vec3 l60 = glm::normalize(Vec3(std::sqrt(3.0), 1, 0));
+  const Vec3 v60 = glm::normalize(Vec3(-std::sqrt(3.0), 1, 0));
+  const double f = 0.014567225 / ((2.0 / 3.0 - 1.12) * (2.0 / 3.0 - 1.12)) - 0.011612903;
+  const Rgb mid = phong<true>(m, surface, n, l60, 0.5, v60);
+  CHECK(mid.z / mid.x == Approx((1 + 0.5 * (1 - f) * (0.2 - 1)) / (1 + 0.5 * (1 - f) * (0.9 - 1))));
+  // Left at their defaults, neither changes a thing (the Whitted images stay as they were).
+  MaterialDesc plain;
+  plain.specular = 0.3;
+  CHECK(phong<true>(plain, surface, n, to_light, n_dot_l, n).x ==
+        plain.diffuse * n_dot_l * 0.9 + 0.3 * std::pow(glm::dot(2.0 * n_dot_l * n - to_light, n), plain.shininess));
+}
+
 TEST_CASE("material unit: Phong peaks along the mirror direction; glossy rays stay above the surface", "[shading]") {
   MaterialDesc m;
   m.diffuse = 0.5;
