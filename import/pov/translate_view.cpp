@@ -243,7 +243,11 @@ void Translator::camera(Writer& w, const Block& b) {
     else props.push_back(fmt::format("look_at = {} + {}", pos, direction ? vector_value(*direction) : "<0, 0, 1>"));
     if (sky) props.push_back("up = " + vector_value(*sky));
     if (lr && lu && ld) {
-      if (R.x < 0) props.push_back("handedness = \"right\"");
+      // POV-Ray's look_at keeps the vectors' handedness, (up x direction) . right, and takes a
+      // zero one (`up z` along the default direction z, as its prism samples write) as
+      // mirrored: the picture is then right-handed.
+      const bool mirrored = look_at ? !(glm::dot(glm::cross(U, D), R) > 0) : R.x < 0;
+      if (mirrored) props.push_back("handedness = \"right\"");
       double rl = glm::length(R), ul = glm::length(U), dl = glm::length(D);
       if (ortho) {
         props.push_back("view_width = " + num(rl));
