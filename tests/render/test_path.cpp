@@ -389,6 +389,30 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
     place(s, add_shape(s, Quad{Vec3(-0.5, 1, -0.3), Vec3(1.0, 0, 0), Vec3(0, 0, 0.6)}, add_material(s, lamp)));
     check_within_noise(render_path(s, 8, 16), a * 3.0 * rect_form_factor(0.5, 0.3, 1.0));
   }
+  SECTION("a textured emissive rectangle: NEE reads the texture at each sampled point") {
+    // A checker of radiance 1 and 5 whose cells meet under the lit point: each quarter of the
+    // rectangle is a quarter of its form factor, so L = a 3 F, as for a plain Le of 3.
+    SceneDesc s = floor_scene();
+    TextureDesc checker;
+    checker.kind = TextureKind::Checker;
+    checker.color1 = Color(1.0);
+    checker.color2 = Color(5.0);
+    checker.scale = 10;
+    s.textures.push_back(checker);
+    MaterialDesc lamp = lambert(0.0);
+    lamp.diffuse = 0;
+    lamp.emission_texture = 0;
+    place(s, add_shape(s, Quad{Vec3(-0.5, 1, -0.3), Vec3(1.0, 0, 0), Vec3(0, 0, 0.6)}, add_material(s, lamp)));
+    Measured m = render_path(s, 16, 16);
+    check_within_noise(m, a * 3.0 * rect_form_factor(0.5, 0.3, 1.0));
+    FlatScene flat = flatten_scene(s);
+    World world(s, flat);
+    std::vector<CompiledTexture> textures;
+    textures.emplace_back(checker, nullptr);
+    path::LightSet set(world, s, {}, textures);
+    CHECK(set.unsampled_emitters() == 0);   // sampled by NEE, not left to bounced rays
+    CHECK(set.has_shape_emitters());
+  }
   SECTION("a skewed emissive quad (sampled by area) lights like the rectangle it shears") {
     SceneDesc s = floor_scene();
     MaterialDesc lamp = lambert(0.0);

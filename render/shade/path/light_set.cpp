@@ -68,7 +68,25 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
     if (id >= scene.materials.size()) continue;
     const MaterialDesc& m = scene.materials[id];
     if (m.emission_texture != kNoId) {
-      ++unsampled_emitters_;  // varies over the surface: found by BSDF rays only
+      // Varies over the surface: sampled when the texture reads the object point only (a uv
+      // texture is found by BSDF rays alone), and never on a CSG part.
+      const bool by_point = m.emission_texture < textures.size() && !textures[m.emission_texture].uses_uv();
+      if (!by_point || i >= world.instance_count() - world.csg_part_count()) {
+        ++unsampled_emitters_;
+        continue;
+      }
+      const std::size_t before = entries_.size();
+      add_emitter(world, scene, i, Rgb(1.0));
+      if (entries_.size() == before) continue;
+      Entry& e = entries_.back();
+      e.texture = &textures[m.emission_texture];
+      const InstanceTransform* xf = world.transform(i);
+      e.to_object = xf ? &xf->to_object : nullptr;
+      // For picking by power: the texture at the emitter's reference point (a corner or its
+      // centre), a rough guess; any guess keeps the estimate unbiased.
+      TexturePoint p;
+      p.object_point = e.to_object ? Vec3(*e.to_object * glm::dvec4(e.p0, 1.0)) : e.p0;
+      e.radiance = glm::max(to_rgb(e.texture->eval(p)), Rgb(0.0));
       continue;
     }
     Rgb le = to_rgb(m.emission);
@@ -278,6 +296,19 @@ bool LightSet::sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSampl
                 : std::upper_bound(entries_.begin(), entries_.end(), u_pick,
                                    [](double v, const Entry& x) { return v < x.pick_cdf; });
   const Entry& e = it == entries_.end() ? entries_.back() : *it;
+  if (!sample_entry(e, point, u, out)) return false;
+  if (e.texture) {
+    // Textured emission: the texture at the sampled point, in the object's space, as a ray
+    // that hits the point reads it (only textures of the object point are sampled).
+    const Vec3 on = point + out.distance * out.wi;
+    TexturePoint p;
+    p.object_point = e.to_object ? Vec3(*e.to_object * glm::dvec4(on, 1.0)) : on;
+    out.radiance = glm::min(to_rgb(e.texture->eval(p)), Rgb(tol::kMaxRadiance));
+  }
+  return true;
+}
+
+bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, LightSample& out) const {
   out.delta = false;
   switch (e.type) {
     case Type::Point:

@@ -2,7 +2,8 @@
 // (docs/path-tracing.md):
 //   emissive shapes  emitted radiance (two-sided); rectangles and spheres sampled by solid
 //                    angle (spheres by area from inside), other quads, triangles, meshes,
-//                    discs (annuli) and boxes by area (a box: a face by its area);
+//                    discs (annuli) and boxes by area (a box: a face by its area); textured
+//                    emission that reads the object point is read at the sampled point;
 //   point, spot      radiant intensity (W/sr), inverse-square falloff (spot: its cone factor);
 //   directional      irradiance (W/m^2) on a surface facing it;
 //   area_light       a two-sided emitter of the same total power as a point light of its
@@ -83,6 +84,8 @@ class LightSet {
     bool rect = false;               // quad: e1 and e2 orthogonal, sampled by solid angle
     uint32_t first = 0, count = 0;   // meshes: their triangles in tris_
     CompiledLight light;             // point, spot
+    const CompiledTexture* texture = nullptr;   // textured emission: read at the sampled point
+    const Mat4* to_object = nullptr;            // its instance's world -> object (null: identity)
     double pick = 0.0;               // probability that sample() picks this light
     double pick_cdf = 0.0;           // sum of pick up to and including this light
   };
@@ -93,6 +96,8 @@ class LightSet {
   static constexpr uint32_t kNoEntry = 0xffffffffu;
 
   void add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le);
+  // A point of entry `e` seen from `point` (its radiance untextured).
+  bool sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, LightSample& out) const;
   // Sets each entry's pick probability: distant lights 1/n, the others by power.
   void set_pick_probabilities();
   // Area-sampled point and normal to a solid-angle sample seen from `point`.
