@@ -533,8 +533,9 @@ void Translator::texture_part(const Item& it, MaterialProps& m) {
       if (part.kind == Item::Value) {
         const Expr& e = *part.args[0];
         if (Symbol* s = e.kind == Expr::Call ? lookup(e.text) : nullptr;
-            s && s->type == Type::Macro && s->object_kind == "pigment") {
-          m.set("texture", value(e));   // a macro giving a pigment: the material's pattern
+            s && s->type == Type::Macro && (s->object_kind == "pigment" || s->object_kind == "pigment colour")) {
+          // A macro giving a pigment: the material's pattern (or its colour).
+          m.set(s->object_kind == "pigment" ? "texture" : "color", value(e));
           continue;
         }
         m.base = value(e);  // a macro call giving a texture

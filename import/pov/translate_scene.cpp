@@ -1,6 +1,7 @@
 // POV-Ray statements as rts statements: diagnostics, directives, declarations and placements.
 // Lights, the camera and global settings are in translate_view.cpp; includes, files and the
 // entry point, import_pov, in translate_files.cpp.
+#include <set>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,20 @@ void Translator::item(Writer& w, const Item& it, bool top) {
       std::string gives;
       for (const Item& b : it.body)
         if (b.kind == Item::Nested) gives = gives.empty() ? b.block->kind : "several";
+      if (gives == "pigment") {
+        // A pattern rts translates (its transforms then move it), or a colour or a pattern it
+        // does not (written as the material's colour, whatever the macro gives).
+        static const std::set<std::string> patterns = {
+            "checker", "gradient", "bozo", "spotted", "granite", "marble", "wood", "agate", "onion", "leopard",
+            "wrinkles", "crackle", "cells", "bumps", "dents", "ripples", "waves", "image_map"};
+        bool pattern = false;
+        for (const Item& b : it.body)
+          if (b.kind == Item::Nested)
+            for (const Item& p : b.block->items)
+              pattern = pattern || (p.kind == Item::Keyword && patterns.count(p.name)) ||
+                        (p.kind == Item::Nested && p.block->kind == "image_map");
+        if (!pattern) gives = "pigment colour";
+      }
       define(it.name, Symbol{Type::Macro, nullptr, gives});
       std::string params;
       for (const std::string& p : it.params) params += (params.empty() ? "" : ", ") + rename(p);
