@@ -157,6 +157,20 @@ Value append(BuiltinCall& c) {
   return c.in.concat(c.args[0], Value::list(std::vector<Value>(c.args + 1, c.args + c.argc)), c.call.loc);
 }
 
+// A copy of the list with item `i` replaced: rts's lists are values, so this is how an element
+// changes (`a = with_item(a, 2, v)`; POV-Ray's `#declare A[2] = v` imports to it).
+Value with_item(BuiltinCall& c) {
+  if (c.args[0].type != Type::List) bad_arg(c, 0, "a list");
+  const std::vector<Value>& items = as_list(c.args[0]);
+  const double i = num(c, 1);
+  if (i != std::floor(i) || i < 0 || i >= static_cast<double>(items.size()))
+    c.in.fail(arg_loc(c, 1), fmt::format("index {} out of range for a list of {} element{}", c.in.text_of(c.args[1], c.call.loc),
+                                         items.size(), items.size() == 1 ? "" : "s"));
+  std::vector<Value> copy = items;
+  copy[static_cast<std::size_t>(i)] = c.args[2];
+  return Value::list(std::move(copy));
+}
+
 Value str_(BuiltinCall& c) { return Value::string(c.in.text_of(c.args[0], c.call.loc)); }
 
 Value format(BuiltinCall& c) {
@@ -308,6 +322,7 @@ const std::vector<Builtin>& builtin_table() {
       {"len", 1, 1, len},
       {"select", 3, 3, select, true},
       {"append", 2, -1, append},
+      {"with_item", 3, 3, with_item},
       {"str", 1, 1, str_},
       {"format", 1, -1, format},
       {"print", 0, -1, print},

@@ -37,17 +37,14 @@ Item Reader::directive() {
     it.local = d == "local";
     it.name = expect_name("a name after '#" + d + "'");
     declared_.insert(it.name);
-    if (accept("[")) {  // an array element: #declare A[i] = v (A[i][j]: the first index kept)
-      ++paren_;
-      ExprPtr index = expr();
-      --paren_;
-      expect("]", "to close the index");
+    if (is_punct("[")) {  // an array element: #declare A[i] = v, A[i][j] = v: args 1.. the indices
+      it.args.resize(1);
       while (accept("[")) {
-        expr();
+        ++paren_;
+        it.args.push_back(expr());
+        --paren_;
         expect("]", "to close the index");
       }
-      it.args.resize(2);
-      it.args[1] = index;
     } else {
       it.args.resize(1);
     }

@@ -213,10 +213,13 @@ ExprPtr Reader::primary() {
         }
         if (sizes.empty()) fail(at, "'array' needs its size in brackets: array[N] (or array[N] { values })");
         if (sizes.size() != 1) {
-          // A multi-dimensional array: read over (the writer warns).
+          // A multi-dimensional array: its sizes (initial values are read over; the writer warns).
           e->text = "multi";
-          if (is_punct("{")) skip_braces();
-          e->args.push_back(sizes[0]);
+          if (is_punct("{")) {
+            skip_braces();
+            e->text = "multi init";
+          }
+          e->args = std::move(sizes);
           return e;
         }
         e->args.push_back(sizes[0]);

@@ -343,9 +343,13 @@ Text Translator::expr(const Expr& e) {
       return Text{paren(a, 11) + "[" + i.s + "]", Type::Unknown, 11};
     }
     case Expr::Array: {
-      if (e.text == "multi") {
-        unsupported(e.loc, "array[..][..]", "a list of lists", true);
-        return Text{"[]", Type::List};
+      if (e.text == "multi" || e.text == "multi init") {
+        // array[n][m]: lists of lists of zeros (POV-Ray's elements start undefined).
+        if (e.text == "multi init") unsupported(e.loc, "array[..][..] { values }", "a list of lists written out", false);
+        helpers_.insert("pov_array");
+        std::string sizes;
+        for (const ExprPtr& a : e.args) sizes += (sizes.empty() ? "" : ", ") + value(*a);
+        return Text{"pov_array([" + sizes + "])", Type::List, 11};
       }
       if (e.text == "init") {
         std::string s = "[";
@@ -358,8 +362,9 @@ Text Translator::expr(const Expr& e) {
         for (int i = 0; i < static_cast<int>(n); ++i) s += i ? ", 0" : "0";
         return Text{s + "]", Type::List};
       }
-      unsupported(e.loc, "array", "a list [..] with its values", false);
-      return Text{"[]", Type::List};
+      // A computed size: a list of that many zeros, made when the scene runs.
+      helpers_.insert("pov_array");
+      return Text{"pov_array([" + value(*e.args[0]) + "])", Type::List, 11};
     }
     case Expr::Call: return call(e);
     case Expr::BlockValue:

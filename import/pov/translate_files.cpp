@@ -287,6 +287,15 @@ PovResult import_pov(const std::string& text, const PovOptions& options) {
     out.line("// POV-Ray's int(): rounds towards zero.");
     out.line("macro pov_int(x) { if x < 0 { return ceil(x) }  return floor(x) }");
   }
+  if (t.helpers_.count("pov_array")) {
+    out.blank();
+    out.line("// POV-Ray's array[n][m]...: lists (of lists) of zeros; an element changes with with_item.");
+    out.line("macro pov_array(sizes, k = 0) {");
+    out.line("    let a = []");
+    out.line("    for i in 0 .. floor(sizes[k]) { a += [select(k + 1 < len(sizes), pov_array(sizes, k + 1), 0)] }");
+    out.line("    return a");
+    out.line("}");
+  }
   out.blank();
   std::string s = out.text() + body.text();
   Writer tail;

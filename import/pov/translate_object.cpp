@@ -400,7 +400,10 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   }
   last_kind_ = kind;
   const bool in_group = !group_material_.empty();
-  bool needs_default = (place || in_group) && !textured && !has_texture(b);
+  // An untextured object a macro places takes POV-Ray's default texture only where the call
+  // puts it: inside a textured union (union { M() pigment { Red } }) it takes the union's, so
+  // the macro writes none and the group's material reaches it.
+  bool needs_default = (place || in_group) && !textured && !has_texture(b) && (in_group || macro_depth_ == 0);
   // In a group (rts's groups take no material) a member without its own texture gets the
   // group's, as POV-Ray's union gives it.
   auto material_of = [&](bool own) { return !own && in_group ? group_material_.back() : material_text(mat, true); };
@@ -442,6 +445,10 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     if (textured || needs_default) {
       group_material_.push_back(material_of(textured));
       pushed = true;
+      // What a macro call or a name places inside is translated elsewhere: the group's own
+      // material reaches its members that have none (rts's group material).
+      if (std::any_of(children.begin(), children.end(), [](const Item* c) { return c->kind == Item::Value; }))
+        props.push_back("material = " + group_material_.back());
     }
   } else if (textured || needs_default) {
     props.push_back("material = " + material_of(textured));

@@ -110,6 +110,8 @@ void Translator::item(Writer& w, const Item& it, bool top) {
       for (const std::string& p : it.params) params += (params.empty() ? "" : ", ") + rename(p);
       w.open(fmt::format("macro {}({})", rename(it.name), params));
       scopes_.emplace_back();
+      scopes_.back()[kMacroScope] = Symbol{};   // #local's reach ends here
+      ++macro_depth_;
       for (const std::string& p : it.params) define(p, Symbol{Type::Unknown, nullptr, ""});
       // A body that is one value (an object, a texture, an expression) gives it back.
       std::vector<const Item*> real;
@@ -134,6 +136,7 @@ void Translator::item(Writer& w, const Item& it, bool top) {
       } else {
         items(w, it.body, false);
       }
+      --macro_depth_;
       scopes_.pop_back();
       w.close();
       return;
@@ -242,14 +245,32 @@ void Translator::item(Writer& w, const Item& it, bool top) {
 
 void Translator::declare(Writer& w, const Item& it) {
   const std::string n = rename(it.name);
-  if (it.args.size() == 2) {  // #declare A[i] = v
-    // rts's lists are values: an element is not assigned on its own.
-    w.line(fmt::format("// not translated: {}[{}] = {}", n, value(*it.args[1]), value(*it.args[0])));
-    unsupported(it.loc, "#declare " + it.name + "[...]", "a list built with its values", false);
+  if (it.args.size() >= 2) {  // #declare A[i] = v, A[i][j] = v
+    // rts's lists are values: the element changes in a copy, A = with_item(A, i, v), nested
+    // for each further index (A = with_item(A, i, with_item(A[i], j, v))).
+    std::string v = value(*it.args[0]);
+    for (std::size_t k = it.args.size() - 1; k >= 1; --k) {
+      std::string list = n;
+      for (std::size_t j = 1; j < k; ++j) list += fmt::format("[{}]", value(*it.args[j]));
+      v = fmt::format("with_item({}, {}, {})", list, value(*it.args[k]), v);
+    }
+    w.line(fmt::format("{} = {}", n, v));
     return;
   }
   const Expr& e = *it.args[0];
-  bool exists = lookup(it.name) != nullptr && (!it.local || scopes_.back().count(it.name));
+  // POV-Ray's #local names belong to the macro or file: its #while, #for and #if open no
+  // scope, so a #local of a name the macro (or file) already has, even outside the loop it is
+  // in, assigns it (rts's loop bodies are scopes: a `let` there would start a new name each
+  // pass, and `#local Col = Col + 1` in a #while would never end).
+  bool in_pov_scope = false;
+  for (auto sc = scopes_.rbegin(); sc != scopes_.rend(); ++sc) {
+    if (sc->count(it.name)) {
+      in_pov_scope = true;
+      break;
+    }
+    if (sc->count(kMacroScope)) break;
+  }
+  bool exists = lookup(it.name) != nullptr && (!it.local || in_pov_scope);
   std::string head = exists ? n + " = " : "let " + n + " = ";
   if (e.kind == Expr::BlockValue) {
     const Block& b = *e.block;

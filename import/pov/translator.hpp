@@ -147,6 +147,8 @@ class Translator {
   std::string file_;               // the file being translated, as named
   std::string dir_;                // its folder
   std::vector<std::map<std::string, Symbol>> scopes_{1};
+  // A key no POV-Ray name can be: marks the scope a macro's body opens (#local's reach).
+  static constexpr const char* kMacroScope = "\x01macro";
   std::set<std::string> helpers_;  // helper macros the output needs (pov_if, pov_int)
   std::set<std::string> included_;
   std::set<std::string> reader_names_;  // declared names, for the reader (reader.hpp)
@@ -158,6 +160,7 @@ class Translator {
   std::map<std::string, MaterialProps> library_parts_;
   bool library_known_ = false;           // options.stdlib_dir was read: an unknown name is missing
   std::vector<std::string> group_material_;
+  int macro_depth_ = 0;   // inside a #macro's body (its objects' texture comes from the call)
   int csg_depth_ = 0;
   std::string last_kind_;  // the rts kind object() wrote last (a union may become a group)  // inside intersection/difference/merge: a union there stays CSG  // a group's material, written on its members
   // A name neither declared nor in the included library: warns (once per name) and returns true.

@@ -114,6 +114,12 @@ TEST_CASE("builtins", "[eval]") {
   CHECK(probe1("let a = min(<1, -2, 3>, <0, 5, 4>)  probe(a.x + 10 * a.y + 100 * a.z)") == 0 - 20 + 300);
   CHECK(probe1("let b = max([<1, -2, 3>, <0, 5, 4>, <2, 0, 0>])  probe(b.x + 10 * b.y + 100 * b.z)") == 2 + 50 + 400);
   CHECK_THAT(test::eval_error("let c = min(<1, 2, 3>, 4)"), Catch::Contains("'min' of vectors needs vectors only, got a number"));
+  // with_item: a copy with one element replaced; the original list is unchanged.
+  CHECK(probe1("let a = [1, 2, 3]  let b = with_item(a, 1, 20)  probe(a[1] + b[1] + b[0] + b[2] + len(b))") ==
+        2 + 20 + 1 + 3 + 3);
+  CHECK_THAT(test::eval_error("let a = with_item([1, 2], 2, 0)"), Catch::Contains("index 2 out of range for a list of 2 elements"));
+  CHECK_THAT(test::eval_error("let a = with_item([1, 2], 0.5, 0)"), Catch::Contains("index 0.5 out of range"));
+  CHECK_THAT(test::eval_error("let a = with_item(3, 0, 0)"), Catch::Contains("a list"));
   CHECK(probe1("probe(clamp(5, 0, 2) + mix(0, 10, 0.25))") == 4.5);
   CHECK(probe1("probe(dot(<1,2,3>, <4,5,6>))") == 32);
   CHECK(probe1("probe(length(cross(<1,0,0>, <0,1,0>) * 3))") == 3);
