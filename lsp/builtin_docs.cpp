@@ -36,6 +36,7 @@ constexpr BuiltinDoc kBuiltins[] = {
     {"len", "len(x)", "The length of a list, string (bytes) or range."},
     {"select", "select(c, a, b)", "a when the bool c is true, else b (only the chosen one is evaluated)."},
     {"append", "append(xs, v, [more, ...])", "A new list: xs followed by the values (xs is unchanged)."},
+    {"with_item", "with_item(xs, i, v)", "A new list: xs with item i (0-based) replaced by v (xs is unchanged)."},
     {"str", "str(x)", "x as text."},
     {"format", "format(template, [args, ...])", "Text with each {} replaced by the next argument ({{ and }} for braces)."},
     {"print", "print([args, ...])", "Writes file:line:col: print: args to stderr."},
