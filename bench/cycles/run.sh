@@ -5,6 +5,7 @@
 #
 #   bench/cycles/run.sh [OUTDIR] [SAMPLES] [SEEDS]      (defaults: build/cycles 256 4)
 #   SCENES="rough_glass" NO_TIMING=1 bench/cycles/run.sh    (some scenes, no equal-error timing)
+#   SCENES="caustic env_lit" TIMING_SCENES="caustic env_lit" bench/cycles/run.sh   (their timing)
 #
 # Everything runs on one thread under `nice` (the comparison is per CPU second, and the build
 # machine is shared). Outputs: OUTDIR/<scene>.sbs.png (rts | Cycles | 4x |difference|), the
@@ -41,12 +42,15 @@ for scene in ${SCENES:-cornell caustic rough_metal env_lit rough_glass}; do
 done | tee compare.txt
 
 [[ -n "${NO_TIMING:-}" ]] && exit 0
-# Equal error on the Cornell box: the reference is the mean of every render above (rts's and
-# Cycles', which agree); each engine renders with fresh seeds at 16, 64 and 256 spp.
+# Equal error (the Cornell box, or TIMING_SCENES="cornell caustic ..." of those rendered
+# above): the reference is the mean of every render above (rts's and Cycles', which agree);
+# each engine renders with fresh seeds at 16, 64 and 256 spp.
 {
-  echo "spp engine cpu_s rmse"
-  for spp in 16 64 256; do
-    echo "$spp rts $(rts_cpu cornell t.rts.$spp.pfm $spp 101) $($PY "$ROOT/bench/cycles/rmse.py" t.rts.$spp.pfm cornell.rts.*.pfm cornell.cy.*.pfm)"
-    echo "$spp cycles $(cycles cornell t.cy.$spp.pfm $spp 101 | cut -d' ' -f2) $($PY "$ROOT/bench/cycles/rmse.py" t.cy.$spp.pfm cornell.rts.*.pfm cornell.cy.*.pfm)"
+  echo "scene spp engine cpu_s rmse"
+  for scene in ${TIMING_SCENES:-cornell}; do
+    for spp in 16 64 256; do
+      echo "$scene $spp rts $(rts_cpu $scene t.rts.$spp.pfm $spp 101) $($PY "$ROOT/bench/cycles/rmse.py" t.rts.$spp.pfm $scene.rts.*.pfm $scene.cy.*.pfm)"
+      echo "$scene $spp cycles $(cycles $scene t.cy.$spp.pfm $spp 101 | cut -d' ' -f2) $($PY "$ROOT/bench/cycles/rmse.py" t.cy.$spp.pfm $scene.rts.*.pfm $scene.cy.*.pfm)"
+    done
   done
 } | tee timing.txt
