@@ -14,6 +14,8 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Rgb to_rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
+// Rec. 709 luminance: what the sky's importance grid and the lights' power ranking weigh.
+double luminance(const Rgb& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 bool is_black(const Rgb& c) { return !(std::max({c.x, c.y, c.z}) > 0.0); }
 
 Vec3 point_to_world(const InstanceTransform* xf, const Vec3& p) {
@@ -126,8 +128,7 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
   if (scene.settings.environment < textures.size()) {
     environment_ = &textures[scene.settings.environment];
     sky_distribution_.emplace([this](const Vec3& d) {
-      Rgb c = sky(d);
-      return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+      return luminance(sky(d));
     });
   }
   background_ = to_rgb(scene.settings.background);
@@ -149,7 +150,6 @@ void LightSet::set_pick_probabilities() {
   // with kUniformPickShare: an open emitter sends pi A L from each side, a closed one from its
   // outside only; a point light 4 pi I, a spot over its cone, an area_light 4 pi I (radiance
   // 2 I / A, two-sided).
-  auto luminance = [](const Rgb& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
   auto distant = [](const Entry& e) { return e.type == Type::Directional || e.type == Type::Sky; };
   std::vector<double> power(entries_.size(), 0.0);
   double total = 0.0;
