@@ -116,14 +116,18 @@ std::string Translator::pigment_value(const Block& b) {
   return "rgb(0)";
 }
 
+bool Translator::pigment_pattern(const std::string& k) {
+  static const std::set<std::string> patterns = {"bozo", "spotted", "granite", "marble", "wood", "agate", "onion",
+                                                 "leopard", "wrinkles", "crackle", "cells", "bumps", "dents",
+                                                 "ripples", "waves", "gradient"};
+  return patterns.count(k) > 0;
+}
+
 void Translator::pigment(const Block& b, MaterialProps& m) {
   std::string pattern;       // a pattern block's name (checker, marble, ...)
   std::vector<std::string> colors, pattern_props, xforms;
   std::string map;           // color_map as an rts list
   double filter = 0, transmit = 0;
-  static const std::set<std::string> patterns = {"bozo", "spotted", "granite", "marble", "wood", "agate", "onion",
-                                                 "leopard", "wrinkles", "crackle", "cells", "bumps", "dents",
-                                                 "ripples", "waves", "gradient"};
   static const std::set<std::string> unsupported_patterns = {
       "brick", "hexagon", "spiral1", "spiral2", "quilted", "facets", "average", "slope", "radial", "mandel",
       "julia", "magnet", "planar", "spherical", "cylindrical", "boxed", "toroidal", "density_file", "object",
@@ -174,7 +178,7 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
         for (const ExprPtr& a : it.args) colors.push_back(color_value(*a));
         continue;
       }
-      if (patterns.count(k)) {
+      if (pigment_pattern(k)) {
         pattern = k;
         if (k == "gradient" && !it.args.empty()) {
           std::vector<double> v;

@@ -1,7 +1,6 @@
 // POV-Ray statements as rts statements: diagnostics, directives, declarations and placements.
 // Lights, the camera and global settings are in translate_view.cpp; includes, files and the
 // entry point, import_pov, in translate_files.cpp.
-#include <set>
 #include <string>
 #include <vector>
 
@@ -94,14 +93,11 @@ void Translator::item(Writer& w, const Item& it, bool top) {
       if (gives == "pigment") {
         // A pattern rts translates (its transforms then move it), or a colour or a pattern it
         // does not (written as the material's colour, whatever the macro gives).
-        static const std::set<std::string> patterns = {
-            "checker", "gradient", "bozo", "spotted", "granite", "marble", "wood", "agate", "onion", "leopard",
-            "wrinkles", "crackle", "cells", "bumps", "dents", "ripples", "waves", "image_map"};
         bool pattern = false;
         for (const Item& b : it.body)
           if (b.kind == Item::Nested)
             for (const Item& p : b.block->items)
-              pattern = pattern || (p.kind == Item::Keyword && patterns.count(p.name)) ||
+              pattern = pattern || (p.kind == Item::Keyword && (pigment_pattern(p.name) || p.name == "checker")) ||
                         (p.kind == Item::Nested && p.block->kind == "image_map");
         if (!pattern) gives = "pigment colour";
       }

@@ -79,6 +79,9 @@ class Translator {
   std::string float_value(const Expr& e) { return expr(e).s; }
   // Literal values, when the expression is one (after folding x, y, z, unary minus, k * v).
   static bool literal_vector(const Expr& e, std::vector<double>& out);
+  // Is `k` a pigment pattern rts translates as a pattern block (checker and image_map have
+  // forms of their own)?
+  static bool pigment_pattern(const std::string& k);
   static bool literal_number(const Expr& e, double& out);
   std::string rename(const std::string& pov_name) const;  // rts's reserved words get a '_'
 
