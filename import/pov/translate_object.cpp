@@ -244,7 +244,10 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
                    it.name == "split_union") {
           // no effect on the picture rts makes (or rts's behaviour already)
         } else if (it.name == "no_shadow") {
-          unsupported(it.loc, "no_shadow", "shadows = false on the lights", true);
+          if (csg_depth_ > 0)  // rts: a CSG block casts its shadow as a whole
+            unsupported(it.loc, "no_shadow", "no_shadow on the whole CSG block", true);
+          else
+            props.push_back("casts_shadow = false");
         } else if (it.name == "no_image") {
           unsupported(it.loc, "no_image", "leave the object out", false);
         } else {
@@ -431,6 +434,8 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     for (const std::string& p : props) {
       if (p == "inverse = true") {
         s = "(" + s + ") with { inverse = true }";
+      } else if (p == "casts_shadow = false") {
+        s = "group { " + s + "  casts_shadow = false }";  // whatever it places casts none
       } else {
         warn(b.loc, "'" + p + "' on a reused object is not translated");
       }

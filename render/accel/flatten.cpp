@@ -30,9 +30,10 @@ void check_transform(const Mat4& m, const SourceRef& loc) {
 // `instanced`: by group index, the groups placed as FlatGroups instead of copied (may be
 // shorter than the group list: then nothing is instanced). `inherited`: the nearest enclosing
 // group's material (kNoId: none); a group reached with one is copied, never instanced, since
-// its shapes show that material here and maybe another elsewhere.
+// its shapes show that material here and maybe another elsewhere. `casts`: false inside a
+// group with casts_shadow = false.
 void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& parent, int depth,
-                   const std::vector<bool>& instanced, MaterialId inherited, FlatScene& out) {
+                   const std::vector<bool>& instanced, MaterialId inherited, bool casts, FlatScene& out) {
   if (depth > tol::kMaxGroupDepth)
     throw RenderError(child.loc, "groups nested more than " + std::to_string(tol::kMaxGroupDepth) +
                                      " deep (a group containing itself?)");
@@ -44,7 +45,7 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
     case NodeKind::Shape:
       if (node.index >= scene.shapes.size()) throw RenderError(node.loc, "internal: unknown shape");
       check_transform(m, child.loc);
-      out.add_shape(node.index, m, inherited);
+      out.add_shape(node.index, m, inherited, casts && scene.shapes[node.index].casts_shadow);
       break;
     case NodeKind::Light:
       if (node.index >= scene.lights.size()) throw RenderError(node.loc, "internal: unknown light");
@@ -54,18 +55,19 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
     case NodeKind::Csg:
       if (node.index >= scene.csgs.size()) throw RenderError(node.loc, "internal: unknown CSG block");
       check_transform(m, child.loc);
-      out.csgs.push_back(FlatCsg{node.index, m, node.loc, inherited});
+      out.csgs.push_back(FlatCsg{node.index, m, node.loc, inherited, casts && scene.csgs[node.index].casts_shadow});
       break;
     case NodeKind::Group: {
       if (node.index >= scene.groups.size()) throw RenderError(node.loc, "internal: unknown group");
       if (inherited == kNoId && node.index < instanced.size() && instanced[node.index]) {
         check_transform(m, child.loc);
-        out.groups.push_back(FlatGroup{node.index, m, child.loc});
+        out.groups.push_back(FlatGroup{node.index, m, child.loc, casts && scene.groups[node.index].casts_shadow});
         break;
       }
       const GroupDesc& g = scene.groups[node.index];
       MaterialId mat = g.material != kNoId ? g.material : inherited;
-      for (const Child& c : g.children) flatten_child(scene, c, m, depth + 1, instanced, mat, out);
+      for (const Child& c : g.children)
+        flatten_child(scene, c, m, depth + 1, instanced, mat, casts && g.casts_shadow, out);
       break;
     }
   }
@@ -85,14 +87,14 @@ LightDesc transform_light(const LightDesc& light, const Mat4& m) {
 
 FlatScene flatten_instance(const SceneDesc& scene, const Child& instance) {
   FlatScene out;
-  flatten_child(scene, instance, Mat4(1.0), 0, {}, kNoId, out);
+  flatten_child(scene, instance, Mat4(1.0), 0, {}, kNoId, true, out);
   return out;
 }
 
 FlatScene flatten_scene(const SceneDesc& scene) {
   FlatScene out;
   out.instanced = instanced_groups(scene);
-  for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out.instanced, kNoId, out);
+  for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out.instanced, kNoId, true, out);
   return out;
 }
 
@@ -100,7 +102,7 @@ FlatScene flatten_group(const SceneDesc& scene, const std::vector<bool>& instanc
   FlatScene out;
   static const std::vector<bool> none;
   const std::vector<bool>& nested = level + 1 < kMaxInstanceLevels ? instanced : none;
-  for (const Child& c : scene.groups[group].children) flatten_child(scene, c, Mat4(1.0), level + 1, nested, kNoId, out);
+  for (const Child& c : scene.groups[group].children) flatten_child(scene, c, Mat4(1.0), level + 1, nested, kNoId, true, out);
   return out;
 }
 
@@ -148,11 +150,12 @@ std::vector<bool> instanced_groups(const SceneDesc& scene) {
       if (node.kind == NodeKind::Shape) {
         if (node.index >= scene.shapes.size()) { ok = false; break; }
         const ShapeDesc& s = scene.shapes[node.index];
-        ok = kShapeInfos[s.geometry.index()].bounded && material_ok(s.material);
+        // A shape that casts no shadow is told apart by its instance at the top level only.
+        ok = kShapeInfos[s.geometry.index()].bounded && material_ok(s.material) && s.casts_shadow;
         ++count_here;
       } else if (node.kind == NodeKind::Group && node.index < n) {
         if (state[node.index] == Unknown) self(self, node.index, depth + 1);
-        ok = state[node.index] == Done && eligible[node.index];
+        ok = state[node.index] == Done && eligible[node.index] && scene.groups[node.index].casts_shadow;
         count_here += shapes[node.index];
       } else {
         ok = false;  // lights, CSG blocks

@@ -26,6 +26,7 @@ struct FlatCsg {
   Mat4 to_world{1.0};
   SourceRef loc;               // the block
   MaterialId inherited = kNoId;  // the enclosing group's material (for parts with none)
+  bool casts_shadow = true;      // false: the block or a group around it has casts_shadow = false
 };
 
 // One placement of an instanced group: World traces it as one object whose contents (the
@@ -34,6 +35,7 @@ struct FlatGroup {
   uint32_t group = 0;          // index into SceneDesc::groups
   Mat4 to_world{1.0};
   SourceRef loc;               // where it was placed
+  bool casts_shadow = true;    // false: the group or one around it has casts_shadow = false
 };
 
 struct FlatScene {
@@ -49,8 +51,12 @@ struct FlatScene {
   // material (`group { ... material = m }`), which a shape without its own shows; empty in
   // scenes without group materials, which pay nothing for them.
   std::vector<MaterialId> inherited;
+  // By shape, once any shape casts no shadow (its own casts_shadow, or an enclosing group's):
+  // 1 for those; empty in scenes where every shape casts one.
+  std::vector<uint8_t> shadowless;
 
-  void add_shape(uint32_t shape, const Mat4& to_world, MaterialId inherited_material = kNoId) {
+  void add_shape(uint32_t shape, const Mat4& to_world, MaterialId inherited_material = kNoId,
+                 bool casts_shadow = true) {
     FlatShape fs{shape, kNoId};
     if (to_world != Mat4(1.0)) {
       fs.transform = static_cast<uint32_t>(transforms.size());
@@ -60,6 +66,10 @@ struct FlatScene {
       inherited.resize(shapes.size(), kNoId);
       inherited.push_back(inherited_material);
     }
+    if (!casts_shadow || !shadowless.empty()) {
+      shadowless.resize(shapes.size(), 0);
+      shadowless.push_back(casts_shadow ? 0 : 1);
+    }
     shapes.push_back(fs);
   }
   // What shapes[i] shows: its own material, else its group's (kNoId: the default).
@@ -67,6 +77,7 @@ struct FlatScene {
     const MaterialId own = scene.shapes[shapes[i].shape].material;
     return own != kNoId || i >= inherited.size() ? own : inherited[i];
   }
+  bool casts_shadow(std::size_t i) const { return i >= shadowless.size() || shadowless[i] == 0; }
   const Mat4& to_world(const FlatShape& fs) const {
     static const Mat4 identity(1.0);
     return fs.transform == kNoId ? identity : transforms[fs.transform];
@@ -76,7 +87,8 @@ struct FlatScene {
 // A group is instanced when it is placed at least twice (two Child entries name it), holds at
 // least kMinInstancedGroupShapes shapes, and holds nothing that needs world-space identity:
 // only bounded shapes (and groups of them) whose materials neither transmit nor emit (media
-// are paired by instance, emitters are sampled by instance), no lights, no CSG. Below the
+// are paired by instance, emitters are sampled by instance), no lights, no CSG, nothing inside
+// that casts no shadow (shadow rays skip top-level instances only). Below the
 // shape count, copying the shapes into the top-level BVH is cheaper to trace than an extra
 // ray transform per group, and costs little memory. Instances nest kMaxInstanceLevels deep at
 // most (each level is a recursion of the traversal); deeper instanced groups are copied

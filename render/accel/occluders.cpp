@@ -62,6 +62,7 @@ bool World::occluder_candidates(const ShadowRegion& region, OccluderCandidates& 
   out.count = 0;
   out.plane_count = 0;
   if (!region.box.valid()) return false;  // also NaN
+  if (!shadowless_.empty()) return false;  // the traversal skips what casts no shadow
   // An untransformed plane with the light's corners on one side cannot block a ray from an
   // apex on that side too: a floor under a light, seen from a point on it, is left out (its
   // test was most of the per-ray cost). The apex may lie 1e-14 above the plane (the offset

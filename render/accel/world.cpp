@@ -79,6 +79,15 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   meshes_.resize(scene.meshes.size());
   std::vector<Instance> bounded, unbounded, parts;
   std::vector<AABB> boxes;
+  // Whether each bounded and unbounded instance casts no shadow, kept only when one does not.
+  bool any_shadowless = !flat.shadowless.empty();
+  for (const FlatCsg& fc : flat.csgs) any_shadowless = any_shadowless || !fc.casts_shadow;
+  for (const FlatGroup& fg : flat.groups) any_shadowless = any_shadowless || !fg.casts_shadow;
+  std::vector<uint8_t> bounded_shadowless, unbounded_shadowless;
+  auto keep = [&](std::vector<Instance>& to, std::vector<uint8_t>& flags, const Instance& inst, bool casts) {
+    to.push_back(inst);
+    if (any_shadowless) flags.push_back(casts ? 0 : 1);
+  };
   // Sized once: grown by doubling, the box array (48 bytes per object) and the instances left
   // their outgrown blocks resident in the heap through the BVH build.
   const std::size_t objects = flat.shapes.size() + flat.groups.size() + flat.csgs.size();
@@ -94,10 +103,10 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
                             flat.material(scene, i)))
       continue;
     if (unbounded_shape) {
-      unbounded.push_back(inst);
+      keep(unbounded, unbounded_shadowless, inst, flat.casts_shadow(i));
       continue;
     }
-    bounded.push_back(inst);
+    keep(bounded, bounded_shadowless, inst, flat.casts_shadow(i));
     boxes.push_back(world_bounds);
   }
   // Instanced groups: each group's contents built once, each placement one instance.
@@ -109,7 +118,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
       Instance inst;
       AABB world_bounds;
       if (!add_group_instance(gi, fg.to_world, inst, world_bounds)) continue;
-      bounded.push_back(inst);
+      keep(bounded, bounded_shadowless, inst, fg.casts_shadow);
       boxes.push_back(world_bounds);
     }
   }
@@ -122,9 +131,9 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     has_transmissive_ = has_transmissive_ || inst.transmissive;
     if (!world_bounds.valid()) continue;  // an empty intersection: nothing to hit
     if (!world_bounds.finite()) {
-      unbounded.push_back(inst);
+      keep(unbounded, unbounded_shadowless, inst, fc.casts_shadow);
     } else {
-      bounded.push_back(inst);
+      keep(bounded, bounded_shadowless, inst, fc.casts_shadow);
       boxes.push_back(world_bounds);
     }
   }
@@ -135,6 +144,10 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   for (Instance& p : unbounded) {
     planes_.push_back(static_cast<uint32_t>(instances_.size()));
     instances_.push_back(p);
+  }
+  if (any_shadowless) {
+    shadowless_ = std::move(bounded_shadowless);
+    shadowless_.insert(shadowless_.end(), unbounded_shadowless.begin(), unbounded_shadowless.end());
   }
   // Group parts next: they are reached through their group's placements only.
   const uint32_t group_base = static_cast<uint32_t>(instances_.size());
@@ -147,6 +160,8 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     for (uint32_t& i : c.leaf_instance) i += base;
   instances_.insert(instances_.end(), parts.begin(), parts.end());
   csg_parts_ = parts.size();
+  // Group and CSG parts are reached through their placement or block only: never skipped.
+  if (any_shadowless) shadowless_.resize(instances_.size(), 0);
 }
 
 namespace {
@@ -219,9 +234,9 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
   return intersect_instance(inst, world_ray, ray_t, scratch);
 }
 
-bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only) const {
-  SurfaceHit best;
-  uint32_t best_instance = 0;
+template <bool kSkipShadowless>
+bool World::closest(const Ray& ray, Interval ray_t, bool transmissive_only, SurfaceHit& best,
+                    uint32_t& best_instance) const {
   bool have_best = false;
   // Coincident surfaces (coplanar overlapping triangles, a box face on a plane) compute t's
   // that differ only by rounding, so "closest" would pick one or the other pixel by pixel
@@ -232,6 +247,8 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   // Instance i hit within t_range: keep it as the closest so far and end the range there.
   auto closer = [&](uint32_t i, Interval& t_range) {
     if (transmissive_only && !instances_[i].transmissive) return false;
+    if constexpr (kSkipShadowless)
+      if (shadowless_[i]) return false;
     SurfaceHit h;
     if (!intersect_instance(instances_[i], ray, t_range, h)) return false;
     if (have_best) {
@@ -253,6 +270,15 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
     for (uint32_t i = 0; i < bounded_count_; ++i) found = closer(i, ray_t) || found;
   }
   for (uint32_t i : planes_) found = closer(i, ray_t) || found;
+  return found;
+}
+
+bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only, bool shadow_ray) const {
+  SurfaceHit best;
+  uint32_t best_instance = 0;
+  const bool found = shadow_ray && !shadowless_.empty()
+                         ? closest<true>(ray, ray_t, transmissive_only, best, best_instance)
+                         : closest<false>(ray, ray_t, transmissive_only, best, best_instance);
   if (!found) return false;
   // A CSG block's hit shows one of its leaves: that leaf's instance has the material, uv and
   // transform of the surface; the block stays the medium.
@@ -316,7 +342,14 @@ glm::dvec2 World::surface_uv(const WorldHit& hit) const {
 }
 
 bool World::occluded(const Ray& ray, Interval ray_t, bool opaque_only) const {
+  return shadowless_.empty() ? occluded_impl<false>(ray, ray_t, opaque_only) : occluded_impl<true>(ray, ray_t, opaque_only);
+}
+
+template <bool kSkipShadowless>
+bool World::occluded_impl(const Ray& ray, Interval ray_t, bool opaque_only) const {
   auto blocks = [&](uint32_t i, const Interval& t_range) {
+    if constexpr (kSkipShadowless)
+      if (shadowless_[i]) return false;
     return !(opaque_only && instances_[i].transmissive) && occluded_instance(instances_[i], ray, t_range);
   };
   for (uint32_t i : planes_)
@@ -331,10 +364,17 @@ bool World::occluded(const Ray& ray, Interval ray_t, bool opaque_only) const {
 }
 
 bool World::shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& out) const {
+  return shadowless_.empty() ? shadow_crossings_impl<false>(ray, ray_t, out) : shadow_crossings_impl<true>(ray, ray_t, out);
+}
+
+template <bool kSkipShadowless>
+bool World::shadow_crossings_impl(const Ray& ray, Interval ray_t, ShadowCrossings& out) const {
   out.count = 0;
   // Instance i on the segment: an opaque one blocks; a transmissive one adds each of its own
   // crossings (a sphere has two), stepping past each by the same offset as a closest-hit walk.
   auto visit = [&](uint32_t i) {
+    if constexpr (kSkipShadowless)
+      if (shadowless_[i]) return false;
     const Instance& inst = instances_[i];
     if (!inst.transmissive) return occluded_instance(inst, ray, ray_t);
     Interval range = ray_t;

@@ -132,19 +132,24 @@ class World {
   // `specialize`: a scene of at most kMaxObjectsWithoutBvh bounded objects gets no BVH.
   World(const SceneDesc& scene, const FlatScene& flat, bool specialize = true);
 
-  // Closest hit; with `transmissive_only`, opaque instances are ignored.
-  bool intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only = false) const;
-  // Any hit (early exit); with `opaque_only`, transmissive instances are ignored.
+  // Closest hit; with `transmissive_only`, opaque instances are ignored; with `shadow_ray`,
+  // so are the objects that cast no shadow (casts_shadow = false).
+  bool intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transmissive_only = false,
+                 bool shadow_ray = false) const;
+  // Any hit (early exit) of a shadow ray: objects that cast no shadow are ignored; with
+  // `opaque_only`, transmissive instances are too.
   bool occluded(const Ray& ray, Interval ray_t, bool opaque_only = false) const;
   bool has_transmissive() const { return has_transmissive_; }
+  // Whether any object casts no shadow (shadow rays then test each instance's flag).
+  bool has_shadowless() const { return !shadowless_.empty(); }
   // One any-hit traversal of [ray_t]: true (blocked) at the first opaque hit, or when the ray
   // crosses tol::kMaxShadowSurfaces transmissive surfaces or more; otherwise every crossing of
   // a transmissive surface is in `out` (each instance is re-tested only along its own
   // crossings, instead of re-walking the whole scene with closest-hit steps).
   bool shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& out) const;
   // The leaves whose boxes meet `region` (its box, and no side plane leaves them outside),
-  // into `out`; false (and `out` unusable) when there are more than OccluderCandidates::kMax or
-  // the region is not a box (NaN).
+  // into `out`; false (and `out` unusable) when there are more than OccluderCandidates::kMax,
+  // the region is not a box (NaN), or some object casts no shadow.
   bool occluder_candidates(const ShadowRegion& region, OccluderCandidates& out) const;
   // occluded(ray, ray_t) for a segment inside the region `candidates` were found for: the same
   // answer, testing only the candidates' planes and leaves (box first, as traversal does).
@@ -181,6 +186,15 @@ class World {
 
  private:
   Ray object_ray(const Instance& inst, const Ray& world_ray) const;
+  // The traversals behind intersect, occluded and shadow_crossings; kSkipShadowless: the
+  // instances flagged in shadowless_ are not tested (only scenes that have some pay for it).
+  template <bool kSkipShadowless>
+  bool closest(const Ray& ray, Interval ray_t, bool transmissive_only, SurfaceHit& best,
+               uint32_t& best_instance) const;
+  template <bool kSkipShadowless>
+  bool occluded_impl(const Ray& ray, Interval ray_t, bool opaque_only) const;
+  template <bool kSkipShadowless>
+  bool shadow_crossings_impl(const Ray& ray, Interval ray_t, ShadowCrossings& out) const;
   bool intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                           SurfaceHit& hit) const;
   bool occluded_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t) const;
@@ -248,6 +262,8 @@ class World {
   std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded
   bool use_bvh_ = true;
   bool has_transmissive_ = false;
+  // By instance, once some top-level instance casts no shadow: 1 for those; empty otherwise.
+  std::vector<uint8_t> shadowless_;
   std::size_t csg_parts_ = 0;
   bool csg_pruning_ = true;
 };

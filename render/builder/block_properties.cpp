@@ -170,10 +170,12 @@ constexpr PropertyInfo kSkySphere[] = {
 constexpr PropertyInfo kCsg[] = {
     {"material", "material", "none", "The material of the parts that have none of their own."},
     {"inverse", "bool", "`false`", "Swap inside and outside."},
+    {"casts_shadow", "bool", "`true`", "`false`: the block casts no shadow (POV-Ray's no_shadow)."},
 };
 
 constexpr PropertyInfo kGroup[] = {
     {"material", "material", "none", "The material of the members that have none of their own (POV-Ray's texture on a union)."},
+    {"casts_shadow", "bool", "`true`", "`false`: no member casts a shadow (POV-Ray's no_shadow on a union)."},
 };
 
 constexpr BlockInfo kBlocks[] = {
@@ -199,8 +201,11 @@ constexpr BlockInfo kBlocks[] = {
 };
 
 constexpr PropertyInfo kShapeMaterial{"material", "material", "none", "The shape's material."};
+constexpr PropertyInfo kShapeCastsShadow{"casts_shadow", "bool", "`true`",
+                                         "`false`: shadow rays pass the shape; the camera and reflections still see "
+                                         "it (POV-Ray's no_shadow)."};
 
-// Shapes: their descriptor's properties and `material`, built once.
+// Shapes: `material`, their descriptor's properties and `casts_shadow`, built once.
 struct ShapeBlocks {
   std::array<std::vector<PropertyInfo>, kShapeKindCount> props;
   std::array<BlockInfo, kShapeKindCount> infos;
@@ -208,6 +213,7 @@ struct ShapeBlocks {
     for (std::size_t k = 0; k < kShapeKindCount; ++k) {
       props[k].push_back(kShapeMaterial);
       for (const PropertyInfo& p : kShapeInfos[k].properties) props[k].push_back(p);
+      props[k].push_back(kShapeCastsShadow);
       infos[k] = BlockInfo{kShapeInfos[k].name, "A shape (docs/shapes.md).", props[k]};
     }
   }

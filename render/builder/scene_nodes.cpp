@@ -37,6 +37,7 @@ const std::array<std::vector<std::string_view>, kShapeKindCount>& shape_property
     for (std::size_t k = 0; k < kShapeKindCount; ++k) {
       names[k].push_back("material");
       for (const PropertyInfo& p : kShapeInfos[k].properties) names[k].push_back(p.name);
+      names[k].push_back("casts_shadow");
     }
     return names;
   }();
@@ -231,6 +232,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   // unknown property, and the names each kind lists stay its descriptor's.
   if (const ShapeInfo* info = find_shape(kind); info && info->closure != Closure::Open)
     s.inverse = ps.boolean("inverse", false);
+  s.casts_shadow = ps.boolean("casts_shadow", true);
   if (build_described(std::make_index_sequence<kShapeKindCount>(), kind, ps, s.geometry)) {
     // built by its descriptor
   } else if (kind == "triangle") {
@@ -422,6 +424,7 @@ NodeId SceneBuilder::group(std::vector<Child> children, ParamSet& ps) {
   ps.set_valid_names(&kGroupNames);
   GroupDesc g{std::move(children), kNoId};
   if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", "group", "material")) g.material = ref->id;
+  g.casts_shadow = ps.boolean("casts_shadow", true);
   ps.check_unused(kGroupNames);
   scene_.groups.push_back(std::move(g));
   return add_node(scene_, NodeKind::Group, scene_.groups.size() - 1, ps.loc());
@@ -494,10 +497,20 @@ NodeId SceneBuilder::csg(std::string_view kind, std::vector<Child> children, Par
     if (it == mesh_closures_.end()) it = mesh_closures_.emplace(&m, mesh_closure(m)).first;
     return it->second;
   };
-  for (const Child& c : children)
+  for (const Child& c : children) {
     if (std::string why = csg_refusal(scene_, c.node, kind, closure_of); !why.empty()) throw SceneError(c.loc, why);
+    // A block is one object to shadow rays: a part's own casts_shadow cannot apply.
+    const Node& n = scene_.nodes[c.node];
+    if ((n.kind == NodeKind::Shape && !scene_.shapes[n.index].casts_shadow) ||
+        (n.kind == NodeKind::Group && !scene_.groups[n.index].casts_shadow) ||
+        (n.kind == NodeKind::Csg && !scene_.csgs[n.index].casts_shadow))
+      scene_.warnings.push_back({c.loc, fmt::format("casts_shadow = false on a part of '{}' has no effect: a CSG "
+                                                    "block casts its shadow as a whole (give the block "
+                                                    "casts_shadow = false)", kind)});
+  }
   if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) d.material = ref->id;
   d.inverse = ps.boolean("inverse", false);
+  d.casts_shadow = ps.boolean("casts_shadow", true);
   ps.check_unused(kCsgNames);
   d.children = std::move(children);
   scene_.csgs.push_back(std::move(d));

@@ -280,6 +280,8 @@ struct ShapeDesc {
   MaterialId material = kNoId;   // kNoId: the default material (inside CSG: the block's)
   SourceRef loc;
   bool inverse = false;          // closed shapes in CSG: the solid is everything outside the surface
+  // false: shadow rays pass it (POV-Ray's no_shadow); camera and bounced rays still see it.
+  bool casts_shadow = true;
 };
 
 // ---- constructive solid geometry (POV-Ray's semantics) ------------------------------------
@@ -420,6 +422,7 @@ struct GroupDesc {
   // The members' default (`group { ... material = m }`, POV-Ray's texture on a union): a
   // member without a material of its own shows it; kNoId: none, the enclosing one's.
   MaterialId material = kNoId;
+  bool casts_shadow = true;        // false: none of its members casts a shadow
 };
 
 struct CsgDesc {
@@ -427,6 +430,7 @@ struct CsgDesc {
   std::vector<Child> children;     // shape, CSG or group nodes (a group is a union)
   MaterialId material = kNoId;     // the children's default
   bool inverse = false;            // the solid is everything outside the result
+  bool casts_shadow = true;        // false: shadow rays pass the whole block
 };
 
 struct SceneDesc {

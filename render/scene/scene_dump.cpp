@@ -143,7 +143,8 @@ std::string shape_text(const ShapeDesc& s) {
     }
   };
   return std::visit(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material)) +
-         (s.inverse ? " inverse true" : "");
+         (s.inverse ? " inverse true" : "") +
+         (s.casts_shadow ? "" : " casts_shadow false");
 }
 
 std::string light_text(const LightDesc& l) {
@@ -274,12 +275,14 @@ void SceneDesc::dump(std::ostream& out) const {
       case NodeKind::Group:
         out << fmt::format("group children {}", groups[n.index].children.size());
         if (groups[n.index].material != kNoId) out << fmt::format(" material {}", id(groups[n.index].material));
+        if (!groups[n.index].casts_shadow) out << " casts_shadow false";
         break;
       case NodeKind::Csg: {
         static const char* kOps[] = {"union", "intersection", "difference", "merge"};
         const CsgDesc& d = csgs[n.index];
         out << fmt::format("{} children {} material {}{}", kOps[static_cast<int>(d.op)], d.children.size(),
                            id(d.material), d.inverse ? " inverse true" : "");
+        if (!d.casts_shadow) out << " casts_shadow false";
         break;
       }
     }

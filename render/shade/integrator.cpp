@@ -208,7 +208,7 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
   Rgb t(1.0);
   for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
     WorldHit hit;
-    if (!world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true)) return t;
+    if (!world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true, /*shadow_ray=*/true)) return t;
     MaterialScratch scratch;
     Rgb kt = to_rgb(shading_material(material(hit.instance), world_, hit, textures_, scratch).transmit);
     t *= glm::clamp(kt, 0.0, 1.0);
@@ -489,7 +489,7 @@ Rgb Integrator::media_shadow(Ray ray, double end, const MediumStack& media) cons
   Rgb t(1.0);
   for (int i = 0; i < tol::kMaxShadowSurfaces; ++i) {
     WorldHit hit;
-    const bool found = world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true);
+    const bool found = world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true, /*shadow_ray=*/true);
     if (const CompiledMedium* medium = medium_of(stack))
       t *= medium->transmittance_marched(ray.origin, dir, (found ? hit.t : end) * len, media_samples_);
     if (!found) return t;

@@ -50,11 +50,12 @@ TEST_CASE("block property tables: complete entries, known kinds, documented name
       CHECK(docs.find(fmt::format("`{}`", p.name)) != std::string::npos);
     }
   }
-  // Shapes come from their ShapeTraits, with `material`.
+  // Shapes come from their ShapeTraits, with `material` first and `casts_shadow` last.
   const BlockInfo* sphere = find_block_info("sphere");
   REQUIRE(sphere);
-  CHECK(sphere->properties.size() == 3);
+  CHECK(sphere->properties.size() == 4);
   CHECK(sphere->properties[0].name == "material");
+  CHECK(sphere->properties[3].name == "casts_shadow");
   CHECK(find_block_info("teapot") == nullptr);
 }
 

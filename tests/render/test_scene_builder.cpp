@@ -94,7 +94,7 @@ TEST_CASE("builder validation messages", "[builder]") {
           p.add("radius", 1.0, at(1, 10));
           p.add("raduis", 1.0, at(1, 20));
           b.shape("sphere", p);
-        }) == "unknown property 'raduis' for sphere; did you mean 'radius'? (sphere takes material, center, radius)");
+        }) == "unknown property 'raduis' for sphere; did you mean 'radius'? (sphere takes material, center, radius, casts_shadow)");
   CHECK(scene_error([&] {
           ParamSet p("settings", at(1));
           p.add("width", 0.0, at(1, 10));

@@ -30,7 +30,7 @@ TEST_CASE("errors inside macros carry one note per active call, innermost first"
 
 TEST_CASE("builder errors become located language errors", "[errors]") {
   Diagnostic d = eval_diagnostic("macro ball(r) { sphere { radius = r  centre = <0,0,0> } }\nball(1)");
-  CHECK(d.message == "unknown property 'centre' for sphere; did you mean 'center'? (sphere takes material, center, radius)");
+  CHECK(d.message == "unknown property 'centre' for sphere; did you mean 'center'? (sphere takes material, center, radius, casts_shadow)");
   CHECK(d.loc.line == 1);
   CHECK(d.loc.col == 38);
   REQUIRE(d.notes.size() == 1);

@@ -122,7 +122,7 @@ Rgb PathIntegrator::shadow(const Vec3& origin, const Vec3& dir, double end, cons
   Rgb t(1.0);
   for (int i = 0; i <= tol::kMaxPassThrough; ++i) {
     WorldHit hit;
-    const bool found = world_.intersect(ray, Interval(0.0, end), hit);
+    const bool found = world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/false, /*shadow_ray=*/true);
     if (const CompiledMedium* medium = medium_of(stack))
       t *= medium->transmittance(ray.origin, dir, found ? hit.t : end, rng);
     if (!found) return t;
