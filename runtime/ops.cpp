@@ -121,19 +121,20 @@ Value binary_op(ast::BinaryOp op, const Value& a, const Value& b, SourceLoc loc)
                                          with_article(a.type), with_article(b.type)));
   if (!is_arith(op)) type_error(op, a, b, loc);
 
-  // Vectors and colors, component-wise, and scaled by numbers (never mixed with each other).
+  // Vectors and colors, component-wise (never mixed with each other); a number with one of
+  // them stands for all three components, as in POV-Ray and GLSL (`v + 1`, `1 / v`).
   if (op != BinaryOp::Pow && op != BinaryOp::Mod) {
     glm::dvec3 r;
     Type t;
     if (is_triple(a.type) && a.type == b.type) {
       t = a.type;
       for (int i = 0; i < 3; ++i) r[i] = arith(op, a.v[i], b.v[i], loc);
-    } else if (is_triple(a.type) && b.type == Type::Number && (op == BinaryOp::Mul || op == BinaryOp::Div)) {
+    } else if (is_triple(a.type) && b.type == Type::Number) {
       t = a.type;
       for (int i = 0; i < 3; ++i) r[i] = arith(op, a.v[i], b.v.x, loc);
-    } else if (a.type == Type::Number && is_triple(b.type) && op == BinaryOp::Mul) {
+    } else if (a.type == Type::Number && is_triple(b.type)) {
       t = b.type;
-      r = a.v.x * b.v;
+      for (int i = 0; i < 3; ++i) r[i] = arith(op, a.v.x, b.v[i], loc);
     } else if (a.type == Type::String && b.type == Type::String && op == BinaryOp::Add) {
       return Value::string(as_string(a) + as_string(b));
     } else if (a.type == Type::List && b.type == Type::List && op == BinaryOp::Add) {

@@ -43,19 +43,28 @@ TEST_CASE("vectors and colors are component-wise and scale by numbers", "[values
   CHECK(c.type == Type::Color);
   CHECK(c.v == glm::dvec3(0.5, 0.25, 0));
   CHECK(unary_op(ast::UnaryOp::Neg, a, {}).v == glm::dvec3(-1, -2, -3));
+  // A number with a vector or color stands for all three components (POV-Ray, GLSL).
+  CHECK(binary_op(BinaryOp::Add, a, Value::number(1), {}).v == glm::dvec3(2, 3, 4));
+  CHECK(binary_op(BinaryOp::Sub, Value::number(1), a, {}).v == glm::dvec3(0, -1, -2));
+  CHECK(binary_op(BinaryOp::Div, Value::number(6), a, {}).v == glm::dvec3(6, 3, 2));
+  Value d = binary_op(BinaryOp::Sub, Value::color({1, 0.5, 0.25}), Value::number(0.25), {});
+  CHECK(d.type == Type::Color);
+  CHECK(d.v == glm::dvec3(0.75, 0.25, 0));
 }
 
 TEST_CASE("operator type errors name both operands", "[values]") {
   CHECK(op_error(BinaryOp::Add, Value::vector({1, 2, 3}), Value::string("x")) == "cannot add a vector and a string");
   CHECK(op_error(BinaryOp::Add, Value::vector({1, 2, 3}), Value::color({1, 2, 3})) ==
         "cannot add a vector and a color");
-  CHECK(op_error(BinaryOp::Sub, Value::number(1), Value::vector({1, 2, 3})) == "cannot subtract a number and a vector");
+  CHECK(op_error(BinaryOp::Sub, Value::string("x"), Value::vector({1, 2, 3})) == "cannot subtract a string and a vector");
+  CHECK(op_error(BinaryOp::Mod, Value::vector({1, 2, 3}), Value::number(2)) == "cannot take the remainder of a vector and a number");
   CHECK(op_error(BinaryOp::Lt, Value::vector({1, 2, 3}), Value::number(1)).find("cannot compare") == 0);
 }
 
 TEST_CASE("division by zero and non-finite results are errors", "[values]") {
   CHECK(op_error(BinaryOp::Div, Value::number(1), Value::number(0)) == "division by zero");
   CHECK(op_error(BinaryOp::Div, Value::vector({1, 1, 1}), Value::number(0)) == "division by zero");
+  CHECK(op_error(BinaryOp::Div, Value::number(1), Value::vector({1, 0, 1})) == "division by zero");
   CHECK(op_error(BinaryOp::Pow, Value::number(10), Value::number(400)) == "arithmetic produced an infinite value");
   CHECK(op_error(BinaryOp::Pow, Value::number(-8), Value::number(1.0 / 3)) == "arithmetic produced NaN (not a number)");
 }
