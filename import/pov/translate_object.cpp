@@ -479,12 +479,15 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   scopes_.emplace_back();
   const bool csg = kind == "intersection" || kind == "difference" || kind == "merge" || kind == "union";
   if (csg) ++csg_depth_;
-  for (const Item* c : children) {
-    if (c->kind == Item::Nested) {
-      w.comments(c->comments);
-      object(w, *c->block, "", false);
-    } else {
-      item(w, *c, false);
+  {
+    BodyFlag body(in_block_body_, true);
+    for (const Item* c : children) {
+      if (c->kind == Item::Nested) {
+        w.comments(c->comments);
+        object(w, *c->block, "", false);
+      } else {
+        item(w, *c, false);
+      }
     }
   }
   if (csg) --csg_depth_;

@@ -66,6 +66,10 @@ void Translator::hoist(Writer& w, const std::vector<Item>& body) {
 
 void Translator::item(Writer& w, const Item& it, bool top) {
   w.comments(it.comments);
+  // A macro's, loop's or condition's body is rts statements: `name = value` assigns there.
+  const bool opens_body = it.kind == Item::Macro || it.kind == Item::While || it.kind == Item::For ||
+                          it.kind == Item::Switch || (it.kind == Item::If && !it.ifdef);
+  BodyFlag body(in_block_body_, opens_body ? false : in_block_body_);
   switch (it.kind) {
     case Item::Value: {
       // A macro call is a statement in rts too (it places what the macro makes); any other
@@ -250,7 +254,9 @@ void Translator::declare(Writer& w, const Item& it) {
       for (std::size_t j = 1; j < k; ++j) list += fmt::format("[{}]", value(*it.args[j]));
       v = fmt::format("with_item({}, {}, {})", list, value(*it.args[k]), v);
     }
+    if (in_block_body_) w.open("if true");  // directly in a block, `name = value` is a property
     w.line(fmt::format("{} = {}", n, v));
+    if (in_block_body_) w.close();
     return;
   }
   const Expr& e = *it.args[0];
@@ -267,6 +273,16 @@ void Translator::declare(Writer& w, const Item& it) {
     if (sc->count(kMacroScope)) break;
   }
   bool exists = lookup(it.name) != nullptr && (!it.local || in_pov_scope);
+  if (exists && in_block_body_) {
+    // Directly in a block, rts reads `name = value` as the block's property.
+    w.open("if true");
+    {
+      BodyFlag statements(in_block_body_, false);
+      declare(w, it);
+    }
+    w.close();
+    return;
+  }
   std::string head = exists ? n + " = " : "let " + n + " = ";
   if (e.kind == Expr::BlockValue) {
     const Block& b = *e.block;

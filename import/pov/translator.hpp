@@ -165,6 +165,15 @@ class Translator {
   std::vector<std::string> group_material_;
   int macro_depth_ = 0;   // inside a #macro's body (its objects' texture comes from the call)
   int csg_depth_ = 0;
+  // Whether statements are being written directly in an object block's body, where rts reads
+  // `name = value` as a property: an assignment there is wrapped in `if true { ... }`.
+  bool in_block_body_ = false;
+  struct BodyFlag {  // sets in_block_body_ for a scope, restoring it after
+    bool& flag;
+    bool saved;
+    BodyFlag(bool& f, bool v) : flag(f), saved(f) { f = v; }
+    ~BodyFlag() { flag = saved; }
+  };
   std::string last_kind_;  // the rts kind object() wrote last (a union may become a group)  // inside intersection/difference/merge: a union there stays CSG  // a group's material, written on its members
   // A name neither declared nor in the included library: warns (once per name) and returns true.
   bool missing_name(Loc at, const std::string& name, const std::string& what);

@@ -234,8 +234,9 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
   return intersect_instance(inst, world_ray, ray_t, scratch);
 }
 
+// Inlined into intersect: a call per ray would cost scenes that have no shadowless object.
 template <bool kSkipShadowless>
-bool World::closest(const Ray& ray, Interval ray_t, bool transmissive_only, SurfaceHit& best,
+[[gnu::always_inline]] inline bool World::closest(const Ray& ray, Interval ray_t, bool transmissive_only, SurfaceHit& best,
                     uint32_t& best_instance) const {
   bool have_best = false;
   // Coincident surfaces (coplanar overlapping triangles, a box face on a plane) compute t's

@@ -65,10 +65,6 @@ inline Rgb emitted_and_ambient(const MaterialDesc& m, const Rgb& base, const Rgb
   return to_rgb(m.emission) + m.ambient * base * ambient_light;
 }
 
-// The Phong response to one light from unit direction `to_light` with n_dot_l = n · to_light
-// > 0: diffuse * n_dot_l * diffuse_color, plus (when kSpecular) the highlight
-// specular * (r · view)^shininess * specular_color, r being to_light mirrored about n. The
-// caller multiplies it by the light's radiance and shadow transmittance.
 // POV-Ray's `metallic` highlight colour: the light's colour turned towards the surface's by
 // metallic * (1 - F), F POV-Ray's empirical Fresnel curve of the light's angle x = acos(n · l)
 // / (pi / 2): 0 facing the light, 1 at grazing (its lighting code, [DB 9/94]).
@@ -78,6 +74,10 @@ inline Rgb metallic_tint(const MaterialDesc& m, const Rgb& surface, double n_dot
   return Rgb(1.0) + m.metallic * (1.0 - f) * (surface - Rgb(1.0));
 }
 
+// The Phong response to one light from unit direction `to_light` with n_dot_l = n · to_light
+// > 0: diffuse * n_dot_l * diffuse_color, plus (when kSpecular) the highlight
+// specular * (r · view)^shininess * specular_color, r being to_light mirrored about n. The
+// caller multiplies it by the light's radiance and shadow transmittance.
 template <bool kSpecular>
 inline Rgb phong(const MaterialDesc& m, const Rgb& diffuse_color, const Vec3& n, const Vec3& to_light,
                  double n_dot_l, const Vec3& view) {
