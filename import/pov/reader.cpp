@@ -13,8 +13,7 @@ namespace detail {
 
 bool is_raw_block(const std::string& kind) {
   static const std::set<std::string> raw = {"function", "spline", "text", "sphere_sweep", "polygon", "bicubic_patch",
-                                            "julia_fractal", "parametric", "quadric", "poly", "cubic", "quartic",
-                                            "ovus", "lemon", "polynomial"};
+                                            "julia_fractal", "parametric", "quadric", "ovus", "lemon", "polynomial"};
   return raw.count(kind) > 0;
 }
 
@@ -137,7 +136,11 @@ std::shared_ptr<Block> Reader::block() {
     skip_braces();
     return b;
   }
+  // A poly's, quartic's or cubic's coefficients are one vector of up to 84 components.
+  const bool saved_long = long_vectors_;
+  long_vectors_ = b->kind == "poly" || b->kind == "quartic" || b->kind == "cubic";
   b->items = items(b.get(), {});
+  long_vectors_ = saved_long;
   if (!accept("}"))
     fail(peek().loc, fmt::format("expected '}}' to close the '{}' block opened at line {}, got {}", b->kind,
                                  open.line, describe(peek())));

@@ -164,9 +164,10 @@ ExprPtr Reader::primary() {
           fail(peek().loc, fmt::format("expected ',' or '>' in the vector opened at line {}:{}, got {}", at.line,
                                        at.col, describe(peek())));
         // POV-Ray's vectors have 2 to 5 components (a one-component <x> was written to rts,
-        // which cannot read it: fuzz_pov).
-        if (e->args.size() < 2 || e->args.size() > 5)
-          fail(at, fmt::format("a vector has 2 to 5 components, this one {}", e->args.size()));
+        // which cannot read it: fuzz_pov); a poly's coefficients up to 84.
+        const std::size_t most = long_vectors_ ? kMaxPolyCoefficients : 5;
+        if (e->args.size() < 2 || e->args.size() > most)
+          fail(at, fmt::format("a vector has 2 to {} components, this one {}", most, e->args.size()));
         return e;
       }
       break;

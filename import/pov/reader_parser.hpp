@@ -54,6 +54,9 @@ class Reader {
   // & | and ?: only there, so `box { <a> <b> }` is two vectors, not a comparison. A vector's
   // components are outside again.
   int paren_ = 0;
+  // Inside a poly, quartic or cubic block: a vector may hold its coefficients (order 6: 84).
+  bool long_vectors_ = false;
+  static constexpr std::size_t kMaxPolyCoefficients = 84;
 
   // ---- tokens ----
   const Token& peek(std::size_t ahead = 0) const {

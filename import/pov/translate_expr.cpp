@@ -187,7 +187,12 @@ Text Translator::expr(const Expr& e) {
     case Expr::Name: {
       const std::string& n = e.text;
       if (auto v = function_vars_.find(n); v != function_vars_.end()) return Text{v->second, Type::Float};
-      if (Symbol* s = lookup(n)) return Text{rename(n), s->type};
+      if (Symbol* s = lookup(n)) {
+        // colors.inc's Clear is white with filter 1: a pigment of it lets light through (the
+        // faces of a CSG box that only cuts, as in POV-Ray's quartic demos).
+        if (n == "Clear" && library_names_.count(n)) return Text{"rgb(1)", Type::Color, 12, 1.0, 0.0};
+        return Text{rename(n), s->type};
+      }
       if (n == "x" || n == "y" || n == "z") {
         std::vector<double> v;
         literal_vector(e, v);

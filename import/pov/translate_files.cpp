@@ -23,7 +23,7 @@ namespace {
 const std::map<std::string, std::string>& standard_includes() {
   static const std::map<std::string, std::string> m = {
       {"colors.inc", "colors.inc"},   {"colours.inc", "colors.inc"}, {"consts.inc", "consts.inc"},
-      {"shapes2.inc", "shapes2.inc"},
+      {"shapes2.inc", "shapes2.inc"}, {"shapesq.inc", "shapesq.inc"},
       {"ior.inc", "consts.inc"},      {"metals.inc", "metals.inc"},  {"golds.inc", "metals.inc"},
       {"glass.inc", "glass.inc"},     {"textures.inc", "textures.inc"}, {"shapes.inc", "shapes.inc"},
       {"skies.inc", "skies.inc"},     {"math.inc", ""},              {"transforms.inc", ""},
@@ -35,7 +35,7 @@ const std::map<std::string, std::string>& standard_includes() {
 }
 const std::set<std::string>& unshipped_includes() {
   static const std::set<std::string> s = {"stars.inc",
-                                          "shapesq.inc", "shapes_old.inc", "chars.inc",
+                                          "shapes_old.inc", "chars.inc",
                                           "skies.inc.old", "sunpos.inc", "screen.inc", "logo.inc", "rad_def.inc",
                                           "glass_old.inc", "meshmaker.inc", "makegrass.inc", "stdcam.inc",
                                           "stdinc.inc", "potions.inc", "fonts.inc"};

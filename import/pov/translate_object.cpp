@@ -13,7 +13,7 @@ namespace rts::import::pov {
 bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
                                               "triangle", "smooth_triangle", "mesh", "mesh2", "superellipsoid", "sor", "lathe", "prism",
-                                              "height_field", "isosurface", "union",
+                                              "height_field", "isosurface", "poly", "quartic", "cubic", "union",
                                               "intersection", "difference", "merge", "object"};
   return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
 }
@@ -21,7 +21,7 @@ bool Translator::is_object_kind(const std::string& k) {
 bool Translator::is_unsupported_shape(const std::string& k) {
   static const std::set<std::string> kinds = {"text",
                                               "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
-                                              "parametric", "quadric", "poly", "cubic", "quartic", "ovus", "lemon",
+                                              "parametric", "quadric", "ovus", "lemon",
                                               "polynomial"};
   return kinds.count(k) > 0;
 }
@@ -46,7 +46,8 @@ bool is_spline_keyword(const std::string& k) {
 bool closed_kind(const std::string& k) {
   return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
          k == "superellipsoid" || k == "sor" || k == "lathe" || k == "prism" || k == "blob" || k == "height_field" ||
-         k == "isosurface" || k == "union" || k == "intersection" || k == "difference" || k == "merge";
+         k == "isosurface" || k == "poly" || k == "quartic" || k == "cubic" || k == "union" || k == "intersection" ||
+         k == "difference" || k == "merge";
 }
 
 bool is_texture_part(const std::string& k) {
@@ -304,6 +305,19 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   } else if (k == "torus") {
     need(2, "two radii: torus { major, minor }");
     props.insert(props.begin(), {"major = " + value(*v(0)), "minor = " + value(*v(1))});
+  } else if (k == "quartic" || k == "cubic" || k == "poly") {
+    // rts's poly, with POV-Ray's order of the coefficients.
+    const bool general = k == "poly";
+    need(general ? 2 : 1, general ? "an order and its coefficients: poly { order, <c1, c2, ...> }"
+                                  : "its coefficients: quartic { <c1, ..., c35> } (cubic: 20)");
+    kind = "poly";
+    const Expr& c = *v(general ? 1 : 0);
+    if (c.kind != Expr::Vector)
+      error(c.loc, fmt::format("'{}' needs its coefficients written as one vector <c1, c2, ...>", k));
+    std::string list;
+    for (const ExprPtr& a : c.args) list += (list.empty() ? "" : ", ") + value(*a);
+    props.insert(props.begin(), {"order = " + (general ? value(*v(0)) : std::string(k == "quartic" ? "4" : "3")),
+                                 "coefficients = [" + list + "]"});
   } else if (k == "disc") {
     need(3, "a centre, a normal and a radius: disc { <c>, <n>, r }");
     std::vector<std::string> p = {"center = " + vector_value(*v(0)), "normal = " + vector_value(*v(1)),

@@ -100,6 +100,14 @@ inline constexpr double kSingularDeterminant = 1e-300;
 // Lengths below this are treated as zero (degenerate axes, zero radii, null vectors).
 inline constexpr double kTinyLength = 1e-300;
 
+// A poly's polynomial along a ray (render/geometry/shapes/poly.hpp) has its roots isolated
+// inside Cauchy's bound. A leading coefficient that is tiny but not zero (often rounding noise
+// of top-degree terms that cancel along the ray) is kept: its far roots are then far away, and
+// the crossings stay consistent with the polynomial's sign, as CSG's parity needs (dropping
+// it made a lower-degree polynomial with roots of its own). Only a bound beyond this, where the
+// isolation's powers of the bound would overflow, drops the leading term.
+inline constexpr double kPolyFarthestRoot = 1e250;
+
 // A shadow ray stops this far (relative to the light distance) before a point light, so the
 // light's own position never counts as an occluder.
 inline constexpr double kShadowEndRelative = 1e-9;

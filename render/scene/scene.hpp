@@ -272,8 +272,16 @@ struct Prism {
   bool conic = false;                // conic_sweep: the outline scaled by y from the apex at the origin
 };
 
+// POV-Ray's poly (quartic, cubic): the surface sum c x^i y^j z^k = 0 over i + j + k <= order,
+// the solid where the sum is negative. Only the terms with a non-zero coefficient are kept.
+struct PolyTerm { double c = 0.0; uint8_t i = 0, j = 0, k = 0; };
+struct Poly {
+  int order = 4;
+  std::vector<PolyTerm> terms;
+};
+
 using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,
-                                   Isosurface, Blob, HeightField, Sor, Lathe, Prism>;
+                                   Isosurface, Blob, HeightField, Sor, Lathe, Prism, Poly>;
 
 struct ShapeDesc {
   ShapeGeometry geometry;

@@ -127,6 +127,11 @@ std::string shape_text(const ShapeDesc& s) {
       if (g.conic) out += " sweep conic";
       return out + (g.open ? " open true" : "");
     }
+    std::string operator()(const Poly& g) {
+      std::string out = fmt::format("poly order {} terms", g.order);
+      for (const PolyTerm& t : g.terms) out += fmt::format(" {}*x^{}y^{}z^{}", num(t.c), t.i, t.j, t.k);
+      return out;
+    }
     std::string operator()(const HeightField& g) {
       if (!g.data) return "height_field empty";
       return fmt::format("height_field {}x{} heights {}..{} smooth {} water_level {}", g.data->nx, g.data->nz,

@@ -20,6 +20,7 @@ enum class Feature : uint8_t {
   // primitive kinds, in ShapeGeometry's order (a shape's feature is its variant index; its
   // name is its block kind's): checked below
   Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, Mesh, Quad, Torus, Superellipsoid, Isosurface, Blob, HeightField, Sor, Lathe, Prism,
+  Poly,
   // material channels
   Reflection, Transmission, Glossiness, Fresnel, Texture, ImageTexture, Pattern, Emission, Specular, Ambient,
   // lights
@@ -60,7 +61,8 @@ static_assert(Feature::Sphere == shape_feature(shape_index<Sphere>()) &&
                   Feature::HeightField == shape_feature(shape_index<HeightField>()) &&
                   Feature::Sor == shape_feature(shape_index<Sor>()) &&
                   Feature::Lathe == shape_feature(shape_index<Lathe>()) &&
-                  Feature::Prism == shape_feature(shape_index<Prism>()),
+                  Feature::Prism == shape_feature(shape_index<Prism>()) &&
+                  Feature::Poly == shape_feature(shape_index<Poly>()),
               "the shape Features follow ShapeGeometry's order");
 
 // "sphere", "reflection", "area_light"... (the names --stats and the JSON report use).

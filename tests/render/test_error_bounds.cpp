@@ -118,6 +118,14 @@ T sample(SceneDesc& s) {
     g.height2 = 0.8;
     prism_setup(g);
     return g;
+  } else if constexpr (std::is_same_v<T, Poly>) {
+    // A tanglecube (a rounded cube with a hole through each face): 16 x^4 - 20 x^2 + 16 y^4 -
+    // 20 y^2 + 16 z^4 - 20 z^2 + 11.8 = 0, about 1.05 across.
+    Poly g;
+    g.order = 4;
+    g.terms = {PolyTerm{16, 4, 0, 0}, PolyTerm{-20, 2, 0, 0}, PolyTerm{16, 0, 4, 0}, PolyTerm{-20, 0, 2, 0},
+               PolyTerm{16, 0, 0, 4}, PolyTerm{-20, 0, 0, 2}, PolyTerm{11.8, 0, 0, 0}};
+    return g;
   } else {
     static_assert(kNoSample<T>, "a new shape kind needs a sample in test_error_bounds.cpp");
   }

@@ -6,7 +6,7 @@
 // is a graze along an edge or a tangent: no crossing. A plane is a half-space (inside:
 // dot(normal, p) < offset, the side away from its normal, as in POV-Ray).
 //
-// Solids a line may cross more often (sor, lathe, prism, blob, superellipsoid, isosurface,
+// Solids a line may cross more often (sor, lathe, prism, blob, superellipsoid, isosurface, poly,
 // height field) also have leaf_crossings_from: up to kMaxLineCrossings crossings of the whole
 // line, of which those from `from` on are listed (the state at `from` folded into
 // inside_at_start), at most kMaxLeafCrossings; it returns true when the list stops short, and
@@ -27,6 +27,7 @@
 #include "render/geometry/shapes/isosurface.hpp"
 #include "render/geometry/shapes/lathe.hpp"
 #include "render/geometry/shapes/plane.hpp"
+#include "render/geometry/shapes/poly.hpp"
 #include "render/geometry/shapes/prism.hpp"
 #include "render/geometry/shapes/sor.hpp"
 #include "render/geometry/shapes/sphere.hpp"
@@ -164,6 +165,19 @@ inline bool leaf_hit(const Superellipsoid& s, const Ray& ray, const CsgLeafCross
 
 inline bool leaf_hit(const Blob& b, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
   blob_hit_at(b, ray, c.t[k], hit);
+  return true;
+}
+
+// A poly of order above 4 may cross a line more often than kMaxLeafCrossings.
+[[gnu::noinline]] inline bool leaf_crossings_from(const Poly& p, const Ray& ray, double from, CsgLeafCrossings& out) {
+  double t[kPolyMaxOrder];
+  bool inside_at_start;
+  const int n = poly_crossings(p, ray, t, inside_at_start);
+  return keep_crossings_from(t, n, inside_at_start, false, from, out);
+}
+
+inline bool leaf_hit(const Poly& p, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  poly_hit_at(p, ray, c.t[k], hit);
   return true;
 }
 

@@ -24,20 +24,26 @@ inline double poly_eval(const double* c, int n, double s) {
 }
 
 // The single root of the polynomial in [a, b], given that its values at a and b differ in
-// sign (f(a) < 0 <=> a_negative) and that it is monotone there.
+// sign (f(a) < 0 <=> a_negative) and that it is monotone there. kWide: the bracket may be
+// enormous (a poly's Cauchy bound, render/geometry/shapes/poly.hpp), where Newton from far
+// away creeps in by (n - 1) / n a step: every other step bisects, so the bracket at least
+// halves every two steps whatever Newton does.
+template <bool kWide = false>
 inline double poly_bracketed_root(const double* c, int n, double a, double b, bool a_negative) {
   double d[kPolyMaxDegree];
   for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
   double s = 0.5 * (a + b);
   // Bisection halves the bracket each step: 80 steps reach a double's last bit from any
   // bracket a torus can produce; Newton, when its step stays inside, gets there in a handful.
-  for (int iter = 0; iter < 80; ++iter) {
+  // A wide bracket (up to 1e300 across) needs 2 x 2100 steps at most.
+  constexpr int kSteps = kWide ? 4400 : 80;
+  for (int iter = 0; iter < kSteps; ++iter) {
     double f = poly_eval(c, n, s);
     if (f == 0.0) return s;
     if ((f < 0.0) == a_negative) a = s; else b = s;
     double df = poly_eval(d, n - 1, s);
     double next = df != 0.0 ? s - f / df : 0.5 * (a + b);
-    if (!(next > a && next < b)) next = 0.5 * (a + b);
+    if (!(next > a && next < b) || (kWide && iter % 2 == 1)) next = 0.5 * (a + b);
     if (next == s || b - a <= 0.0) return next;
     s = next;
     if (!(a < s && s < b)) break;
@@ -46,7 +52,9 @@ inline double poly_bracketed_root(const double* c, int n, double a, double b, bo
 }
 
 // The roots in (lo, hi) where the polynomial changes sign, ascending; returns how many
-// (at most n <= kPolyMaxDegree). The leading coefficient must not be zero.
+// (at most n <= kPolyMaxDegree). The leading coefficient must not be zero. kWide: for an
+// interval far wider than the roots' spread (see poly_bracketed_root).
+template <bool kWide = false>
 inline int poly_roots(const double* c, int n, double lo, double hi, double* out) {
   if (n < 1 || !(lo < hi)) return 0;
   if (n == 1) {
@@ -57,7 +65,7 @@ inline int poly_roots(const double* c, int n, double lo, double hi, double* out)
   double d[kPolyMaxDegree];
   for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
   double crit[kPolyMaxDegree];
-  int nc = poly_roots(d, n - 1, lo, hi, crit);
+  int nc = poly_roots<kWide>(d, n - 1, lo, hi, crit);
   double ends[kPolyMaxDegree + 2];
   int ne = 0;
   ends[ne++] = lo;
@@ -68,7 +76,7 @@ inline int poly_roots(const double* c, int n, double lo, double hi, double* out)
   for (int i = 1; i < ne; ++i) {
     double f = poly_eval(c, n, ends[i]);
     bool neg_prev = f_prev < 0.0, neg = f < 0.0;  // zero counts as positive (outside)
-    if (neg_prev != neg) out[count++] = poly_bracketed_root(c, n, ends[i - 1], ends[i], neg_prev);
+    if (neg_prev != neg) out[count++] = poly_bracketed_root<kWide>(c, n, ends[i - 1], ends[i], neg_prev);
     f_prev = f;
   }
   return count;

@@ -20,6 +20,7 @@
 #include "render/geometry/shapes/lathe.hpp"
 #include "render/geometry/shapes/mesh.hpp"
 #include "render/geometry/shapes/plane.hpp"
+#include "render/geometry/shapes/poly.hpp"
 #include "render/geometry/shapes/prism.hpp"
 #include "render/geometry/shapes/quad.hpp"
 #include "render/geometry/shapes/shape_info.hpp"
