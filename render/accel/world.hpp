@@ -186,14 +186,19 @@ class World {
 
  private:
   Ray object_ray(const Instance& inst, const Ray& world_ray) const;
-  // The traversals behind intersect, occluded and shadow_crossings; kSkipShadowless: the
-  // instances flagged in shadowless_ are not tested (only scenes that have some pay for it).
-  template <bool kSkipShadowless>
+  // The traversals behind intersect, occluded and shadow_crossings; Filter::kSkipShadowless:
+  // the instances flagged in shadowless_ are not tested (only scenes that have some pay).
+  template <class Filter>
   bool closest(const Ray& ray, Interval ray_t, bool transmissive_only, SurfaceHit& best,
                uint32_t& best_instance) const;
-  template <bool kSkipShadowless>
+  // closest() skipping shadowless instances, for shadow rays in scenes that have some.
+  bool closest_casting_shadows(const Ray& ray, Interval ray_t, bool transmissive_only, SurfaceHit& best,
+                               uint32_t& best_instance) const;
+  bool occluded_casting_shadows(const Ray& ray, Interval ray_t, bool opaque_only) const;
+  bool shadow_crossings_casting_shadows(const Ray& ray, Interval ray_t, ShadowCrossings& out) const;
+  template <class Filter>
   bool occluded_impl(const Ray& ray, Interval ray_t, bool opaque_only) const;
-  template <bool kSkipShadowless>
+  template <class Filter>
   bool shadow_crossings_impl(const Ray& ray, Interval ray_t, ShadowCrossings& out) const;
   bool intersect_instance(const Instance& inst, const Ray& world_ray, const Interval& ray_t,
                           SurfaceHit& hit) const;
