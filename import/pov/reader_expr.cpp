@@ -213,21 +213,43 @@ ExprPtr Reader::primary() {
           expect("]", "to close the array's size");
         }
         if (sizes.empty()) fail(at, "'array' needs its size in brackets: array[N] (or array[N] { values })");
-        if (sizes.size() != 1) {
-          // A multi-dimensional array: its sizes (initial values are read over; the writer warns).
-          e->text = "multi";
-          if (is_punct("{")) {
-            skip_braces();
-            e->text = "multi init";
+        // An element: a value, or a block (`texture { ... }`).
+        auto element = [&]() -> ExprPtr {
+          if (peek().kind == Token::Name && is_punct("{", 1)) {
+            ExprPtr b = make(Expr::BlockValue, peek().loc);
+            b->block = block();
+            return b;
           }
+          return expr();
+        };
+        if (sizes.size() != 1) {
+          // A multi-dimensional array: its sizes, or its initial values as nested rows
+          // (`array[2][3] { {a, b, c}, {d, e, f} }`: args[0], text "rows" at each level).
+          e->text = "multi";
           e->args = std::move(sizes);
+          if (is_punct("{")) {
+            const std::size_t dims = e->args.size();
+            auto rows = [&](auto& self, std::size_t dim) -> ExprPtr {
+              ExprPtr r = make(Expr::Array, peek().loc);
+              r->text = "rows";
+              expect("{", "to open the array's values");
+              while (!is_punct("}")) {
+                r->args.push_back(dim + 1 < dims ? self(self, dim + 1) : element());
+                if (!accept(",")) break;
+              }
+              expect("}", "to close the array's values");
+              return r;
+            };
+            e->text = "multi init";
+            e->args = {rows(rows, 0)};
+          }
           return e;
         }
         e->args.push_back(sizes[0]);
         if (accept("{")) {
           e->text = "init";
           while (!is_punct("}")) {
-            e->args.push_back(expr());
+            e->args.push_back(element());
             if (!accept(",")) break;
           }
           expect("}", "to close the array's values");

@@ -147,6 +147,22 @@ Symbol* Translator::lookup(const std::string& name) {
   return nullptr;
 }
 
+std::string Translator::array_element(const Expr& e) {
+  if (e.kind != Expr::BlockValue) return value(e);
+  const Block& b = *e.block;
+  if (b.kind == "texture" || b.kind == "material") {
+    MaterialProps m;
+    Item part;
+    part.kind = Item::Nested;
+    part.block = e.block;
+    texture_part(part, m);
+    return material_text(m, true);
+  }
+  if (b.kind == "pigment") return pigment_value(b);
+  unsupported(e.loc, b.kind + " as an array element", "a value declared with let and put in the list by name", false);
+  return "none";
+}
+
 std::string Translator::vector_value(const Expr& e) {
   std::vector<double> v;
   if (literal_vector(e, v) && v.size() == 3) return vec(glm::dvec3(v[0], v[1], v[2]));
@@ -348,18 +364,20 @@ Text Translator::expr(const Expr& e) {
       return Text{paren(a, 11) + "[" + i.s + "]", Type::Unknown, 11};
     }
     case Expr::Array: {
-      if (e.text == "multi" || e.text == "multi init") {
+      if (e.text == "multi init") return expr(*e.args[0]);  // its rows
+      if (e.text == "rows" || e.text == "init") {
+        // array[n] { a, b }, and each level of array[n][m] { {a, b}, {c, d} }: a list literal.
+        std::string s = "[";
+        for (std::size_t i = e.text == "init" ? 1 : 0; i < e.args.size(); ++i)
+          s += (s.size() > 1 ? ", " : "") + array_element(*e.args[i]);
+        return Text{s + "]", Type::List};
+      }
+      if (e.text == "multi") {
         // array[n][m]: lists of lists of zeros (POV-Ray's elements start undefined).
-        if (e.text == "multi init") unsupported(e.loc, "array[..][..] { values }", "a list of lists written out", false);
         helpers_.insert("pov_array");
         std::string sizes;
         for (const ExprPtr& a : e.args) sizes += (sizes.empty() ? "" : ", ") + value(*a);
         return Text{"pov_array([" + sizes + "])", Type::List, 11};
-      }
-      if (e.text == "init") {
-        std::string s = "[";
-        for (std::size_t i = 1; i < e.args.size(); ++i) s += (i > 1 ? ", " : "") + value(*e.args[i]);
-        return Text{s + "]", Type::List};
       }
       double n;
       if (literal_number(*e.args[0], n) && n >= 0 && n <= 10000) {

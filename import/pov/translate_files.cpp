@@ -47,8 +47,11 @@ const std::set<std::string>& unshipped_includes() {
 void Translator::declare_library_file(const std::string& file) {
   if (!library_files_.insert(file).second) return;
   std::ifstream lib(fs::path(opt_.stdlib_dir) / file);
-  std::string line;
+  std::string line, macro;  // `macro`: the macro whose first body line is next
   while (std::getline(lib, line)) {
+    // A macro whose body starts `return material {` gives a material (stones.rts' marble_stone).
+    if (!macro.empty() && line.find("return material") != std::string::npos) library_material_macros_.insert(macro);
+    macro.clear();
     if (line.rfind("include \"", 0) == 0) {
       // rts's include makes the included file's names visible too (textures.rts: metals, glass,
       // finish ...).
@@ -60,6 +63,10 @@ void Translator::declare_library_file(const std::string& file) {
       library_names_.insert(n);
       Symbol s{line.find("rgb(") != std::string::npos ? Type::Color : Type::Unknown, nullptr, ""};
       if (line.find("material") != std::string::npos) s.type = Type::Material;
+      if (std::size_t v = line.find_first_not_of(' ', line.find('=') + 1); v != std::string::npos) {
+        const std::string callee = line.substr(v, line.find('(', v) - v);
+        if (line.find('(', v) != std::string::npos && library_material_macros_.count(callee)) s.type = Type::Material;
+      }
       // `let Cube = box { ...`, `let Cone_Y = cone { ...`, `let Ellipsoid = Sphere`: an object of
       // that kind (a texture on it then derives the shape, or wraps a CSG block).
       std::size_t eq = line.find('=');
@@ -69,9 +76,13 @@ void Translator::declare_library_file(const std::string& file) {
         std::string word = line.substr(w0, w1 == std::string::npos ? std::string::npos : w1 - w0);
         if (is_object_kind(word) && line.find('{', w0) != std::string::npos) {
           s = Symbol{Type::Object, nullptr, word};
-        } else if (auto known = scopes_.front().find(word);
-                   known != scopes_.front().end() && known->second.type == Type::Object) {
-          s = known->second;
+        } else if (auto known = scopes_.front().find(word); known != scopes_.front().end()) {
+          // `let Jade = jade`: another name for a library object, material or colour.
+          const std::size_t rest = line.find_first_not_of(' ', w0 + word.size());
+          const bool alone = rest == std::string::npos || line.compare(rest, 2, "//") == 0;
+          if (known->second.type == Type::Object ||
+              (alone && (known->second.type == Type::Material || known->second.type == Type::Color)))
+            s = known->second;
         }
       }
       scopes_.front()[n] = s;
@@ -94,6 +105,7 @@ void Translator::declare_library_file(const std::string& file) {
     } else if (line.rfind("macro ", 0) == 0) {
       std::size_t e = line.find('(', 6);
       std::string n = line.substr(6, e == std::string::npos ? std::string::npos : e - 6);
+      macro = n;
       library_names_.insert(n);
       scopes_.front()[n] = Symbol{Type::Macro, nullptr, ""};
     }

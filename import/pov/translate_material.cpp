@@ -137,7 +137,10 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
       const Expr& e = *it.args[0];
       if (e.kind == Expr::Name) {
         if (Symbol* s = lookup(e.text); s && (s->type == Type::Pigment || s->type == Type::Material)) {
-          m.set("color", rename(e.text));
+          // A name rts's library defines as a material (textures.inc's Jade, a pigment in
+          // POV-Ray): the material is derived from it, its colour and pattern with it.
+          if (s->type == Type::Material && library_names_.count(e.text) && m.base.empty()) m.base = rename(e.text);
+          else m.set("color", rename(e.text));
           continue;
         }
         if (missing_name(it.loc, e.text, "pigment or colour")) {

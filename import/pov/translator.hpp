@@ -73,7 +73,9 @@ class Translator {
   Text expr(const Expr& e);
   Text call(const Expr& e);
   std::string value(const Expr& e) { return expr(e).s; }
-  std::string vector_value(const Expr& e);  // promotes a float to <f, f, f>
+  std::string vector_value(const Expr& e);
+  // An array initialiser's element: a value, or a texture, material or pigment block.
+  std::string array_element(const Expr& e);  // promotes a float to <f, f, f>
   std::string color_value(const Expr& e, double* filter = nullptr, double* transmit = nullptr);
   std::string condition(const Expr& e);     // a bool: floats compare with 0
   std::string float_value(const Expr& e) { return expr(e).s; }
@@ -156,6 +158,7 @@ class Translator {
   std::set<std::string> included_;
   std::set<std::string> reader_names_;  // declared names, for the reader (reader.hpp)
   std::set<std::string> library_names_;  // names the included standard library files define
+  std::set<std::string> library_material_macros_;  // their macros that return a material
   std::set<std::string> library_files_;  // the library files whose names are declared
   // One-line `let N = material { k = v  k = v }` of the library (its finishes and interiors:
   // Shiny, I_Glass ...): the properties, merged into the material a POV-Ray finish/interior
