@@ -213,6 +213,8 @@ ExprPtr Reader::primary() {
           expect("]", "to close the array's size");
         }
         if (sizes.empty()) fail(at, "'array' needs its size in brackets: array[N] (or array[N] { values })");
+        // POV-Ray's limit; it also bounds the recursion that reads nested initial values.
+        if (sizes.size() > 5) fail(at, fmt::format("an array has at most 5 dimensions, this one {}", sizes.size()));
         // An element: a value, or a block (`texture { ... }`).
         auto element = [&]() -> ExprPtr {
           if (peek().kind == Token::Name && is_punct("{", 1)) {
