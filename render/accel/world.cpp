@@ -17,8 +17,6 @@ namespace {
 // bool, intersect()'s traversal stayed a call: +2.6% instructions on a diffuse scene).
 struct AllInstances { static constexpr bool kSkipShadowless = false; };
 struct CastingShadows { static constexpr bool kSkipShadowless = true; };
-}  // namespace
-namespace {
 
 bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
 
@@ -243,7 +241,6 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
 }
 
 // Inlined into intersect: a call per ray would cost scenes that have no shadowless object.
-
 template <class Filter>
 [[gnu::always_inline]] inline bool World::closest(const Ray& ray, Interval ray_t, bool transmissive_only, SurfaceHit& best,
                     uint32_t& best_instance) const {
