@@ -30,6 +30,12 @@ inline NodeId add_group(SceneDesc& s, std::vector<Child> children, MaterialId ma
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
+inline NodeId add_csg(SceneDesc& s, CsgDesc block) {
+  s.csgs.push_back(std::move(block));
+  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
+  return static_cast<NodeId>(s.nodes.size() - 1);
+}
+
 inline void place(SceneDesc& s, NodeId node, const Mat4& transform = Mat4(1.0)) {
   s.roots.push_back(Child{node, transform, {}});
 }

@@ -190,9 +190,7 @@ struct CsgScene {
     d.children = std::move(kids);
     d.material = m;
     kids.clear();
-    scene.csgs.push_back(std::move(d));
-    scene.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(scene.csgs.size() - 1), {}});
-    return static_cast<NodeId>(scene.nodes.size() - 1);
+    return add_csg(scene, std::move(d));
   }
 };
 

@@ -59,9 +59,7 @@ struct Block {
     d.op = op;
     d.children = std::move(kids);
     kids.clear();
-    scene.csgs.push_back(std::move(d));
-    scene.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(scene.csgs.size() - 1), {}});
-    place(scene, static_cast<NodeId>(scene.nodes.size() - 1), xf);
+    place(scene, add_csg(scene, std::move(d)), xf);
   }
 };
 

@@ -277,9 +277,7 @@ NodeId random_csg_node(SceneDesc& s, std::mt19937& rng, int depth, MaterialId ma
                                 (u(rng) < 0.3 ? scale(Vec3(0.5 + u(rng), 0.5 + u(rng), 0.5 + u(rng))) : Mat4(1.0));
     d.children.push_back(Child{random_csg_node(s, rng, depth - 1, mat), m, {}});
   }
-  s.csgs.push_back(std::move(d));
-  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
-  return static_cast<NodeId>(s.nodes.size() - 1);
+  return add_csg(s, std::move(d));
 }
 
 }  // namespace
@@ -298,9 +296,7 @@ TEST_CASE("csg pruning: World's hits and shadow rays agree with every leaf compu
         CsgDesc d;
         d.op = CsgOp::Intersection;
         d.children.push_back(Child{n, Mat4(1.0), {}});
-        s.csgs.push_back(std::move(d));
-        s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
-        n = static_cast<NodeId>(s.nodes.size() - 1);
+        n = add_csg(s, std::move(d));
       }
       place(s, n, translate(Vec3(2.0 * b - 2.0, 0, 0)));
     }

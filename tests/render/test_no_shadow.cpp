@@ -18,16 +18,6 @@ namespace {
 
 enum class Build { Flagged, Removed, AllCast };
 
-NodeId add_csg(SceneDesc& s, CsgOp op, std::vector<Child> children, bool casts) {
-  CsgDesc d;
-  d.op = op;
-  d.children = std::move(children);
-  d.casts_shadow = casts;
-  s.csgs.push_back(std::move(d));
-  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
-  return static_cast<NodeId>(s.nodes.size() - 1);
-}
-
 // `spheres` random spheres (every third one glass), a floor plane and a tilted plane, a CSG
 // block, a small group and a group of 80 spheres placed twice (instanced). About a third of
 // the objects cast no shadow. Build::Removed leaves those out; Build::AllCast keeps them with
@@ -60,7 +50,11 @@ SceneDesc make_scene(uint64_t seed, int spheres, Build build) {
   if (keep(false)) {
     const NodeId a = add_shape(s, Sphere{Vec3(1, 1, 1), 1.2});
     const NodeId b = add_shape(s, Box{Vec3(0.5), Vec3(2.5)});
-    place(s, add_csg(s, CsgOp::Difference, {Child{a, Mat4(1.0), {}}, Child{b, Mat4(1.0), {}}}, flag(false)));
+    CsgDesc d;
+    d.op = CsgOp::Difference;
+    d.children = {Child{a, Mat4(1.0), {}}, Child{b, Mat4(1.0), {}}};
+    d.casts_shadow = flag(false);
+    place(s, add_csg(s, std::move(d)));
   }
   if (keep(false)) {
     const NodeId a = add_shape(s, Box{Vec3(-3, -1, -0.2), Vec3(-1, 1, 0.2)});
