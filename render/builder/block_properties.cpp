@@ -197,6 +197,7 @@ constexpr BlockInfo kBlocks[] = {
     {"intersection", "CSG: what is inside every shape.", kCsg},
     {"difference", "CSG: the first shape minus the others.", kCsg},
     {"merge", "CSG: the shapes together, inner surfaces removed.", kCsg},
+    {"clip", "The first shape's surface where it lies inside the others (POV-Ray's clipped_by).", kCsg},
     {"group", "Objects placed together (any shapes, meshes, lights, CSG).", kGroup},
 };
 

@@ -64,6 +64,7 @@ constexpr KindInfo kKinds[] = {
     {"intersection", BlockCategory::Csg},
     {"difference", BlockCategory::Csg},
     {"merge", BlockCategory::Csg},
+    {"clip", BlockCategory::Csg},
 };
 
 const std::vector<std::string_view> kSettingsNames = names_of_block("settings");

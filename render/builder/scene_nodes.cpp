@@ -215,7 +215,8 @@ const std::vector<std::string_view>* names_of(std::string_view kind) {
   static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
       {"point_light", &kPointLightNames},  {"spot_light", &kSpotLightNames}, {"area_light", &kAreaLightNames},
       {"directional_light", &kDirectionalLightNames}, {"union", &kCsgNames}, {"intersection", &kCsgNames},
-      {"difference", &kCsgNames},          {"merge", &kCsgNames},         {"group", &kGroupNames}};
+      {"difference", &kCsgNames},          {"merge", &kCsgNames},         {"clip", &kCsgNames},
+      {"group", &kGroupNames}};
   for (const auto& [name, names] : kTable)
     if (name == kind) return names;
   return nullptr;
@@ -490,6 +491,7 @@ NodeId SceneBuilder::csg(std::string_view kind, std::vector<Child> children, Par
   d.op = kind == "intersection" ? CsgOp::Intersection
          : kind == "difference" ? CsgOp::Difference
          : kind == "merge"      ? CsgOp::Merge
+         : kind == "clip"       ? CsgOp::Clip
                                 : CsgOp::Union;
   if (children.empty()) ps.fail_block(fmt::format("{} needs at least one shape", kind));
   auto closure_of = [this](const MeshData& m) -> const MeshClosure& {

@@ -294,8 +294,10 @@ struct ShapeDesc {
 
 // ---- constructive solid geometry (POV-Ray's semantics) ------------------------------------
 // union: every child's surface (inner ones too); merge: the union's outer surface only;
-// intersection: where every child is; difference: the first child minus all the others.
-enum class CsgOp : uint8_t { Union, Intersection, Difference, Merge };
+// intersection: where every child is; difference: the first child minus all the others;
+// clip: the first child's surface where it lies inside all the others, whose own surfaces never
+// show (POV-Ray's clipped_by: the result is open where it was cut; as a solid, the intersection).
+enum class CsgOp : uint8_t { Union, Intersection, Difference, Merge, Clip };
 
 // ---- lights (in their own space; placement transforms them) --------------------------------
 enum class LightKind : uint8_t { Point, Spot, Directional, Area };

@@ -283,7 +283,7 @@ void SceneDesc::dump(std::ostream& out) const {
         if (!groups[n.index].casts_shadow) out << " casts_shadow false";
         break;
       case NodeKind::Csg: {
-        static const char* kOps[] = {"union", "intersection", "difference", "merge"};
+        static const char* kOps[] = {"union", "intersection", "difference", "merge", "clip"};
         const CsgDesc& d = csgs[n.index];
         out << fmt::format("{} children {} material {}{}", kOps[static_cast<int>(d.op)], d.children.size(),
                            id(d.material), d.inverse ? " inverse true" : "");

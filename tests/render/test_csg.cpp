@@ -106,6 +106,63 @@ TEST_CASE("csg sweep: difference shows the cut face with the subtracted child", 
   CHECK_FALSE(first(t, {span(1, 5), span(0, 6)}, s));
 }
 
+TEST_CASE("csg sweep: clip shows the first child's surface inside the others, never theirs", "[csg]") {
+  CsgTree t = flat_tree(CsgOp::Clip, 2);
+  CsgSurface s;
+  // A over [1, 3] clipped by B over [2, 4]: A's entry at 1 lies outside B (cut away), B's entry
+  // at 2 never shows, A's exit at 3 lies inside B: the ray sees A's inside there.
+  REQUIRE(first(t, {span(1, 3), span(2, 4)}, s));
+  CHECK(s.t == 3.0);
+  CHECK(s.leaf == 0);
+  CHECK_FALSE(s.entering);
+  // B over [0, 2]: A's entry shows (inside B), entering; its exit at 3 is cut away.
+  REQUIRE(first(t, {span(1, 3), span(0, 2)}, s));
+  CHECK(s.t == 1.0);
+  CHECK(s.leaf == 0);
+  CHECK(s.entering);
+  REQUIRE_FALSE(first(t, {span(1, 3), span(0, 2)}, s, Interval(1.5, 10)));
+  // The same crossings under an intersection show B's face at 2: a clip does not.
+  CHECK_FALSE(first(t, {span(1, 5), span(2, 4)}, s, Interval(0, 4.5)));
+  CsgTree i = flat_tree(CsgOp::Intersection, 2);
+  REQUIRE(first(i, {span(1, 5), span(2, 4)}, s, Interval(0, 4.5)));
+  CHECK(s.t == 2.0);
+  // Two clippers: A's surface where both are inside; an inverse clipper keeps what is outside it.
+  CsgTree two = flat_tree(CsgOp::Clip, 3);
+  REQUIRE(first(two, {span(1, 3), span(0, 4), span(2, 5)}, s));
+  CHECK(s.t == 3.0);
+  CsgTree inv = flat_tree(CsgOp::Clip, 2, {false, true});
+  REQUIRE(first(inv, {span(1, 3), span(2, 4)}, s));
+  CHECK(s.t == 1.0);
+  CHECK(s.entering);
+}
+
+TEST_CASE("csg sweep: a clip's union shows its inner surfaces where they are kept", "[csg]") {
+  // clip { union { A  B }  C }: A over [1, 3], B over [2, 4] (its entry inside A), C over [1.5, 5].
+  CsgTree t;
+  for (uint32_t l = 0; l < 3; ++l) {
+    CsgNode leaf;
+    leaf.leaf = true;
+    leaf.first = l;
+    t.nodes.push_back(leaf);
+  }
+  CsgNode u;
+  u.op = CsgOp::Union;
+  u.first = 0;
+  u.count = 2;
+  t.children = {0, 1, 3, 2};
+  t.nodes.push_back(u);  // node 3
+  CsgNode c;
+  c.op = CsgOp::Clip;
+  c.first = 2;
+  c.count = 2;
+  t.nodes.push_back(c);
+  t.leaf_count = 3;
+  CsgSurface s;
+  REQUIRE(first(t, {span(1, 3), span(2, 4), span(1.5, 5)}, s));
+  CHECK(s.t == 2.0);  // A's entry at 1 is cut away; B's entry, inside A, shows as in a union
+  CHECK(s.leaf == 1);
+}
+
 TEST_CASE("csg sweep: coincident faces are one batch, the same for every ray", "[csg]") {
   CsgTree t = flat_tree(CsgOp::Difference, 2);
   CsgSurface s;
@@ -164,6 +221,9 @@ TEST_CASE("csg bounds: union, intersection, difference, inverse", "[csg]") {
   CHECK(i.lo == Vec3(1));
   CHECK(i.hi == Vec3(2));
   AABB d = flat_tree(CsgOp::Difference, 2).bounds(leaves);
+  AABB c = flat_tree(CsgOp::Clip, 2).bounds(leaves);  // a clip is bounded as an intersection
+  CHECK(c.lo == i.lo);
+  CHECK(c.hi == i.hi);
   CHECK(d.lo == Vec3(0));
   CHECK(d.hi == Vec3(2));
   CHECK_FALSE(flat_tree(CsgOp::Union, 2, {true, false}).bounds(leaves).finite());
@@ -225,6 +285,28 @@ TEST_CASE("csg world: a difference's cut face shows the subtracted child's mater
   CHECK(n.z == Approx(-1.0));
   // The sphere's part outside the box is gone: a ray through it only (z < -1) finds the box.
   CHECK(seen(s.scene, Ray{Vec3(-5, 0, -1.2), Vec3(1, 0, 0)}) == kNoId);
+}
+
+TEST_CASE("csg world: clip leaves the sphere open where the box cuts it", "[csg]") {
+  CsgScene s;
+  MaterialId red = s.mat(1, 0, 0), green = s.mat(0, 1, 0);
+  s.child(Sphere{Vec3(0), 1.0}, red);
+  s.child(Box{Vec3(-2), Vec3(2, 0.3, 2)}, green);  // keeps the sphere below y = 0.3
+  place(s.scene, s.block(CsgOp::Clip));
+  Vec3 n;
+  double t;
+  // Down through the cut: the top is gone, the bowl's inside at y = -1 shows, its normal out
+  // of the solid (along the ray).
+  CHECK(seen(s.scene, Ray{Vec3(0, 5, 0), Vec3(0, -1, 0)}, &n, &t) == red);
+  CHECK(t == Approx(6.0));
+  CHECK(n.y == Approx(-1.0));
+  // From the front below the cut: the sphere's own face.
+  CHECK(seen(s.scene, Ray{Vec3(0, 0, -5), Vec3(0, 0, 1)}, &n, &t) == red);
+  CHECK(t == Approx(4.0));
+  CHECK(n.z == Approx(-1.0));
+  // Above the cut the sphere is gone, and the box's faces never show.
+  CHECK(seen(s.scene, Ray{Vec3(0, 0.6, -5), Vec3(0, 0, 1)}) == kNoId);
+  CHECK(seen(s.scene, Ray{Vec3(1.5, 5, 0), Vec3(0, -1, 0)}) == kNoId);
 }
 
 TEST_CASE("csg world: a child without material shows the block's", "[csg]") {

@@ -30,8 +30,8 @@ uint32_t random_node(CsgTree& t, std::mt19937& rng, int depth) {
     n.leaf = true;
     n.first = t.leaf_count++;
   } else {
-    const CsgOp ops[] = {CsgOp::Union, CsgOp::Merge, CsgOp::Intersection, CsgOp::Difference};
-    n.op = ops[std::uniform_int_distribution<int>(0, 3)(rng)];
+    const CsgOp ops[] = {CsgOp::Union, CsgOp::Merge, CsgOp::Intersection, CsgOp::Difference, CsgOp::Clip};
+    n.op = ops[std::uniform_int_distribution<int>(0, 4)(rng)];
     uint32_t count = std::uniform_int_distribution<uint32_t>(1, 4)(rng);
     std::vector<uint32_t> kids;
     for (uint32_t k = 0; k < count; ++k) kids.push_back(random_node(t, rng, depth - 1));
@@ -106,6 +106,15 @@ bool reference_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves
       bool v = before[k] != after[k];
       if (!n.leaf && n.op == CsgOp::Union)
         for (uint32_t c = 0; c < n.count && !v; ++c) v = visible[tree.children[n.first + c]] != 0;
+      if (!n.leaf && n.op == CsgOp::Clip) {  // the first child's surface where every clipper is inside
+        const uint32_t* c = tree.children.data() + n.first;
+        bool in_before = true, in_after = true;
+        for (uint32_t q = 1; q < n.count; ++q) {
+          in_before = in_before && before[c[q]] != 0;
+          in_after = in_after && after[c[q]] != 0;
+        }
+        v = visible[c[0]] != 0 && (in_before || in_after);
+      }
       visible[k] = v;
     }
     if (visible[nn - 1]) {
@@ -266,8 +275,8 @@ NodeId random_csg_node(SceneDesc& s, std::mt19937& rng, int depth, MaterialId ma
     return n;
   }
   CsgDesc d;
-  const CsgOp ops[] = {CsgOp::Union, CsgOp::Merge, CsgOp::Intersection, CsgOp::Difference};
-  d.op = ops[std::uniform_int_distribution<int>(0, 3)(rng)];
+  const CsgOp ops[] = {CsgOp::Union, CsgOp::Merge, CsgOp::Intersection, CsgOp::Difference, CsgOp::Clip};
+  d.op = ops[std::uniform_int_distribution<int>(0, 4)(rng)];
   d.inverse = u(rng) < 0.1;
   int count = std::uniform_int_distribution<int>(1, 4)(rng);
   for (int k = 0; k < count; ++k) {

@@ -70,7 +70,8 @@ Interval csg_gather(const CsgTree& tree, uint32_t node, const Interval& span, Cs
         hull = Interval(std::min(hull.min, h.min), std::max(hull.max, h.max));
       }
       break;
-    case CsgOp::Intersection: {
+    case CsgOp::Intersection:
+    case CsgOp::Clip: {  // a clip's surface lies where its clippers can be inside, as an intersection's
       Interval s = span;
       for (uint32_t k = 0; k < n.count; ++k) s = s.intersect(child(k, s));
       hull = s;

@@ -21,6 +21,7 @@ void CsgTree::evaluate(const uint8_t* leaf_inside, uint8_t* state) const {
           for (uint32_t k = 0; k < n.count && !v; ++k) v = state[c[k]] != 0;
           break;
         case CsgOp::Intersection:
+        case CsgOp::Clip:
           v = true;
           for (uint32_t k = 0; k < n.count && v; ++k) v = state[c[k]] != 0;
           break;
@@ -54,6 +55,7 @@ AABB CsgTree::bounds(const std::vector<AABB>& leaf_bounds) const {
             if (b[c[k]].valid()) box.extend(b[c[k]]);
           break;
         case CsgOp::Intersection:
+        case CsgOp::Clip:
           box = everything;
           for (uint32_t k = 0; k < n.count; ++k) {
             box.lo = glm::max(box.lo, b[c[k]].lo);
@@ -101,7 +103,9 @@ bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, cons
   // batch whose every crossing is at or before ray_t.min only toggles its leaves (the batches
   // are formed exactly as before, so the later ones are the same).
   bool before_known = false;
-  const bool root_shows_own_only = tree.nodes[nn - 1].leaf || tree.nodes[nn - 1].op != CsgOp::Union;
+  // (A clip's first child may be a union, whose inner surfaces show without a state change.)
+  const bool root_shows_own_only =
+      tree.nodes[nn - 1].leaf || (tree.nodes[nn - 1].op != CsgOp::Union && tree.nodes[nn - 1].op != CsgOp::Clip);
   int i = 0;
   while (i < ne) {
     const double t0 = ev[i].t;
@@ -133,6 +137,17 @@ bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, cons
       bool v = before[k] != after[k];
       if (!n.leaf && n.op == CsgOp::Union)
         for (uint32_t c = 0; c < n.count && !v; ++c) v = visible[tree.children[n.first + c]] != 0;
+      if (!n.leaf && n.op == CsgOp::Clip) {
+        // Only the first child's surface, and only where every clipping child is inside (on
+        // either side of the batch: a clipper's face flush with the surface keeps it).
+        const uint32_t* c = tree.children.data() + n.first;
+        bool in_before = true, in_after = true;
+        for (uint32_t j = 1; j < n.count; ++j) {
+          in_before = in_before && before[c[j]] != 0;
+          in_after = in_after && after[c[j]] != 0;
+        }
+        v = n.count > 0 && visible[c[0]] != 0 && (in_before || in_after);
+      }
       visible[k] = v;
     }
     if (visible[nn - 1]) {
