@@ -13,7 +13,7 @@ namespace detail {
 
 bool is_raw_block(const std::string& kind) {
   static const std::set<std::string> raw = {"function", "spline", "text", "sphere_sweep", "polygon", "bicubic_patch",
-                                            "julia_fractal", "parametric", "quadric", "ovus", "lemon", "polynomial"};
+                                            "julia_fractal", "parametric", "ovus", "lemon", "polynomial"};
   return raw.count(kind) > 0;
 }
 

@@ -2,6 +2,7 @@
 // postfix operators, CSG and meshes their members (the materials they carry:
 // translate_material.cpp).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -13,15 +14,22 @@ namespace rts::import::pov {
 bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
                                               "triangle", "smooth_triangle", "mesh", "mesh2", "superellipsoid", "sor", "lathe", "prism",
-                                              "height_field", "isosurface", "poly", "quartic", "cubic", "union",
+                                              "height_field", "isosurface", "poly", "quartic", "cubic", "quadric", "union",
                                               "intersection", "difference", "merge", "object"};
   return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
+}
+
+bool Translator::is_solid_kind(const std::string& k) {
+  return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
+         k == "superellipsoid" || k == "sor" || k == "lathe" || k == "prism" || k == "blob" || k == "height_field" ||
+         k == "isosurface" || k == "poly" || k == "quartic" || k == "cubic" || k == "quadric" || k == "union" || k == "intersection" ||
+         k == "difference" || k == "merge" || k == "clip";
 }
 
 bool Translator::is_unsupported_shape(const std::string& k) {
   static const std::set<std::string> kinds = {"text",
                                               "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
-                                              "parametric", "quadric", "ovus", "lemon",
+                                              "parametric", "ovus", "lemon",
                                               "polynomial"};
   return kinds.count(k) > 0;
 }
@@ -41,13 +49,6 @@ std::pair<std::string, bool> shape_alternative(const std::string& k) {
 // POV-Ray's spline keywords for a lathe's profile or a prism's outline: rts's `spline` property.
 bool is_spline_keyword(const std::string& k) {
   return k == "linear_spline" || k == "quadratic_spline" || k == "cubic_spline" || k == "bezier_spline";
-}
-
-bool closed_kind(const std::string& k) {
-  return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
-         k == "superellipsoid" || k == "sor" || k == "lathe" || k == "prism" || k == "blob" || k == "height_field" ||
-         k == "isosurface" || k == "poly" || k == "quartic" || k == "cubic" || k == "union" || k == "intersection" ||
-         k == "difference" || k == "merge";
 }
 
 bool is_texture_part(const std::string& k) {
@@ -127,6 +128,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     w.line(fmt::format("{}group {{ }}  // POV-Ray's {} is not translated (rts import warned)", prefix, k));
     return;
   }
+  if (clipped_object(w, b, prefix, place)) return;
   if (k == "object") {
     // object { sphere { ... } modifiers }: the inner object with the modifiers after its own.
     const Item* inner = nullptr;
@@ -217,7 +219,8 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         } else if (it.block->kind == "bounded_by") {
           // rts bounds every object itself (BVH): nothing to write.
         } else if (it.block->kind == "clipped_by") {
-          unsupported(it.loc, "clipped_by", "intersection { object  clipping-object }", false);
+          // clipped_object() wrote the ones rts can clip: an open object, or an open clipper
+          unsupported(it.loc, "clipped_by", "a solid object clipped by solids (rts's clip block)", false);
         } else if (it.block->kind == "photons" || it.block->kind == "radiosity") {
           // photon and radiosity hints: no effect on a Whitted render
         } else {
@@ -318,6 +321,20 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     for (const ExprPtr& a : c.args) list += (list.empty() ? "" : ", ") + value(*a);
     props.insert(props.begin(), {"order = " + (general ? value(*v(0)) : std::string(k == "quartic" ? "4" : "3")),
                                  "coefficients = [" + list + "]"});
+  } else if (k == "quadric") {
+    // A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0: rts's poly of
+    // order 2, whose coefficients follow POV-Ray's poly order (x^2, xy, xz, x, y^2, yz, y, z^2, z, 1).
+    need(4, "three vectors and a constant: quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }");
+    kind = "poly";
+    auto part = [&](const Expr& e, int i) {
+      if (e.kind == Expr::Vector && e.args.size() == 3) return value(*e.args[i]);
+      return fmt::format("({}).{}", vector_value(e), "xyz"[i]);
+    };
+    const Expr &sq = *v(0), &mixed = *v(1), &lin = *v(2);
+    const std::string list = fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}, {}", part(sq, 0), part(mixed, 0),
+                                         part(mixed, 1), part(lin, 0), part(sq, 1), part(mixed, 2), part(lin, 1),
+                                         part(sq, 2), part(lin, 2), value(*v(3)));
+    props.insert(props.begin(), {"order = 2", "coefficients = [" + list + "]"});
   } else if (k == "disc") {
     need(3, "a centre, a normal and a radius: disc { <c>, <n>, r }");
     std::vector<std::string> p = {"center = " + vector_value(*v(0)), "normal = " + vector_value(*v(1)),
@@ -394,12 +411,12 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
           for (const Item& r : c->block->items)
             if (r.kind == Item::Value && r.args[0]->kind == Expr::Name) {
               Symbol* s = lookup(r.args[0]->text);
-              if (!s || !closed_kind(s->object_kind)) closed = false;
+              if (!s || !is_solid_kind(s->object_kind)) closed = false;
               break;
             }
-        } else if (!closed_kind(ck) || (ck == "cylinder" || ck == "cone" || ck == "sor" || ck == "lathe" || ck == "prism")) {
+        } else if (!is_solid_kind(ck) || (ck == "cylinder" || ck == "cone" || ck == "sor" || ck == "lathe" || ck == "prism")) {
           // open cylinders/cones are open shapes too
-          if (!closed_kind(ck)) closed = false;
+          if (!is_solid_kind(ck)) closed = false;
           for (const Item& r : c->block->items)
             if (r.kind == Item::Keyword && r.name == "open") closed = false;
         }
@@ -438,7 +455,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
       // (often a union) as a one-member group with the material, which its members without
       // their own take (POV-Ray's texture on a union); a shape is derived with it (POV-Ray's
       // texture on a shape replaces the shape's).
-      if (ok == "intersection" || ok == "difference" || ok == "merge" || ok == "union")
+      if (ok == "intersection" || ok == "difference" || ok == "merge" || ok == "union" || ok == "clip")
         s = fmt::format("union {{ {}  material = {} }}", base, m);
       else if (ok.empty() || ok == "object" || ok == "mesh" || ok == "group")
         s = fmt::format("group {{ {}  material = {} }}", base, m);
@@ -447,7 +464,10 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     }
     for (const std::string& p : props) {
       if (p == "inverse = true") {
-        s = "(" + s + ") with { inverse = true }";
+        // A bare name needs no parentheses, and a line starting with one would continue the
+        // line before as a call (`QCone_Y` then `(QCone_Y) with ...`).
+        const bool name = std::all_of(s.begin(), s.end(), [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; });
+        s = name ? s + " with { inverse = true }" : "(" + s + ") with { inverse = true }";
       } else if (p == "casts_shadow = false") {
         s = "group { " + s + "  casts_shadow = false }";  // whatever it places casts none
       } else {

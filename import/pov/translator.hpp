@@ -90,10 +90,16 @@ class Translator {
   // ---- objects and materials (translate_object.cpp) ----
   static bool is_object_kind(const std::string& kind);
   static bool is_unsupported_shape(const std::string& kind);
+  // A kind rts's CSG takes as a solid (when not `open`): what a clip block may hold.
+  static bool is_solid_kind(const std::string& kind);
   // Writes an object block; `prefix` goes before it on the first line ("let S = "), `place`:
   // a placement in the world (objects without a texture get POV-Ray's default one).
   void object(Writer& w, const Block& b, const std::string& prefix, bool place);
   bool has_texture(const Block& b) const;
+  // An object with `clipped_by` (translate_clip.cpp) as rts's clip block; false (nothing
+  // written) when it has none, or when the object or a clipper is not a solid rts can clip.
+  bool clipped_object(Writer& w, const Block& b, const std::string& prefix, bool place);
+  bool solid_block(const Block& b);
   // A blob's components (translate_shapes.cpp) as rts's blob properties, added to `props`;
   // returns the block without them (its texture and transforms).
   Block blob_components(const Block& b, std::vector<std::string>& props);
@@ -177,7 +183,7 @@ class Translator {
     BodyFlag(bool& f, bool v) : flag(f), saved(f) { f = v; }
     ~BodyFlag() { flag = saved; }
   };
-  std::string last_kind_;  // the rts kind object() wrote last (a union may become a group)  // inside intersection/difference/merge: a union there stays CSG  // a group's material, written on its members
+  std::string last_kind_;  // the rts kind object() wrote last (a union may become a group)
   // A name neither declared nor in the included library: warns (once per name) and returns true.
   bool missing_name(Loc at, const std::string& name, const std::string& what);
   double version_ = 0;             // #version, 0 when none
