@@ -362,6 +362,18 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
     case Type::List: {
       const auto& items = as_list(v);
       if (items.empty()) return std::vector<double>{};
+      if (items.front().type == Type::Material) {
+        // A material chosen by pattern: `materials = [dark, light]`.
+        render::MaterialListParam list;
+        for (const Value& x : items) {
+          if (x.type != Type::Material)
+            fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: a list of materials holds only "
+                                    "materials, not {}",
+                                    *p.name, kind, with_article(x.type)));
+          list.materials.push_back(realize_material(x));
+        }
+        return list;
+      }
       if (std::any_of(items.begin(), items.end(), [](const Value& x) { return x.type == Type::Texture; })) {
         // A sky_sphere's layers: textures, and solid colors among them.
         render::LayersParam layers;

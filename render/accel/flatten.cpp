@@ -126,9 +126,12 @@ std::vector<bool> instanced_groups(const SceneDesc& scene) {
 
   auto material_ok = [&](MaterialId id) {
     if (id >= scene.materials.size()) return true;  // the default material: opaque, dark
-    const MaterialDesc& m = scene.materials[id];
     auto black = [](const Color& c) { return !(c.r > 0.0 || c.g > 0.0 || c.b > 0.0); };
-    return black(m.transmit) && black(m.emission) && m.transmit_texture == kNoId && m.emission_texture == kNoId;
+    bool ok = true;
+    for_each_material_choice(scene.materials, id, [&](MaterialId, const MaterialDesc& m) {
+      ok = ok && black(m.transmit) && black(m.emission) && m.transmit_texture == kNoId && m.emission_texture == kNoId;
+    });
+    return ok;
   };
   // Whether each group may be instanced, and how many shapes it holds (saturating): computed
   // once per group over the graph (a DAG; a cycle makes its groups ineligible, and flattening

@@ -87,6 +87,8 @@ constexpr PropertyInfo kMaterial[] = {
     {"media_emission", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light given off per unit length."},
     {"media_eccentricity", "number in (-1, 1)", "`0`", "Medium inside (needs `transmit`): the phase function's mean cosine (Henyey-Greenstein; 0 isotropic, > 0 forward)."},
     {"media_density", "texture", "none", "Medium inside (needs `transmit`): scales the three above by the texture's value (mean channel, clamped to [0, 1]) at each world point."},
+    {"pattern", "texture", "none", "With `materials`: the texture whose luminance (0 to 1) picks the material at each point; nothing else may be given."},
+    {"materials", "list of materials", "none", "With `pattern`: the materials chosen among, in equal ranges of the luminance, the first for the darkest (POV-Ray's texture checker, texture_map)."},
 };
 
 // The properties every light takes, in the order the builder has always listed them (which

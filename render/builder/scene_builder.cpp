@@ -491,6 +491,7 @@ void SceneBuilder::sky_sphere(ParamSet& ps, TextureDesc& t) {
 }
 
 MaterialId SceneBuilder::material(ParamSet& ps) {
+  if (ps.has("pattern") || ps.has("materials")) return chosen_material(ps);
   MaterialDesc m;
   m.loc = ps.loc();
   for (const Param& p : ps.params())
@@ -572,6 +573,38 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
                                "no 'transmit' (rgb(1) with ior = 1 and diffuse = 0 makes a clear container)"});
   ps.check_unused(kMaterialNames);
   scene_.materials.push_back(std::move(m));
+  return static_cast<MaterialId>(scene_.materials.size() - 1);
+}
+
+// material { pattern = P  materials = [A, B, ...] }: copies of A, B, ... stored together, then
+// the material that picks among them (MaterialDesc::choice_pattern).
+MaterialId SceneBuilder::chosen_material(ParamSet& ps) {
+  const TextureRef* pattern = reference<TextureRef>(ps, "pattern", "material", "texture");
+  const MaterialListParam* list = reference<MaterialListParam>(ps, "materials", "material", "list of materials");
+  if (!pattern) ps.fail_block("a material with 'materials' needs the 'pattern' that chooses among them");
+  if (!list) ps.fail_block("a material with 'pattern' needs the 'materials' it chooses among: materials = [a, b]");
+  if (list->materials.size() < 2 || list->materials.size() > 256)
+    ps.fail(*ps.find("materials"), fmt::format("'materials' holds 2 to 256 materials, got {}", list->materials.size()));
+  for (const Param& p : ps.params())
+    if (p.name != "pattern" && p.name != "materials")
+      ps.fail(p, fmt::format("a material chosen by pattern takes only 'pattern' and 'materials': give '{}' to "
+                             "the materials it chooses among",
+                             p.name));
+  MaterialDesc m;
+  m.loc = ps.loc();
+  m.choice_pattern = pattern->id;
+  m.first_choice = static_cast<MaterialId>(scene_.materials.size());
+  m.choice_count = static_cast<uint32_t>(list->materials.size());
+  const MaterialDesc default_material;
+  for (MaterialId id : list->materials) {
+    const MaterialDesc& c = id < scene_.materials.size() ? scene_.materials[id] : default_material;
+    if (c.choice_count > 0)
+      ps.fail(*ps.find("materials"), "a material chosen by pattern cannot choose among materials that are "
+                                     "themselves chosen by pattern");
+    MaterialDesc copy = c;  // copied: push_back may move the one it came from
+    scene_.materials.push_back(copy);
+  }
+  scene_.materials.push_back(m);
   return static_cast<MaterialId>(scene_.materials.size() - 1);
 }
 

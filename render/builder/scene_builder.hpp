@@ -50,6 +50,7 @@ class SceneBuilder {
   void output_settings(ParamSet& params, Settings& s);         // settings { aov depth_range ... }
   TextureId texture(std::string_view kind, ParamSet& params, const Mat4& transform = Mat4(1.0));
   MaterialId material(ParamSet& params);
+  MaterialId chosen_material(ParamSet& params);  // material { pattern  materials }
   MediumId medium(ParamSet& params);  // the media_* properties of a material or settings; kNoId if none
   NodeId shape(std::string_view kind, ParamSet& params);      // not placed yet
   NodeId light(std::string_view kind, ParamSet& params);      // not placed yet

@@ -92,6 +92,8 @@ const char* param_type_name(const ParamValue& v) {
       return "list of lists";
     case 13:
       return "list of textures";
+    case 14:
+      return "list of materials";
   }
   return "value";
 }

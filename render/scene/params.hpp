@@ -31,6 +31,10 @@ struct LayersParam {
   std::vector<TextureId> textures;
   std::vector<Color> colors;
 };
+// A material chosen by pattern's `materials = [a, b]`: materials in order.
+struct MaterialListParam {
+  std::vector<MaterialId> materials;
+};
 // An isosurface's container, `contained_by = box { min max }` or `sphere { center radius }`
 // (the runtime reads the block's own properties; the shape is not placed).
 struct ContainerParam {
@@ -44,10 +48,11 @@ struct ContainerParam {
 // number → double, bool, string, vector → Vec3, color → Color, list of vectors → vector<Vec3>,
 // list of numbers → vector<double>, a texture value → TextureRef, a material → MaterialRef,
 // a list of [number, color] pairs → ColorMapParam, a macro of one point → FunctionRef, an
-// unplaced box or sphere → ContainerParam, a list holding textures (and colors) → LayersParam.
+// unplaced box or sphere → ContainerParam, a list holding textures (and colors) → LayersParam, a
+// list of materials → MaterialListParam.
 using ParamValue = std::variant<double, bool, std::string, Vec3, Color, TextureRef, MaterialRef,
                                 std::vector<Vec3>, std::vector<double>, ColorMapParam, FunctionRef,
-                                ContainerParam, RowsParam, LayersParam>;
+                                ContainerParam, RowsParam, LayersParam, MaterialListParam>;
 
 // "number", "vector", ... for messages.
 const char* param_type_name(const ParamValue& v);

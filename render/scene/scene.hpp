@@ -123,8 +123,30 @@ struct MaterialDesc {
   bool fresnel = false;        // Schlick's approximation scales reflect/transmit
   double roughness = 0.0;      // > 0: glossy (blurred) reflection, sampled
   MediumId medium = kNoId;     // what fills the inside (render/shade/medium.hpp), or none
+  // A material chosen by pattern (POV-Ray's texture { checker texture {A} texture {B} }): at
+  // each point the pattern's luminance in [0, 1] picks one of `choice_count` materials stored
+  // from `first_choice` on (equal ranges, the first for the darkest); its own values above are
+  // unused. choice_count 0: an ordinary material.
+  TextureId choice_pattern = kNoId;
+  MaterialId first_choice = 0;
+  uint32_t choice_count = 0;
   SourceRef loc;
 };
+
+// Calls f(id, material) for what a surface with material `id` may show: the choices of a
+// material chosen by pattern, else `id` itself (ids past the list: the default material, not
+// called).
+template <class F>
+void for_each_material_choice(const std::vector<MaterialDesc>& materials, MaterialId id, F&& f) {
+  if (id >= materials.size()) return;
+  const MaterialDesc& m = materials[id];
+  if (m.choice_count == 0) {
+    f(id, m);
+    return;
+  }
+  for (uint32_t k = 0; k < m.choice_count; ++k)
+    if (m.first_choice + k < materials.size()) f(m.first_choice + k, materials[m.first_choice + k]);
+}
 
 // Does this material let light through at all (a zero weight is none; a transmit texture may)?
 inline bool transmits(const MaterialDesc& m) {

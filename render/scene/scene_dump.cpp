@@ -227,6 +227,11 @@ void SceneDesc::dump(std::ostream& out) const {
   out << fmt::format("materials {}\n", materials.size());
   for (std::size_t i = 0; i < materials.size(); ++i) {
     const MaterialDesc& m = materials[i];
+    if (m.choice_count > 0) {
+      out << fmt::format("  material {}: chosen by texture {} among materials {} to {}{}\n", i, id(m.choice_pattern),
+                         m.first_choice, m.first_choice + m.choice_count - 1, where(m.loc));
+      continue;
+    }
     out << fmt::format(
         "  material {}: color {} texture {} emission {} ambient {} diffuse {} specular {} shininess {} reflect {} "
         "transmit {} ior {}{} fresnel {} roughness {}{}\n",

@@ -20,7 +20,7 @@ bool reflects(const MaterialDesc& m) { return nonzero(m.reflect) || m.reflect_te
 template <class F>
 void for_each_texture(const MaterialDesc& m, F&& f) {
   for (TextureId t : {m.texture, m.diffuse_texture, m.specular_texture, m.reflect_texture, m.transmit_texture,
-                      m.emission_texture, m.bump, m.normal_map})
+                      m.emission_texture, m.bump, m.normal_map, m.choice_pattern})
     if (t != kNoId) f(t);
 }
 
@@ -208,6 +208,12 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
     probe.shape = &shape;
     probe.material = material < scene.materials.size() ? &scene.materials[material] : &default_material;
     apply_rules(Scope::Shape, probe, f);
+    // A material chosen by pattern (its pattern is a texture of its own): what each choice uses.
+    if (material < scene.materials.size() && scene.materials[material].choice_count > 0)
+      for_each_material_choice(scene.materials, material, [&](MaterialId, const MaterialDesc& m) {
+        probe.material = &m;
+        apply_rules(Scope::Shape, probe, f);
+      });
   };
   for (std::size_t i = 0; i < flat.shapes.size(); ++i) add_shape(scene.shapes[flat.shapes[i].shape], flat.material(scene, i));
   // An instanced group's shapes, once per group (not per placement; such a group holds no
@@ -240,11 +246,14 @@ std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
   auto use_medium = [&](MediumId m) {
     if (m < scene.media.size() && scene.media[m].density < used.size()) used[scene.media[m].density] = true;
   };
+  auto use_material = [&](MaterialId, const MaterialDesc& m) {
+    for_each_texture(m, [&](TextureId t) { if (t < used.size()) used[t] = true; });
+    use_medium(m.medium);
+  };
   auto use = [&](const ShapeDesc&, MaterialId id) {
-    if (id < scene.materials.size()) {
-      for_each_texture(scene.materials[id], [&](TextureId t) { if (t < used.size()) used[t] = true; });
-      use_medium(scene.materials[id].medium);
-    }
+    if (id >= scene.materials.size()) return;
+    use_material(id, scene.materials[id]);  // a chooser's pattern
+    if (scene.materials[id].choice_count > 0) for_each_material_choice(scene.materials, id, use_material);
   };
   for (std::size_t i = 0; i < flat.shapes.size(); ++i) use(scene.shapes[flat.shapes[i].shape], flat.material(scene, i));
   for_each_instanced_group(flat, [&](uint32_t g) {

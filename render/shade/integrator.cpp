@@ -60,11 +60,14 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
   media_samples_ = std::max(1, settings.media_samples);
   media_on_ = atmosphere_ != kNoId;
   for (std::size_t i = 0; i < world.instance_count(); ++i) {
-    MaterialId id = world.instance(i).material;
-    if (id >= materials.size()) continue;
-    if (materials[id].transmit_texture != kNoId) textured_transmit = true;
-    if (materials[id].medium < media_->size() && transmits(materials[id])) media_on_ = true;
-    if (passes_through(materials[id])) has_pass_through_ = true;
+    const MaterialId placed = world.instance(i).material;
+    // A material chosen by pattern transmits by the point, as a transmit texture does.
+    const bool chosen = placed < materials.size() && materials[placed].choice_count > 0;
+    for_each_material_choice(materials, placed, [&](MaterialId, const MaterialDesc& m) {
+      if (m.transmit_texture != kNoId || (chosen && transmits(m))) textured_transmit = true;
+      if (m.medium < media_->size() && transmits(m)) media_on_ = true;
+      if (passes_through(m)) has_pass_through_ = true;
+    });
   }
   // Media scenes, and scenes with surfaces light passes through unchanged, take the generic
   // path: shadow rays walk surface by surface to know which medium each stretch is in, and
@@ -120,6 +123,11 @@ const MaterialDesc& Integrator::material(uint32_t instance) const {
   return id < materials_.size() ? materials_[id] : default_material_;
 }
 
+const MaterialDesc& Integrator::material(const WorldHit& hit) const {
+  const MaterialId id = surface_material_id(world_.instance(hit.instance).material, materials_, world_, hit, textures_);
+  return id < materials_.size() ? materials_[id] : default_material_;
+}
+
 template <unsigned F>
 Rgb Integrator::albedo(const MaterialDesc& m, const WorldHit& hit) const {
   if ((F & trace_flags::kTexture) && m.texture != kNoId && m.texture < textures_.size()) {
@@ -168,7 +176,7 @@ FirstHit Integrator::first_hit(const Ray& ray) const {
   out.depth = hit.t * glm::length(ray.direction);
   out.bounded = world_.instance(hit.instance).kind != kPrimKind<Plane>;
   MaterialScratch scratch;   // vertex colors are the albedo too
-  out.albedo = albedo(shading_material(material(hit.instance), world_, hit, textures_, scratch), hit);
+  out.albedo = albedo(shading_material(material(hit), world_, hit, textures_, scratch), hit);
   return out;
 }
 
@@ -210,7 +218,7 @@ Rgb Integrator::shadow_transmittance(const Vec3& origin, const LightSample& ls, 
     WorldHit hit;
     if (!world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true, /*shadow_ray=*/true)) return t;
     MaterialScratch scratch;
-    Rgb kt = to_rgb(shading_material(material(hit.instance), world_, hit, textures_, scratch).transmit);
+    Rgb kt = to_rgb(shading_material(material(hit), world_, hit, textures_, scratch).transmit);
     t *= glm::clamp(kt, 0.0, 1.0);
     if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
     Vec3 next = offset_ray_origin(hit.point, hit.normal, ls.direction, hit.error);
@@ -335,7 +343,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
     return fog_on_ ? fog_t * seen + (1.0 - fog_t) * fog_color_ : seen;
   };
   MaterialScratch scratch;
-  const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
+  const MaterialDesc& m = shading_material(material(hit), world_, hit, textures_, scratch);
   Vec3 incident = glm::normalize(ray.direction);
   if (kMedia && has_pass_through_ && passes_through(m)) {
     const bool into = glm::dot(hit.normal, incident) < 0.0;
@@ -494,7 +502,7 @@ Rgb Integrator::media_shadow(Ray ray, double end, const MediumStack& media) cons
       t *= medium->transmittance_marched(ray.origin, dir, (found ? hit.t : end) * len, media_samples_);
     if (!found) return t;
     MaterialScratch scratch;
-    const MaterialDesc& m = shading_material(material(hit.instance), world_, hit, textures_, scratch);
+    const MaterialDesc& m = shading_material(material(hit), world_, hit, textures_, scratch);
     t *= glm::clamp(to_rgb(m.transmit), 0.0, 1.0);
     if (max_channel(t) < tol::kMinPathWeight) return Rgb(0.0);
     if (glm::dot(hit.normal, dir) < 0.0)

@@ -110,6 +110,7 @@ class Integrator {
     return id < media_->size() ? &(*media_)[id] : nullptr;
   }
   const MaterialDesc& material(uint32_t instance) const;
+  const MaterialDesc& material(const WorldHit& hit) const;  // a material chosen by pattern: the choice there
   template <unsigned F = trace_flags::kAll>
   Rgb albedo(const MaterialDesc& m, const WorldHit& hit) const;
   // What a ray that leaves the scene sees: the environment map, else the background color.

@@ -35,6 +35,18 @@ TexturePoint texture_point(const World& world, const WorldHit& hit, bool want_uv
   return p;
 }
 
+MaterialId choose_material_at(MaterialId id, const std::vector<MaterialDesc>& materials, const World& world,
+                              const WorldHit& hit, const std::vector<CompiledTexture>& textures) {
+  const MaterialDesc& m = materials[id];
+  double v = 0.0;
+  if (valid(m.choice_pattern, textures)) {
+    const CompiledTexture& pattern = textures[m.choice_pattern];
+    v = luminance(pattern.eval(texture_point(world, hit, pattern)));
+  }
+  const MaterialId chosen = m.first_choice + choice_for(v, m.choice_count);
+  return chosen < materials.size() ? chosen : id;
+}
+
 const MaterialDesc& varying_material(const MaterialDesc& m, const World& world, const WorldHit& hit,
                                      const std::vector<CompiledTexture>& textures,
                                      MaterialScratch& slot) {

@@ -22,6 +22,23 @@ inline TexturePoint texture_point(const World& world, const WorldHit& hit, const
   return texture_point(world, hit, texture.uses_uv());
 }
 
+// The material a hit on a surface with material `id` shows: for a material chosen by pattern
+// (MaterialDesc::choice_pattern), the choice its pattern's luminance picks at the hit (equal
+// ranges of [0, 1], the first for the darkest); else `id` itself. One test when nothing is chosen.
+MaterialId choose_material_at(MaterialId id, const std::vector<MaterialDesc>& materials, const World& world,
+                              const WorldHit& hit, const std::vector<CompiledTexture>& textures);
+inline MaterialId surface_material_id(MaterialId id, const std::vector<MaterialDesc>& materials, const World& world,
+                                      const WorldHit& hit, const std::vector<CompiledTexture>& textures) {
+  if (id >= materials.size() || materials[id].choice_count == 0) return id;
+  return choose_material_at(id, materials, world, hit, textures);
+}
+// Which of `count` choices a luminance picks (NaN and below 0: the first; 1 and above: the last).
+inline uint32_t choice_for(double luminance, uint32_t count) {
+  if (!(luminance > 0.0)) return 0;
+  const double k = luminance * static_cast<double>(count);
+  return k >= static_cast<double>(count) ? count - 1 : static_cast<uint32_t>(k);
+}
+
 // True when `m` has anything to evaluate per point (a channel texture).
 inline bool has_channel_textures(const MaterialDesc& m) {
   return m.diffuse_texture != kNoId || m.specular_texture != kNoId || m.reflect_texture != kNoId ||

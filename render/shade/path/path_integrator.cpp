@@ -50,8 +50,9 @@ PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const
   }
   has_media_ = atmosphere_ != kNoId;
   std::vector<bool> placed(scene.materials.size(), false);
-  for (std::size_t i = 0; i < world.instance_count(); ++i)
-    if (world.instance(i).material < placed.size()) placed[world.instance(i).material] = true;
+  for (std::size_t i = 0; i < world.instance_count(); ++i)  // (a material chosen by pattern: its choices)
+    for_each_material_choice(scene.materials, world.instance(i).material,
+                             [&](MaterialId id, const MaterialDesc&) { placed[id] = true; });
   scale_.assign(scene.materials.size(), 1.0);
   for (std::size_t id = 0; id < scene.materials.size(); ++id) {
     if (!placed[id]) continue;
@@ -107,8 +108,8 @@ Lobes PathIntegrator::lobes(const MaterialDesc& m, uint32_t material_id, const W
   return lb;
 }
 
-const MaterialDesc& PathIntegrator::material(uint32_t instance) const {
-  const uint32_t id = world_.instance(instance).material;
+const MaterialDesc& PathIntegrator::material(const WorldHit& hit) const {
+  const uint32_t id = surface_material_id(world_.instance(hit.instance).material, materials_, world_, hit, textures_);
   return id < materials_.size() ? materials_[id] : default_material_;
 }
 
@@ -126,7 +127,7 @@ Rgb PathIntegrator::shadow(const Vec3& origin, const Vec3& dir, double end, cons
     if (const CompiledMedium* medium = medium_of(stack))
       t *= medium->transmittance(ray.origin, dir, found ? hit.t : end, rng);
     if (!found) return t;
-    const MaterialDesc& m = material(hit.instance);
+    const MaterialDesc& m = material(hit);
     const bool into = glm::dot(hit.normal, dir) < 0.0;
     if (!(max_channel(t) > 0.0) || !stack.cross_clear(hit.medium, m, into)) return Rgb(0.0);
     const Vec3 next = offset_ray_origin(hit.point, into ? -hit.normal : hit.normal, dir, hit.error);
@@ -241,7 +242,8 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
       }
       break;
     }
-    const uint32_t material_id = world_.instance(hit.instance).material;
+    const uint32_t material_id =
+        surface_material_id(world_.instance(hit.instance).material, materials_, world_, hit, textures_);
     const MaterialDesc& base = material_id < materials_.size() ? materials_[material_id] : default_material_;
     const bool into = glm::dot(hit.normal, dir) < 0.0;
     if (has_pass_through_ && media.cross_clear(hit.medium, base, into)) {

@@ -47,7 +47,7 @@ class PathIntegrator {
 
  private:
   Lobes lobes(const MaterialDesc& m, uint32_t material_id, const WorldHit& hit) const;
-  const MaterialDesc& material(uint32_t instance) const;
+  const MaterialDesc& material(const WorldHit& hit) const;  // a material chosen by pattern: the choice there
   const CompiledMedium* medium_of(const MediumStack& media) const {
     const MediumId id = media.medium(atmosphere_);
     return id < media_.size() ? &media_[id] : nullptr;
