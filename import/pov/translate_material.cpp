@@ -69,6 +69,12 @@ void Translator::default_finish(MaterialProps& m) const {
 }
 
 std::string Translator::material_text(const MaterialProps& m, bool with_defaults) {
+  if (m.chosen) {  // its choices carry POV-Ray's defaults; it takes nothing else
+    std::string s;
+    for (const auto& p : m.props)
+      if (p.first == "pattern" || p.first == "materials") s += (s.empty() ? "" : "  ") + p.first + " = " + p.second;
+    return "material { " + s + " }";
+  }
   MaterialProps full;
   if (with_defaults && m.base.empty()) {
     // #default's pigment, else POV-Ray's black; then the finish defaults, then this texture's.
@@ -292,6 +298,7 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
       unsupported(n.loc, n.kind, "see docs/textures.md", false);
     }
   }
+  if (!pattern_map_override_.empty()) map = pattern_map_override_;
   std::string suffix;
   for (const std::string& t : xforms) suffix += " " + t;
   if (pattern == "checker") {
@@ -524,6 +531,7 @@ void Translator::texture_part(const Item& it, MaterialProps& m) {
   if (b.kind == "finish") return finish(b, m);
   if (b.kind == "interior") return interior(b, m);
   if (b.kind == "normal") return normal(b, m);
+  if (b.kind == "texture" && texture_pattern(b, m)) return;
   if (b.kind == "texture" || b.kind == "material") {
     for (const Item& part : b.items) {
       if (part.kind == Item::Value && part.args[0]->kind == Expr::Name) {

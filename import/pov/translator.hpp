@@ -42,6 +42,9 @@ struct MaterialProps {
   // it: ambient and diffuse are scaled by 1 - (filter * max(colour) + transmit), which rts's
   // material writes out (material_text).
   double opacity = 1.0;
+  // A material chosen by pattern (translate_texture_map.cpp): `pattern` and `materials` only,
+  // written without POV-Ray's defaults (each choice carries its own).
+  bool chosen = false;
 };
 
 // A declared name. What a use needs from its block is worked out when it is declared, so
@@ -121,6 +124,10 @@ class Translator {
   // The material a POV-Ray texture-like block (texture, pigment, finish, normal, interior,
   // material) adds to `m`.
   void texture_part(const Item& it, MaterialProps& m);
+  // texture { checker texture { A } texture { B } } and texture { PATTERN texture_map { ... } }
+  // as rts's material chosen by pattern (translate_texture_map.cpp); false when `b` is neither.
+  bool texture_pattern(const Block& b, MaterialProps& m);
+  std::string pattern_map_override_;  // pigment(): the color_map to write instead of the block's
   void pigment(const Block& b, MaterialProps& m);
   void finish(const Block& b, MaterialProps& m);
   void interior(const Block& b, MaterialProps& m);
