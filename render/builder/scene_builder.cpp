@@ -596,14 +596,26 @@ MaterialId SceneBuilder::chosen_material(ParamSet& ps) {
   m.first_choice = static_cast<MaterialId>(scene_.materials.size());
   m.choice_count = static_cast<uint32_t>(list->materials.size());
   const MaterialDesc default_material;
+  uint64_t leaves = 0;
+  int depth = 0;
   for (MaterialId id : list->materials) {
     const MaterialDesc& c = id < scene_.materials.size() ? scene_.materials[id] : default_material;
-    if (c.choice_count > 0)
-      ps.fail(*ps.find("materials"), "a material chosen by pattern cannot choose among materials that are "
-                                     "themselves chosen by pattern");
-    MaterialDesc copy = c;  // copied: push_back may move the one it came from
-    scene_.materials.push_back(copy);
+    // A chosen one keeps pointing at its own choices, stored before it.
+    leaves += c.choice_count > 0 ? c.choice_leaves : 1;
+    depth = std::max(depth, static_cast<int>(c.choice_depth));
   }
+  if (depth + 1 > kMaxChoiceDepth)
+    ps.fail(*ps.find("materials"), fmt::format("materials chosen by pattern nest at most {} deep", kMaxChoiceDepth));
+  if (leaves > kMaxChoiceLeaves)
+    ps.fail(*ps.find("materials"),
+            fmt::format("this material reaches {} materials through its nested choices; at most {}", leaves,
+                        kMaxChoiceLeaves));
+  for (MaterialId id : list->materials) {
+    MaterialDesc copy = id < scene_.materials.size() ? scene_.materials[id] : default_material;
+    scene_.materials.push_back(copy);  // copied first: push_back may move the one it came from
+  }
+  m.choice_leaves = static_cast<uint32_t>(leaves);
+  m.choice_depth = static_cast<uint8_t>(depth + 1);
   scene_.materials.push_back(m);
   return static_cast<MaterialId>(scene_.materials.size() - 1);
 }

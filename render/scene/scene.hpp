@@ -127,25 +127,35 @@ struct MaterialDesc {
   // each point the pattern's luminance in [0, 1] picks one of `choice_count` materials stored
   // from `first_choice` on (equal ranges, the first for the darkest); its own values above are
   // unused. choice_count 0: an ordinary material.
+  // A choice may itself be chosen by pattern (POV-Ray's nested texture_map): `choice_depth`
+  // levels in all (1 for a chooser of ordinary materials), `choice_leaves` the ordinary
+  // materials reached, counted along every path; both bounded by the builder.
   TextureId choice_pattern = kNoId;
   MaterialId first_choice = 0;
   uint32_t choice_count = 0;
+  uint32_t choice_leaves = 0;
+  uint8_t choice_depth = 0;
   SourceRef loc;
 };
 
-// Calls f(id, material) for what a surface with material `id` may show: the choices of a
-// material chosen by pattern, else `id` itself (ids past the list: the default material, not
-// called).
+// Bounds on materials chosen by pattern: how deep choices nest, and how many ordinary
+// materials one reaches (what a scene-wide pass over its choices visits).
+inline constexpr int kMaxChoiceDepth = 8;
+inline constexpr uint32_t kMaxChoiceLeaves = 4096;
+
+// Calls f(id, material) for what a surface with material `id` may show: the ordinary
+// materials a material chosen by pattern reaches through its choices (at most
+// kMaxChoiceLeaves calls, a material reached twice called twice), else `id` itself (ids past
+// the list: the default material, not called).
 template <class F>
-void for_each_material_choice(const std::vector<MaterialDesc>& materials, MaterialId id, F&& f) {
-  if (id >= materials.size()) return;
+void for_each_material_choice(const std::vector<MaterialDesc>& materials, MaterialId id, F&& f, int depth = 0) {
+  if (id >= materials.size() || depth > kMaxChoiceDepth) return;
   const MaterialDesc& m = materials[id];
   if (m.choice_count == 0) {
     f(id, m);
     return;
   }
-  for (uint32_t k = 0; k < m.choice_count; ++k)
-    if (m.first_choice + k < materials.size()) f(m.first_choice + k, materials[m.first_choice + k]);
+  for (uint32_t k = 0; k < m.choice_count; ++k) for_each_material_choice(materials, m.first_choice + k, f, depth + 1);
 }
 
 // Does this material let light through at all (a zero weight is none; a transmit texture may)?

@@ -29,8 +29,10 @@ MaterialId choose_material_at(MaterialId id, const std::vector<MaterialDesc>& ma
                               const WorldHit& hit, const std::vector<CompiledTexture>& textures);
 inline MaterialId surface_material_id(MaterialId id, const std::vector<MaterialDesc>& materials, const World& world,
                                       const WorldHit& hit, const std::vector<CompiledTexture>& textures) {
-  if (id >= materials.size() || materials[id].choice_count == 0) return id;
-  return choose_material_at(id, materials, world, hit, textures);
+  // A nested choice chooses again (the builder bounds the depth; the loop bound is a guard).
+  for (int depth = 0; id < materials.size() && materials[id].choice_count > 0 && depth < kMaxChoiceDepth; ++depth)
+    id = choose_material_at(id, materials, world, hit, textures);
+  return id;
 }
 // Which of `count` choices a luminance picks (NaN and below 0: the first; 1 and above: the last).
 inline uint32_t choice_for(double luminance, uint32_t count) {

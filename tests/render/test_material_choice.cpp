@@ -107,3 +107,23 @@ TEST_CASE("material choice: shadows pass the cells whose choice transmits", "[pa
   CHECK(lit.x == Approx(1.0));
   CHECK(dark.x == 0.0);
 }
+
+TEST_CASE("material choice: a choice chosen by pattern chooses again", "[patterns]") {
+  SceneDesc s;
+  const TextureId fine = add_checker(s);  // cells of 1
+  TextureDesc coarse_desc = s.textures[fine];
+  coarse_desc.scale = 2.0;
+  s.textures.push_back(coarse_desc);
+  const TextureId coarse = static_cast<TextureId>(s.textures.size() - 1);
+  const MaterialId inner = add_chooser(s, fine, {emissive(Color(1, 0, 0)), emissive(Color(0, 0, 1))});
+  // As the builder stores it: the outer chooser's choices are copies, the inner one still
+  // naming its own choices.
+  MaterialDesc inner_copy = s.materials[inner];
+  const MaterialId outer = add_chooser(s, coarse, {inner_copy, emissive(Color(0, 1, 0))});
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, outer));
+  Tracer t(std::move(s));
+  auto seen = [&](double x) { return t.trace(Ray{Vec3(x, 1, 0.5), Vec3(0, -1, 0)}); };
+  CHECK(seen(0.5) == Rgb(1, 0, 0));  // coarse cell 0 (black: the inner checker), fine cell 0
+  CHECK(seen(1.5) == Rgb(0, 0, 1));  // coarse cell 0, fine cell 1
+  CHECK(seen(2.5) == Rgb(0, 1, 0));  // coarse cell 1: white, green
+}
