@@ -62,12 +62,14 @@ bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, con
                                AABB& bounds, bool& unbounded, MaterialId material) {
   const ShapeDesc& shape = scene.shapes[shape_index];
   inst.material = material;  // its own, else its group's
-  // (A material chosen by pattern: when any of its choices lets light through.)
-  inst.transmissive = false;
-  for_each_material_choice(scene.materials, material, [&](MaterialId, const MaterialDesc& m) {
-    inst.transmissive = inst.transmissive || m.transmit.r > 0.0 || m.transmit.g > 0.0 || m.transmit.b > 0.0;
-  });
-  has_transmissive_ = has_transmissive_ || inst.transmissive;
+  if (material < scene.materials.size()) {
+    const Color& t = scene.materials[material].transmit;
+    // (may_transmit: a material chosen by pattern, when any choice does. Written so, the old
+    // test first, GCC inlines World::intersect_kind's normalize as before: see
+    // render/scene/material_choice.cpp.)
+    inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0 || may_transmit(scene.materials, material);
+    has_transmissive_ = has_transmissive_ || inst.transmissive;
+  }
   bool identity = is_identity(to_world);
   if (!identity) {
     double det = glm::determinant(glm::dmat3(to_world));

@@ -37,13 +37,7 @@ constexpr std::array<bool, 256> kWindowedKind = windowed_kinds(std::make_index_s
 void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
                     AABB& world_bounds) {
   Csg csg;
-  auto transmits = [&](MaterialId id) {
-    bool any = false;
-    for_each_material_choice(scene.materials, id, [&](MaterialId, const MaterialDesc& m) {
-      any = any || m.transmit.r > 0.0 || m.transmit.g > 0.0 || m.transmit.b > 0.0;
-    });
-    return any;
-  };
+  auto transmits = [&](MaterialId id) { return may_transmit(scene.materials, id); };
   const double inf = Interval::kInfinity;
   std::vector<uint32_t> block_transforms;  // this block's leaf transforms so far
   // Appends the nodes for `node_id` placed by `m`, children before parents; a group is a union.

@@ -143,6 +143,10 @@ struct MaterialDesc {
 inline constexpr int kMaxChoiceDepth = 8;
 inline constexpr uint32_t kMaxChoiceLeaves = 4096;
 
+// Whether a surface with material `id` lets light through anywhere: a transmit color above 0,
+// of the material or of any choice it reaches (render/scene/material_choice.cpp).
+bool may_transmit(const std::vector<MaterialDesc>& materials, MaterialId id);
+
 // Calls f(id, material) for what a surface with material `id` may show: the ordinary
 // materials a material chosen by pattern reaches through its choices (at most
 // kMaxChoiceLeaves calls, a material reached twice called twice), else `id` itself (ids past

@@ -123,7 +123,7 @@ const MaterialDesc& Integrator::material(uint32_t instance) const {
   return id < materials_.size() ? materials_[id] : default_material_;
 }
 
-const MaterialDesc& Integrator::material(const WorldHit& hit) const {
+const MaterialDesc& Integrator::chosen_material(const WorldHit& hit) const {
   const MaterialId id = surface_material_id(world_.instance(hit.instance).material, materials_, world_, hit, textures_);
   return id < materials_.size() ? materials_[id] : default_material_;
 }
