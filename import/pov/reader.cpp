@@ -82,7 +82,11 @@ Item Reader::item(const Block* in_block) {
     // A few keywords take a value that is itself a keyword-led item (`image_map { png "f" }`
     // has its own block); here only plain values.
     if (starts_value()) {
+      // `matrix <a, ..., l>` has 12 components (the translation checks the count).
+      const bool saved_long = long_vectors_;
+      if (it.name == "matrix") long_vectors_ = true;
       it.args.push_back(expr());
+      long_vectors_ = saved_long;
       // area_light's four values may go without commas: <4 0 0> <0 0 4> 10 10.
       const bool spaced = it.name == "area_light";
       while (is_punct(",") || (spaced && it.args.size() < 4 && starts_value())) {
