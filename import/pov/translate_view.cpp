@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "import/pov/reader.hpp"
 #include "import/pov/translator.hpp"
@@ -24,6 +25,36 @@ bool literal3(const Expr* e, glm::dvec3& out) {
   }
   if (!e || !Translator::literal_vector(*e, v) || v.size() != 3) return false;
   out = glm::dvec3(v[0], v[1], v[2]);
+  return true;
+}
+
+// A camera's literal transform as a matrix, as rts's own transforms build it (rotate about x,
+// then y, then z, in degrees; matrix's 12 values row by row, then the translation); false when
+// it is computed or a declared transform.
+bool camera_transform(const Item& it, glm::dmat4& out) {
+  if (it.args.empty()) return false;
+  const glm::dmat4 one(1.0);
+  if (it.name == "matrix") {
+    std::vector<double> v;
+    if (!Translator::literal_vector(*it.args[0], v) || v.size() != 12) return false;
+    out = one;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 3; ++j) out[i][j] = v[static_cast<std::size_t>(i * 3 + j)];
+    return true;
+  }
+  glm::dvec3 a;
+  if (!literal3(it.args[0].get(), a)) return false;
+  if (it.name == "translate") {
+    out = glm::translate(one, a);
+  } else if (it.name == "scale") {
+    out = glm::scale(one, a);
+  } else if (it.name == "rotate") {
+    out = glm::rotate(one, glm::radians(a.z), glm::dvec3(0, 0, 1)) *
+          glm::rotate(one, glm::radians(a.y), glm::dvec3(0, 1, 0)) *
+          glm::rotate(one, glm::radians(a.x), glm::dvec3(1, 0, 0));
+  } else {
+    return false;
+  }
   return true;
 }
 
@@ -148,6 +179,7 @@ void Translator::camera(Writer& w, const Block& b) {
              *direction = nullptr, *sky = nullptr;
   bool ortho = false;
   std::vector<std::string> extra;
+  std::vector<const Item*> moves;  // the camera's own transforms, in order
   const Block* src = &b;
   // camera { Declared modifiers }: the declared camera's items first.
   std::vector<Item> all;
@@ -179,7 +211,7 @@ void Translator::camera(Writer& w, const Block& b) {
     } else if (k == "blur_samples" || k == "confidence" || k == "variance") {
       // rts's samples per pixel carry the blur: settings { samples }
     } else if (k == "translate" || k == "rotate" || k == "scale" || k == "matrix" || k == "transform") {
-      unsupported(it.loc, "camera " + k, "location and look_at written moved", false);
+      moves.push_back(&it);  // applied to the camera's vectors below, when they are literal
     } else if (k == "fisheye" || k == "panoramic" || k == "spherical" || k == "cylinder" || k == "omnimax" ||
                k == "ultra_wide_angle") {
       unsupported(it.loc, k, "a perspective camera", false);
@@ -230,6 +262,28 @@ void Translator::camera(Writer& w, const Block& b) {
       U = u * ul;
       w.line(fmt::format("// POV-Ray's look_at {}: its direction, right and up turned towards it", vec(A)));
     }
+    // The camera's transforms move its position and turn its vectors (POV-Ray transforms the
+    // camera it has built); literal ones are applied here.
+    glm::dmat4 move(1.0);
+    bool moved = true;
+    for (const Item* it : moves) {
+      glm::dmat4 m;
+      if (!camera_transform(*it, m)) {
+        moved = false;
+        unsupported(it->loc, "camera " + it->name, "location and look_at written moved", false);
+        break;
+      }
+      move = m * move;
+    }
+    if (moved && !moves.empty()) {
+      L = glm::dvec3(move * glm::dvec4(L, 1.0));
+      const glm::dmat3 turn(move);
+      D = turn * D;
+      R = turn * R;
+      U = turn * U;
+      props.back() = "position = " + vec(L);
+      w.line("// POV-Ray's camera transforms applied to its position and vectors");
+    }
     auto clean = [](glm::dvec3 v) {
       for (int i = 0; i < 3; ++i)
         if (std::abs(v[i]) < 1e-12) v[i] = 0;
@@ -239,6 +293,7 @@ void Translator::camera(Writer& w, const Block& b) {
     props.push_back("right = " + clean(R));
     props.push_back("up = " + clean(U));
   } else {
+    for (const Item* it : moves) unsupported(it->loc, "camera " + it->name, "location and look_at written moved", false);
     if (look_at) props.push_back("look_at = " + vector_value(*look_at));
     else props.push_back(fmt::format("look_at = {} + {}", pos, direction ? vector_value(*direction) : "<0, 0, 1>"));
     if (sky) props.push_back("up = " + vector_value(*sky));
