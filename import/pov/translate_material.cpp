@@ -420,7 +420,12 @@ void Translator::finish(const Block& b, MaterialProps& m) {
     } else if (k == "brilliance" && !v.empty()) {
       m.set("brilliance", v);
     } else if (k == "metallic") {
-      m.set("metallic", v.empty() ? "1" : v);   // `metallic` alone is metallic 1
+      // `metallic` alone is metallic 1; `metallic on` / `off` (POV-Ray's booleans) 1 or 0
+      const Expr* a = it.args.empty() ? nullptr : it.args[0].get();
+      const std::string word = a && a->kind == Expr::Name ? a->text : "";
+      if (word == "on" || word == "true" || word == "yes") m.set("metallic", "1");
+      else if (word == "off" || word == "false" || word == "no") m.set("metallic", "0");
+      else m.set("metallic", v.empty() ? "1" : v);
     } else if (k == "irid" || k == "subsurface") {
       unsupported(it.loc, k, "not in rts's material model", false);
     } else {

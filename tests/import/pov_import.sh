@@ -55,6 +55,12 @@ expect_grep "$TMP/err" "^bad_syntax.pov:3:34: error: expected '}' to close the '
 expect_grep "$TMP/err" "^ +\^" "caret line"
 expect_exit 1 "render: the same error" -- "$RTS" render bad_syntax.pov -o "$TMP/bad.png"
 expect_grep "$TMP/err" "^bad_syntax.pov:3:34: error:" "located error"
+printf 'sphere { 0, 1 finish { metallic on } }\nsphere { 0, 1 finish { metallic off } }\nsphere { 0, 1 finish { metallic 0.4 } }\n' \
+  > "$TMP/metallic.pov"
+expect_exit 0 "metallic on/off (POV-Ray's booleans)" -- "$RTS" import "$TMP/metallic.pov"
+expect_grep "$TMP/out" "metallic = 1" "metallic on is 1"
+expect_grep "$TMP/out" "metallic = 0 " "metallic off is 0"
+expect_grep "$TMP/out" "metallic = 0.4" "a number stays"
 expect_exit 0 "a prism's conic_sweep and cubic_spline are translated" -- "$RTS" import prism_splines.pov
 expect_grep "$TMP/out" "sweep = \"conic\"" "the conic prism is translated"
 expect_grep "$TMP/out" "spline = \"cubic\"" "the cubic prism is translated"
