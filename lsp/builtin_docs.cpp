@@ -49,6 +49,7 @@ constexpr BuiltinDoc kBuiltins[] = {
     {"noise", "noise(p)", "Gradient noise at point p, in [0, 1]."},
     {"fbm", "fbm(p, [octaves, lambda, omega])", "Fractal sum of noise, in [-1, 1]."},
     {"turbulence", "turbulence(p, [octaves, lambda, omega])", "Fractal sum of |noise|, in [0, 1]."},
+    {"vturbulence", "vturbulence(lambda, omega, octaves, p)", "POV-Ray's vector turbulence: the displacement a turbulence warp scales."},
     {"cells", "cells(p)", "A random value per unit cell, in [0, 1)."},
     {"worley", "worley(p)", "Cellular (Worley) noise: the distance to the nearest feature point."},
     {"random", "random(seed)", "A deterministic random stream."},

@@ -261,6 +261,19 @@ Value noise_sum(BuiltinCall& c) {
                               : render::pattern::fbm(p, n, lambda, omega));
 }
 
+// vturbulence(lambda, omega, octaves, p): POV-Ray's vector turbulence (its argument order), the
+// displacement a `turbulence` warp scales: sum over octaves of omega^i * vector noise at
+// lambda^i * p (render/geometry/function/noise.hpp).
+Value vturbulence(BuiltinCall& c) {
+  const double lambda = num(c, 0), omega = num(c, 1), octaves = num(c, 2);
+  if (!(octaves >= 1 && octaves <= render::pattern::kMaxOctaves) || std::floor(octaves) != octaves)
+    c.in.fail(arg_loc(c, 2), fmt::format("the octaves of 'vturbulence' must be a whole number from 1 to {}, got {}",
+                                         render::pattern::kMaxOctaves, octaves));
+  const glm::dvec3 v = render::pattern::vector_turbulence(vec(c, 3), static_cast<int>(octaves), lambda, omega);
+  for (int k = 0; k < 3; ++k) finite(c, v[k]);
+  return Value::vector(v);
+}
+
 // random(seed) makes a stream; rand(r) draws from it in [0, 1), rand(r, lo, hi) in [lo, hi).
 Value random(BuiltinCall& c) {
   // Seeds are whole numbers a double holds exactly, so the same text is the same seed.
@@ -335,6 +348,7 @@ const std::vector<Builtin>& builtin_table() {
       {"noise", 1, 1, noise},
       {"fbm", 1, 4, noise_sum<false>},
       {"turbulence", 1, 4, noise_sum<true>},
+      {"vturbulence", 4, 4, vturbulence},
       {"cells", 1, 1, cells},
       {"worley", 1, 1, worley},
       {"random", 1, 1, random},

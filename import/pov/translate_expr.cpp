@@ -449,7 +449,7 @@ Text Translator::call(const Expr& e) {
     return Text{declared(e.args[0]->text) ? "true" : "false", Type::Bool};
   if (f == "vstr" || f == "chr" || f == "substr" || f == "strlen" || f == "strupr" || f == "strlwr" ||
       f == "asc" || f == "val" || f == "file_exists" || f == "dimension_size" || f == "trace" || f == "inside" ||
-      f == "min_extent" || f == "max_extent" || f == "vturbulence" || f == "eval_pigment") {
+      f == "min_extent" || f == "max_extent" || f == "eval_pigment") {
     unsupported(e.loc, f + "()", "no rts built-in of that name yet", false);
     return Text{"0", Type::Float};
   }

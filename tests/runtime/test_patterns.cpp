@@ -42,6 +42,13 @@ TEST_CASE("noise builtins call the renderer's noise", "[patterns]") {
   CHECK(eval_diagnostic("let x = fbm(<1, 2, 3>, 0)").message ==
         "the octaves of 'fbm' must be a whole number from 1 to 16, got 0");
   CHECK(eval_diagnostic("let x = noise(1)").message == "argument 1 of 'noise' must be a vector, got a number");
+  // POV-Ray's vturbulence(lambda, omega, octaves, p): each component read back alone.
+  const glm::dvec3 vt = render::pattern::vector_turbulence(p, 6, 2.0, 0.5);
+  for (int k = 0; k < 3; ++k)
+    CHECK(value_of("let v = vturbulence(2, 0.5, 6, <0.1234, 5.678, -9.1011>)",
+                   fmt::format("v.{} + 100", "xyz"[k])) == vt[k] + 100);
+  CHECK(eval_diagnostic("let v = vturbulence(2, 0.5, 1.5, <1, 2, 3>)").message ==
+        "the octaves of 'vturbulence' must be a whole number from 1 to 16, got 1.5");
 }
 
 TEST_CASE("pattern blocks build pattern textures with POV-Ray's defaults", "[patterns]") {

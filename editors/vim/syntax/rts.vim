@@ -19,7 +19,7 @@ syn keyword rtsBlock box cone cylinder disc mesh plane quad sphere superellipsoi
 syn keyword rtsBlock point_light spot_light directional_light area_light group union intersection difference merge clip
 
 " Builtins (only where called).
-syn match rtsBuiltin "\<\(sin\|cos\|tan\|asin\|acos\|atan\|atan2\|sqrt\|pow\|exp\|log\|abs\|floor\|ceil\|round\|radians\|degrees\|min\|max\|clamp\|mix\|dot\|cross\|length\|normalize\|rgb\|vec\|len\|select\|append\|with_item\|str\|format\|print\|assert\|error\|checker\|stripes\|gradient\|image_texture\|noise\|fbm\|turbulence\|cells\|worley\|random\|rand\|identity\|vrotate\|vaxis_rotate\|distance\|smoothstep\|spline\|trace\|vlength\|vnormalize\|vdot\|vcross\|lerp\)\>\ze\s*("
+syn match rtsBuiltin "\<\(sin\|cos\|tan\|asin\|acos\|atan\|atan2\|sqrt\|pow\|exp\|log\|abs\|floor\|ceil\|round\|radians\|degrees\|min\|max\|clamp\|mix\|dot\|cross\|length\|normalize\|rgb\|vec\|len\|select\|append\|with_item\|str\|format\|print\|assert\|error\|checker\|stripes\|gradient\|image_texture\|noise\|fbm\|turbulence\|vturbulence\|cells\|worley\|random\|rand\|identity\|vrotate\|vaxis_rotate\|distance\|smoothstep\|spline\|trace\|vlength\|vnormalize\|vdot\|vcross\|lerp\)\>\ze\s*("
 
 " A property: `name =` (not `==`).
 syn match rtsProperty "\<\h\w*\>\ze\s*=[^=]"
