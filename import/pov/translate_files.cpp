@@ -225,6 +225,8 @@ void Translator::footer(Writer& w) {
   w.line(srgb ? "// POV-Ray 3.7 with assumed_gamma 1.0: the image is sRGB-encoded."
               : "// POV-Ray without #version 3.7 / assumed_gamma 1.0 writes the image without gamma encoding.");
   w.line(fmt::format("settings {{ output_gamma = \"{}\" }}", srgb ? "srgb" : "linear"));
+  w.line("// POV-Ray's lights fall off by their fade_distance/fade_power only: with --integrator path too.");
+  w.line("settings { light_falloff = \"attenuation\" }");
 }
 
 // The names the user's include files declare, before the main file is read: the reader needs

@@ -24,6 +24,7 @@ constexpr PropertyInfo kSettings[] = {
     {"environment_ambient", "bool", "`false`", "Also light the ambient term with the environment."},
     {"frames", "whole number ≥ 1", "`1`", "An animation's frame count; 1 is a still."},
     {"integrator", "string", "`\"whitted\"`", "\"whitted\" or \"path\" (the physically based path tracer)."},
+    {"light_falloff", "string", "`\"inverse_square\"`", "Path mode: \"attenuation\" makes point, spot and area lights fall off by their `attenuation`, as in Whitted mode and POV-Ray (not physical; `rts import` writes it)."},
     {"fog_distance", "number ≥ 0", "`0` (no fog)", "Constant fog: at this distance 37% of the light is left."},
     {"fog_color", "color", "`rgb(0)`", "The fog's colour."},
     {"fog_offset", "number", "`0`", "Ground fog: the height of its top."},

@@ -272,6 +272,13 @@ void SceneBuilder::settings(ParamSet& ps) {
       throw SceneError(loc_of(ps, "integrator"),
                        fmt::format("unknown integrator '{}' (expected whitted or path)", name));
   }
+  if (ps.has("light_falloff")) {
+    std::string name = ps.string("light_falloff", "inverse_square");
+    if (name != "inverse_square" && name != "attenuation")
+      throw SceneError(loc_of(ps, "light_falloff"),
+                       fmt::format("unknown light_falloff '{}' (expected inverse_square or attenuation)", name));
+    s.light_falloff_attenuation = name == "attenuation";
+  }
   if (ps.has("output_gamma")) {
     std::string name = ps.string("output_gamma", "srgb");
     if (name != "srgb" && name != "linear")

@@ -446,6 +446,10 @@ struct Settings {
   // colour is kept). 0, the default, clamps nothing and keeps the path tracer unbiased; a
   // clamp trades bias (lost energy from bright, rare paths) for less noise. Whitted ignores it.
   double clamp = 0.0;
+  // Path mode: point, spot and area lights fall off by their `attenuation` (Whitted's and
+  // POV-Ray's lights: by default not at all) instead of 1/d². Not physical; for imported
+  // POV-Ray scenes (`light_falloff = "attenuation"`). Whitted ignores it.
+  bool light_falloff_attenuation = false;
   SourceRef loc;
 };
 

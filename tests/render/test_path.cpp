@@ -347,6 +347,32 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
     place(s, add_light(s, l));
     check_within_noise(render_path(s, 4, 4), a / std::numbers::pi * 8 / 4);
   }
+  SECTION("light_falloff = attenuation: POV-Ray's lights, L = a / pi * I / (c + l h + q h^2)") {
+    for (double h : {2.0, 5.0}) {
+      SceneDesc s = floor_scene();
+      s.settings.light_falloff_attenuation = true;
+      LightDesc l;
+      l.position = Vec3(0, h, 0);
+      l.intensity = 8;   // attenuation <1, 0, 0>, the default: no falloff at all
+      place(s, add_light(s, l));
+      check_within_noise(render_path(s, 4, 4), a / std::numbers::pi * 8);
+      SceneDesc q = floor_scene();
+      q.settings.light_falloff_attenuation = true;
+      l.attenuation = Vec3(0.5, 0, 0.5);   // POV-Ray's fade_power 2, fade_distance 1
+      place(q, add_light(q, l));
+      check_within_noise(render_path(q, 4, 4), a / std::numbers::pi * 8 / (0.5 + 0.5 * h * h));
+      SceneDesc r = floor_scene();
+      r.settings.light_falloff_attenuation = true;
+      LightDesc area;
+      area.kind = LightKind::Area;
+      area.position = Vec3(0, h, 0);
+      area.u = Vec3(0.01, 0, 0);
+      area.v = Vec3(0, 0, 0.01);
+      area.intensity = 9;   // each point of it the whole power, as Whitted's area light
+      place(r, add_light(r, area));
+      check_within_noise(render_path(r, 4, 4), a / std::numbers::pi * 9);
+    }
+  }
   SECTION("directional light: L = a / pi * E cos") {
     SceneDesc s = floor_scene();
     LightDesc l;

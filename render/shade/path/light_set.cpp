@@ -100,6 +100,7 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
     }
     if (!is_black(le)) add_emitter(world, scene, i, le);
   }
+  attenuation_falloff_ = scene.settings.light_falloff_attenuation;
   for (const CompiledLight& l : lights) {
     if (is_black(l.power)) continue;
     Entry e;
@@ -319,7 +320,10 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
       out.distance = std::sqrt(dist2);
       out.wi = d / out.distance;
       double spot = e.type == Type::Spot ? spot_factor(e.light, -out.wi) : 1.0;
-      out.radiance = glm::min(e.radiance * (spot / dist2), Rgb(tol::kMaxRadiance));
+      const double falloff = attenuation_falloff_ ? attenuation_factor(e.light.attenuation, out.distance,
+                                                                       e.light.attenuation_clamp)
+                                                  : 1.0 / dist2;
+      out.radiance = glm::min(e.radiance * (spot * falloff), Rgb(tol::kMaxRadiance));
       out.pdf = e.pick;
       out.delta = true;
       return spot > 0.0;
@@ -334,6 +338,20 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
     case Type::AreaLight: {
       glm::dvec2 p = e.disc ? 0.5 * concentric_disc(u) : u - 0.5;
       Vec3 on = e.p0 + p.x * e.e1 + p.y * e.e2;
+      if (attenuation_falloff_) {
+        // Whitted's area light: each point of it a point light of the whole power, attenuated.
+        const Vec3 d = on - point;
+        const double dist = glm::length(d);
+        if (!(dist > 0.0) || !std::isfinite(dist)) return false;
+        out.wi = d / dist;
+        out.distance = dist;
+        out.radiance = glm::min(
+            e.light.power * attenuation_factor(e.light.attenuation, dist, e.light.attenuation_clamp),
+            Rgb(tol::kMaxRadiance));
+        out.pdf = e.pick;
+        out.delta = true;
+        return true;
+      }
       if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
       out.radiance = e.radiance;
       out.delta = true;  // no ray can hit it: sampling is its only strategy

@@ -112,6 +112,7 @@ class LightSet {
   std::optional<SkyDistribution> sky_distribution_;   // environment maps only
   Rgb background_{0.0};
   std::size_t shape_emitters_ = 0, delta_lights_ = 0, area_lights_ = 0, unsampled_emitters_ = 0;
+  bool attenuation_falloff_ = false;  // settings.light_falloff_attenuation: Whitted's falloff for lights
 };
 
 }  // namespace rts::render::path
