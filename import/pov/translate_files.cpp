@@ -227,6 +227,11 @@ void Translator::footer(Writer& w) {
   w.line(fmt::format("settings {{ output_gamma = \"{}\" }}", srgb ? "srgb" : "linear"));
   w.line("// POV-Ray's lights fall off by their fade_distance/fade_power only: with --integrator path too.");
   w.line("settings { light_falloff = \"attenuation\" }");
+  if (radiosity_) {
+    w.line("// POV-Ray's radiosity: rts's path tracer (indirect light from every surface, unbiased; the");
+    w.line("// radiosity block's settings have no use there). Give it samples: rts render ... --samples 64");
+    w.line("settings { integrator = \"path\" }");
+  }
 }
 
 // The names the user's include files declare, before the main file is read: the reader needs

@@ -342,7 +342,7 @@ void Translator::global_settings(Writer& w, const Block& b) {
   for (const Item& it : b.items) {
     if (it.kind == Item::Nested) {
       if (it.block->kind == "radiosity")
-        unsupported(it.loc, "radiosity", "settings { integrator = \"path\" }", true);
+        radiosity_ = true;  // the path integrator (translate_files.cpp writes it; its settings have no use there)
       else if (it.block->kind != "photons")
         unsupported(it.loc, it.block->kind, "see docs/rendering.md", false);
       continue;

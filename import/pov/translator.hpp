@@ -197,6 +197,7 @@ class Translator {
   double assumed_gamma_ = 0;       // 0 when none
   bool gamma_seen_ = false;
   bool camera_seen_ = false;       // a camera block was translated (else POV-Ray's default is written)
+  bool radiosity_ = false;         // global_settings { radiosity { } }: the path tracer renders it
   MaterialProps default_texture_;  // #default { ... }
   Writer* pending_comment_ = nullptr;
   int include_depth_ = 0;

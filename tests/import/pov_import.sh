@@ -61,6 +61,10 @@ expect_exit 0 "metallic on/off (POV-Ray's booleans)" -- "$RTS" import "$TMP/meta
 expect_grep "$TMP/out" "metallic = 1" "metallic on is 1"
 expect_grep "$TMP/out" "metallic = 0 " "metallic off is 0"
 expect_grep "$TMP/out" "metallic = 0.4" "a number stays"
+printf 'global_settings { radiosity { count 100 } }\nsphere { 0, 1 }\n' > "$TMP/radiosity.pov"
+expect_exit 0 "radiosity maps to the path tracer" -- "$RTS" import "$TMP/radiosity.pov"
+expect_grep "$TMP/out" '^settings \{ integrator = "path" \}' "radiosity: integrator = path"
+if grep -q "radiosity" "$TMP/err"; then echo "FAIL: radiosity is translated, not warned about"; FAILS=$((FAILS + 1)); fi
 expect_exit 0 "a prism's conic_sweep and cubic_spline are translated" -- "$RTS" import prism_splines.pov
 expect_grep "$TMP/out" "sweep = \"conic\"" "the conic prism is translated"
 expect_grep "$TMP/out" "spline = \"cubic\"" "the cubic prism is translated"
