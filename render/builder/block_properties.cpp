@@ -181,6 +181,15 @@ constexpr PropertyInfo kGroup[] = {
     {"casts_shadow", "bool", "`true`", "`false`: no member casts a shadow (POV-Ray's no_shadow on a union)."},
 };
 
+constexpr PropertyInfo kText[] = {
+    {"font", "string", "*required*", "A TrueType or OpenType font file (relative to the scene file)."},
+    {"string", "string", "*required*", "The characters to write (UTF-8)."},
+    {"thickness", "number > 0", "`1`", "How far the letters reach along z, from 0."},
+    {"offset", "vector", "`<0, 0, 0>`", "Added to the position after each character, beside its advance width."},
+    {"material", "material", "none", "Every letter's material."},
+    {"casts_shadow", "bool", "`true`", "`false`: the letters cast no shadow (POV-Ray's no_shadow)."},
+};
+
 constexpr BlockInfo kBlocks[] = {
     {"settings", "Image size, samples, background, integrator and other render settings.", kSettings},
     {"camera", "Where the image is seen from.", kCamera},
@@ -201,6 +210,7 @@ constexpr BlockInfo kBlocks[] = {
     {"difference", "CSG: the first shape minus the others.", kCsg},
     {"merge", "CSG: the shapes together, inner surfaces removed.", kCsg},
     {"clip", "The first shape's surface where it lies inside the others (POV-Ray's clipped_by).", kCsg},
+    {"text", "Letters of a font, extruded along z (POV-Ray's text).", kText},
     {"group", "Objects placed together (any shapes, meshes, lights, CSG).", kGroup},
 };
 

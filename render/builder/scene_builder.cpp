@@ -65,6 +65,7 @@ constexpr KindInfo kKinds[] = {
     {"difference", BlockCategory::Csg},
     {"merge", BlockCategory::Csg},
     {"clip", BlockCategory::Csg},
+    {"text", BlockCategory::Shape},   // built as a group of prisms (text_builder.cpp)
 };
 
 const std::vector<std::string_view> kSettingsNames = names_of_block("settings");

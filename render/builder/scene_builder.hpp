@@ -51,6 +51,9 @@ class SceneBuilder {
   TextureId texture(std::string_view kind, ParamSet& params, const Mat4& transform = Mat4(1.0));
   MaterialId material(ParamSet& params);
   MaterialId chosen_material(ParamSet& params);  // material { pattern  materials }
+  // text { font string thickness offset }: a group of glyph prisms (text_builder.cpp); `base`
+  // holds the material and casts_shadow every glyph takes.
+  NodeId text(ParamSet& params, const ShapeDesc& base);
   MediumId medium(ParamSet& params);  // the media_* properties of a material or settings; kNoId if none
   NodeId shape(std::string_view kind, ParamSet& params);      // not placed yet
   NodeId light(std::string_view kind, ParamSet& params);      // not placed yet

@@ -22,6 +22,8 @@ inline std::vector<std::string_view> names_of_block(std::string_view kind) {
 // The property names `kind` accepts (a shape, light, group or CSG block), or null
 // (scene_nodes.cpp).
 const std::vector<std::string_view>* names_of(std::string_view kind);
+// Adds a node for scene.shapes/groups/...[index] (scene_nodes.cpp).
+NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef loc);
 // Paths in a scene are relative to the file that names them.
 std::string resolve_path(const std::string& path, SourceRef where);
 

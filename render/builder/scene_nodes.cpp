@@ -23,6 +23,7 @@
 
 namespace rts::render {
 
+using builder_detail::add_node;
 using builder_detail::names_of;
 using builder_detail::resolve_path;
 using builder_detail::names_of_block;
@@ -54,6 +55,7 @@ const std::vector<std::string_view> kAreaLightNames = names_of_block("area_light
 
 const std::vector<std::string_view> kCsgNames = names_of_block("union");
 const std::vector<std::string_view> kGroupNames = names_of_block("group");
+const std::vector<std::string_view> kTextNames = names_of_block("text");
 
 
 // The same file however a scene spells it ("a/../m.obj", "./m.obj", through a symlink).
@@ -72,11 +74,6 @@ bool is_obj_name(const std::string& path) {
 }
 
 // Appends a scene node for the shape, light or group at `index`; returns its id.
-NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef loc) {
-  scene.nodes.push_back(Node{kind, static_cast<uint32_t>(index), loc});
-  return static_cast<NodeId>(scene.nodes.size() - 1);
-}
-
 uint32_t mesh_index(ParamSet& ps, double v, std::size_t vertex_count) {
   if (std::floor(v) != v || v < 0 || v >= static_cast<double>(vertex_count))
     throw SceneError(loc_of(ps, "faces"),
@@ -208,6 +205,11 @@ bool build_described(std::index_sequence<I...>, std::string_view kind, ParamSet&
 
 namespace builder_detail {
 
+NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef loc) {
+  scene.nodes.push_back(Node{kind, static_cast<uint32_t>(index), loc});
+  return static_cast<NodeId>(scene.nodes.size() - 1);
+}
+
 // The names a shape, light or CSG kind takes, or null for other kinds.
 const std::vector<std::string_view>* names_of(std::string_view kind) {
   for (std::size_t k = 0; k < kShapeKindCount; ++k)
@@ -215,7 +217,7 @@ const std::vector<std::string_view>* names_of(std::string_view kind) {
   static const std::pair<std::string_view, const std::vector<std::string_view>*> kTable[] = {
       {"point_light", &kPointLightNames},  {"spot_light", &kSpotLightNames}, {"area_light", &kAreaLightNames},
       {"directional_light", &kDirectionalLightNames}, {"union", &kCsgNames}, {"intersection", &kCsgNames},
-      {"difference", &kCsgNames},          {"merge", &kCsgNames},         {"clip", &kCsgNames},
+      {"difference", &kCsgNames},          {"merge", &kCsgNames},         {"clip", &kCsgNames},        {"text", &kTextNames},
       {"group", &kGroupNames}};
   for (const auto& [name, names] : kTable)
     if (name == kind) return names;
@@ -229,6 +231,10 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
   s.loc = ps.loc();
   ps.set_valid_names(names_of(kind));  // a missing property is first checked for a misspelling
   if (const MaterialRef* ref = reference<MaterialRef>(ps, "material", kind, "material")) s.material = ref->id;
+  if (kind == "text") {  // a group of glyph prisms (text_builder.cpp)
+    s.casts_shadow = ps.boolean("casts_shadow", true);
+    return text(ps, s);
+  }
   // `inverse` (for CSG) is read first, on solids only: an open shape's `inverse` stays an
   // unknown property, and the names each kind lists stay its descriptor's.
   if (const ShapeInfo* info = find_shape(kind); info && info->closure != Closure::Open)

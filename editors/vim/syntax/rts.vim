@@ -16,7 +16,7 @@ syn keyword rtsBlock settings camera material checker stripes gradient image_tex
 syn keyword rtsBlock bozo spotted granite marble wood agate onion leopard wrinkles crackle cells bumps dents
 syn keyword rtsBlock ripples waves pattern
 syn keyword rtsBlock box cone cylinder disc mesh plane quad sphere superellipsoid torus triangle isosurface blob height_field sor lathe prism poly
-syn keyword rtsBlock point_light spot_light directional_light area_light group union intersection difference merge clip
+syn keyword rtsBlock point_light spot_light directional_light area_light group union intersection difference merge clip text
 
 " Builtins (only where called).
 syn match rtsBuiltin "\<\(sin\|cos\|tan\|asin\|acos\|atan\|atan2\|sqrt\|pow\|exp\|log\|abs\|floor\|ceil\|round\|radians\|degrees\|min\|max\|clamp\|mix\|dot\|cross\|length\|normalize\|rgb\|vec\|len\|select\|append\|with_item\|str\|format\|print\|assert\|error\|checker\|stripes\|gradient\|image_texture\|noise\|fbm\|turbulence\|vturbulence\|cells\|worley\|random\|rand\|identity\|vrotate\|vaxis_rotate\|distance\|smoothstep\|spline\|trace\|vlength\|vnormalize\|vdot\|vcross\|lerp\)\>\ze\s*("
