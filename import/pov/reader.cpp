@@ -12,7 +12,7 @@ namespace rts::import::pov {
 namespace detail {
 
 bool is_raw_block(const std::string& kind) {
-  static const std::set<std::string> raw = {"function", "spline", "text", "sphere_sweep", "polygon", "bicubic_patch",
+  static const std::set<std::string> raw = {"function", "spline", "sphere_sweep", "polygon", "bicubic_patch",
                                             "julia_fractal", "parametric", "ovus", "lemon", "polynomial"};
   return raw.count(kind) > 0;
 }

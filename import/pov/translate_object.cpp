@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -14,7 +15,7 @@ namespace rts::import::pov {
 bool Translator::is_object_kind(const std::string& k) {
   static const std::set<std::string> kinds = {"sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
                                               "triangle", "smooth_triangle", "mesh", "mesh2", "superellipsoid", "sor", "lathe", "prism",
-                                              "height_field", "isosurface", "poly", "quartic", "cubic", "quadric", "union",
+                                              "height_field", "isosurface", "poly", "quartic", "cubic", "quadric", "text", "union",
                                               "intersection", "difference", "merge", "object"};
   return kinds.count(k) > 0 || k == "blob" || is_unsupported_shape(k);
 }
@@ -22,13 +23,12 @@ bool Translator::is_object_kind(const std::string& k) {
 bool Translator::is_solid_kind(const std::string& k) {
   return k == "sphere" || k == "box" || k == "plane" || k == "cylinder" || k == "cone" || k == "torus" ||
          k == "superellipsoid" || k == "sor" || k == "lathe" || k == "prism" || k == "blob" || k == "height_field" ||
-         k == "isosurface" || k == "poly" || k == "quartic" || k == "cubic" || k == "quadric" || k == "union" || k == "intersection" ||
+         k == "isosurface" || k == "poly" || k == "quartic" || k == "cubic" || k == "quadric" || k == "text" || k == "union" || k == "intersection" ||
          k == "difference" || k == "merge" || k == "clip";
 }
 
 bool Translator::is_unsupported_shape(const std::string& k) {
-  static const std::set<std::string> kinds = {"text",
-                                              "sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
+  static const std::set<std::string> kinds = {"sphere_sweep", "polygon", "bicubic_patch", "julia_fractal",
                                               "parametric", "ovus", "lemon",
                                               "polynomial"};
   return kinds.count(k) > 0;
@@ -42,7 +42,7 @@ constexpr std::size_t kMaxTransformSteps = 10000;
 
 // The closest rts alternative for an unsupported shape, and whether it is planned.
 std::pair<std::string, bool> shape_alternative(const std::string& k) {
-  if (k == "text" || k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
+  if (k == "sphere_sweep" || k == "polygon") return {"a mesh (planned after issue 20)", true};
   return {"a mesh from an OBJ file", false};
 }
 
@@ -150,6 +150,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   MaterialProps mat;
   bool textured = false;
   std::string base;  // object { X }
+  const Expr* font = nullptr;  // text { ttf "font" ... }
   Block blob_rest;   // a blob without its components (they are in props)
   const Block* items_of = &b;
   if (k == "blob") {
@@ -252,6 +253,8 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
             unsupported(it.loc, "no_shadow", "no_shadow on the whole CSG block", true);
           else
             props.push_back("casts_shadow = false");
+        } else if (k == "text" && it.name == "ttf" && !it.args.empty()) {
+          font = it.args[0].get();
         } else if (it.name == "no_image") {
           unsupported(it.loc, "no_image", "leave the object out", false);
         } else {
@@ -335,6 +338,25 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
                                          part(mixed, 1), part(lin, 0), part(sq, 1), part(mixed, 2), part(lin, 1),
                                          part(sq, 2), part(lin, 2), value(*v(3)));
     props.insert(props.begin(), {"order = 2", "coefficients = [" + list + "]"});
+  } else if (k == "text") {
+    // text { ttf "font.ttf" "string" thickness, offset }: rts's text block (a font beside the
+    // scene as written; one only in POV-Ray's library folder by its full path).
+    need(2, "a font, a string and a thickness: text { ttf \"timrom.ttf\" \"Hello\" 0.2, 0 }");
+    if (!font) error(b.loc, "'text' needs its font: text { ttf \"timrom.ttf\" \"Hello\" 0.2, 0 }");
+    std::string font_text = value(*font);
+    if (font->kind == Expr::String) {
+      std::error_code ec;
+      const std::string name = font->text;
+      if (!std::filesystem::is_regular_file(std::filesystem::path(dir_.empty() ? "." : dir_) / name, ec))
+        for (const char* lib : {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"})
+          if (std::filesystem::is_regular_file(std::filesystem::path(lib) / name, ec)) {
+            font_text = fmt::format("\"{}/{}\"", lib, name);
+            break;
+          }
+    }
+    std::vector<std::string> p = {"font = " + font_text, "string = " + value(*v(0)), "thickness = " + value(*v(1))};
+    if (v(2)) p.push_back("offset = " + vector_value(*v(2)));
+    props.insert(props.begin(), p.begin(), p.end());
   } else if (k == "disc") {
     need(3, "a centre, a normal and a radius: disc { <c>, <n>, r }");
     std::vector<std::string> p = {"center = " + vector_value(*v(0)), "normal = " + vector_value(*v(1)),
