@@ -151,6 +151,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   bool textured = false;
   std::string base;  // object { X }
   const Expr* font = nullptr;  // text { ttf "font" ... }
+  text_values_.clear();
   Block blob_rest;   // a blob without its components (they are in props)
   const Block* items_of = &b;
   if (k == "blob") {
@@ -255,6 +256,13 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
             props.push_back("casts_shadow = false");
         } else if (k == "text" && it.name == "ttf" && !it.args.empty()) {
           font = it.args[0].get();
+          // `ttf "f.ttf", "string", 0.1, 0`: with commas the keyword read the values too.
+          for (std::size_t a = 1; a < it.args.size(); ++a) {
+            text_values_.emplace_back();
+            text_values_.back().kind = Item::Value;
+            text_values_.back().loc = it.args[a]->loc;
+            text_values_.back().args.push_back(it.args[a]);
+          }
         } else if (it.name == "no_image") {
           unsupported(it.loc, "no_image", "leave the object out", false);
         } else {
@@ -341,20 +349,12 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   } else if (k == "text") {
     // text { ttf "font.ttf" "string" thickness, offset }: rts's text block (a font beside the
     // scene as written; one only in POV-Ray's library folder by its full path).
+    // The values read with the ttf keyword (`ttf "f.ttf", "string", ...`) come first.
+    for (Item& t : text_values_) values.insert(values.begin() + static_cast<long>(&t - text_values_.data()), &t);
     need(2, "a font, a string and a thickness: text { ttf \"timrom.ttf\" \"Hello\" 0.2, 0 }");
     if (!font) error(b.loc, "'text' needs its font: text { ttf \"timrom.ttf\" \"Hello\" 0.2, 0 }");
-    std::string font_text = value(*font);
-    if (font->kind == Expr::String) {
-      std::error_code ec;
-      const std::string name = font->text;
-      if (!std::filesystem::is_regular_file(std::filesystem::path(dir_.empty() ? "." : dir_) / name, ec))
-        for (const char* lib : {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"})
-          if (std::filesystem::is_regular_file(std::filesystem::path(lib) / name, ec)) {
-            font_text = fmt::format("\"{}/{}\"", lib, name);
-            break;
-          }
-    }
-    std::vector<std::string> p = {"font = " + font_text, "string = " + value(*v(0)), "thickness = " + value(*v(1))};
+    // The font as written: rts's text looks beside the scene, then in POV-Ray's library folder.
+    std::vector<std::string> p = {"font = " + value(*font), "string = " + value(*v(0)), "thickness = " + value(*v(1))};
     if (v(2)) p.push_back("offset = " + vector_value(*v(2)));
     props.insert(props.begin(), p.begin(), p.end());
   } else if (k == "disc") {

@@ -103,6 +103,7 @@ class Translator {
   // written) when it has none, or when the object or a clipper is not a solid rts can clip.
   bool clipped_object(Writer& w, const Block& b, const std::string& prefix, bool place);
   bool solid_block(const Block& b);
+  std::vector<Item> text_values_;  // object(): a text's values read with its ttf keyword
   // A blob's components (translate_shapes.cpp) as rts's blob properties, added to `props`;
   // returns the block without them (its texture and transforms).
   Block blob_components(const Block& b, std::vector<std::string>& props);

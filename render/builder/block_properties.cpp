@@ -182,7 +182,7 @@ constexpr PropertyInfo kGroup[] = {
 };
 
 constexpr PropertyInfo kText[] = {
-    {"font", "string", "*required*", "A TrueType or OpenType font file (relative to the scene file)."},
+    {"font", "string", "*required*", "A TrueType or OpenType font file: beside the scene file, else by name in the system's font folders and POV-Ray's library folder."},
     {"string", "string", "*required*", "The characters to write (UTF-8)."},
     {"thickness", "number > 0", "`1`", "How far the letters reach along z, from 0."},
     {"offset", "vector", "`<0, 0, 0>`", "Added to the position after each character, beside its advance width."},

@@ -82,6 +82,28 @@ bool system_font(const std::string& path) {
   return false;
 }
 
+// The font file: `resolved` (the name beside the scene), else the name in the system's font
+// folders and POV-Ray's library folder, as POV-Ray looks in its Library_Path; as POV-Ray does,
+// a name without an extension is also tried with ".ttf". "" when none exists.
+std::string find_font(const std::string& resolved, const std::string& name) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::vector<std::string> names = {resolved};
+  const bool bare = !fs::path(name).has_extension();
+  if (bare) names.push_back(resolved + ".ttf");
+  const std::string base = fs::path(name).filename().string();
+  if (!base.empty() && !fs::path(name).has_parent_path())
+    for (const char* dir : {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include",
+                            "/usr/share/fonts/truetype/dejavu", "/usr/share/fonts/truetype",
+                            "/usr/share/fonts/opentype", "/usr/local/share/fonts"}) {
+      names.push_back(std::string(dir) + "/" + base);
+      if (bare) names.push_back(std::string(dir) + "/" + base + ".ttf");
+    }
+  for (const std::string& n : names)
+    if (fs::exists(n, ec)) return n;
+  return "";
+}
+
 // A glyph's contours as cubic Bézier segments, 4 points each, in em units (x, y as x, z).
 struct OutlineSink {
   double scale;
@@ -128,11 +150,12 @@ NodeId SceneBuilder::text(ParamSet& ps, const ShapeDesc& base) {
   if (!ps.has("string")) ps.fail_block("text needs property 'string' (the characters to write)");
   const SourceRef font_loc = loc_of(ps, "font");
   const std::string font = ps.string("font", "");
-  const std::string path = resolve_path(font, font_loc);
+  const std::string path = find_font(resolve_path(font, font_loc), font);
+  if (path.empty())
+    throw SceneError(font_loc, fmt::format("cannot find font file '{}' (looked beside the scene file, then in "
+                                           "/usr/share/fonts and POV-Ray's library folder)",
+                                           font));
   if (!system_font(path)) check_readable(path, font, "font file", font_loc);
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec))
-    throw SceneError(font_loc, fmt::format("cannot find font file '{}' (a path relative to the scene file)", font));
   const std::string text = ps.string("string", "");
   const double thickness = ps.number("thickness", 1.0);
   if (!(thickness > 0.0) || !std::isfinite(thickness))

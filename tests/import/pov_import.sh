@@ -65,6 +65,10 @@ printf 'global_settings { radiosity { count 100 } }\nsphere { 0, 1 }\n' > "$TMP/
 expect_exit 0 "radiosity maps to the path tracer" -- "$RTS" import "$TMP/radiosity.pov"
 expect_grep "$TMP/out" '^settings \{ integrator = "path" \}' "radiosity: integrator = path"
 if grep -q "radiosity" "$TMP/err"; then echo "FAIL: radiosity is translated, not warned about"; FAILS=$((FAILS + 1)); fi
+printf 'text { ttf "DejaVuSans.ttf", "Hi there", 0.1, 0 }\n' > "$TMP/text_commas.pov"
+expect_exit 0 "text with commas after ttf" -- "$RTS" import "$TMP/text_commas.pov"
+expect_grep "$TMP/out" 'string = "Hi there"' "the string read with the ttf keyword"
+expect_grep "$TMP/out" 'thickness = 0.1' "the thickness too"
 expect_exit 0 "a prism's conic_sweep and cubic_spline are translated" -- "$RTS" import prism_splines.pov
 expect_grep "$TMP/out" "sweep = \"conic\"" "the conic prism is translated"
 expect_grep "$TMP/out" "spline = \"cubic\"" "the cubic prism is translated"

@@ -81,3 +81,12 @@ TEST_CASE("text: holes by the even-odd rule, kerning between pairs", "[text]") {
   const double aa_step = aa.groups[0].children[1].transform[3][0] - aa.groups[0].children[0].transform[3][0];
   CHECK(av_step < aa_step - 0.01);
 }
+
+TEST_CASE("text: a bare font name is found in the font folders, with .ttf added", "[text]") {
+  // "DejaVuSans": not beside the scene, no extension (POV-Ray's rule adds .ttf).
+  render::SceneDesc s = eval_text("text { font = \"DejaVuSans\"  string = \"I\" }");
+  REQUIRE(s.groups.size() == 1);
+  CHECK(s.groups[0].children.size() == 1);
+  CHECK(rts::test::eval_diagnostic("text { font = \"NoSuchFontAnywhere\"  string = \"I\" }").message.find(
+            "cannot find font file 'NoSuchFontAnywhere'") != std::string::npos);
+}
