@@ -429,6 +429,16 @@ Text Translator::call(const Expr& e) {
     return Text{it->second.first + "(" + args() + ")", it->second.second, 11};
   }
   if (f == "log" && a.size() == 1) return Text{"log(" + a[0].s + ") / log(10)", Type::Float, 8};
+  if (f == "dimension_size" && a.size() == 2) {
+    // The size of dimension k (1 the outermost) of an array, which the import writes as lists
+    // of lists: len(A), len(A[0]), ... (k literal).
+    double k = 0;
+    if (literal_number(*e.args[1], k) && k >= 1 && k <= 5 && std::floor(k) == k) {
+      std::string inner = paren(a[0], 11);
+      for (int i = 1; i < static_cast<int>(k); ++i) inner += "[0]";
+      return Text{"len(" + inner + ")", Type::Float, 11};
+    }
+  }
   if (f == "sqr" && a.size() == 1) return Text{paren(a[0], 9) + " ^ 2", Type::Float, 10};
   if (f == "mod" && a.size() == 2) return Text{paren(a[0], 9) + " % " + paren(a[1], 9), Type::Float, 8};
   if (f == "int" && a.size() == 1) {
@@ -448,7 +458,7 @@ Text Translator::call(const Expr& e) {
   if (f == "defined" && !e.args.empty() && e.args[0]->kind == Expr::Name)
     return Text{declared(e.args[0]->text) ? "true" : "false", Type::Bool};
   if (f == "vstr" || f == "chr" || f == "substr" || f == "strlen" || f == "strupr" || f == "strlwr" ||
-      f == "asc" || f == "val" || f == "file_exists" || f == "dimension_size" || f == "trace" || f == "inside" ||
+      f == "asc" || f == "val" || f == "file_exists" || f == "dimension_size" || f == "dimensions" || f == "trace" || f == "inside" ||
       f == "min_extent" || f == "max_extent" || f == "eval_pigment") {
     unsupported(e.loc, f + "()", "no rts built-in of that name yet", false);
     return Text{"0", Type::Float};

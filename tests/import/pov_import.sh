@@ -69,6 +69,10 @@ printf 'text { ttf "DejaVuSans.ttf", "Hi there", 0.1, 0 }\n' > "$TMP/text_commas
 expect_exit 0 "text with commas after ttf" -- "$RTS" import "$TMP/text_commas.pov"
 expect_grep "$TMP/out" 'string = "Hi there"' "the string read with the ttf keyword"
 expect_grep "$TMP/out" 'thickness = 0.1' "the thickness too"
+printf '#declare A = array[3][2] { {1, 2}, {3, 4}, {5, 6} }\n#declare N = dimension_size(A, 1) + 10 * dimension_size(A, 2);\nsphere { 0, N }\n' \
+  > "$TMP/dims.pov"
+expect_exit 0 "dimension_size of a 2-D array" -- "$RTS" import "$TMP/dims.pov"
+expect_grep "$TMP/out" 'let N = len\(A\) \+ 10 \* len\(A\[0\]\)' "dimension_size is len of the nested lists"
 expect_exit 0 "a prism's conic_sweep and cubic_spline are translated" -- "$RTS" import prism_splines.pov
 expect_grep "$TMP/out" "sweep = \"conic\"" "the conic prism is translated"
 expect_grep "$TMP/out" "spline = \"cubic\"" "the cubic prism is translated"
