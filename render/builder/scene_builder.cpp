@@ -30,6 +30,15 @@ using builder_detail::reference;
 
 namespace {
 
+// A string property that is one of two words: whether it is the second. Any other word is
+// "unknown NAME 'x' (expected FIRST or SECOND)", located at the property.
+bool second_word(ParamSet& ps, std::string_view name, std::string_view first, std::string_view second) {
+  const std::string v = ps.string(name, std::string(first));
+  if (v != first && v != second)
+    throw SceneError(loc_of(ps, name), fmt::format("unknown {} '{}' (expected {} or {})", name, v, first, second));
+  return v == second;
+}
+
 constexpr double kMaxFovDegrees = 180.0;
 
 struct KindInfo {
@@ -273,20 +282,8 @@ void SceneBuilder::settings(ParamSet& ps) {
       throw SceneError(loc_of(ps, "integrator"),
                        fmt::format("unknown integrator '{}' (expected whitted or path)", name));
   }
-  if (ps.has("light_falloff")) {
-    std::string name = ps.string("light_falloff", "inverse_square");
-    if (name != "inverse_square" && name != "attenuation")
-      throw SceneError(loc_of(ps, "light_falloff"),
-                       fmt::format("unknown light_falloff '{}' (expected inverse_square or attenuation)", name));
-    s.light_falloff_attenuation = name == "attenuation";
-  }
-  if (ps.has("output_gamma")) {
-    std::string name = ps.string("output_gamma", "srgb");
-    if (name != "srgb" && name != "linear")
-      throw SceneError(loc_of(ps, "output_gamma"),
-                       fmt::format("unknown output_gamma '{}' (expected srgb or linear)", name));
-    s.output_linear = name == "linear";
-  }
+  if (ps.has("light_falloff")) s.light_falloff_attenuation = second_word(ps, "light_falloff", "inverse_square", "attenuation");
+  if (ps.has("output_gamma")) s.output_linear = second_word(ps, "output_gamma", "srgb", "linear");
   if (MediumId id = medium(ps); id != kNoId) s.medium = id;
   if (ps.has("media_samples")) {
     const int n = ps.integer("media_samples", s.media_samples);
@@ -546,12 +543,7 @@ MaterialId SceneBuilder::material(ParamSet& ps) {
     }
   }
   m.shininess = non_negative(ps, "shininess", ps.number("shininess", m.shininess));
-  if (ps.has("highlight")) {
-    std::string lobe = ps.string("highlight", "phong");
-    if (lobe != "phong" && lobe != "blinn")
-      throw SceneError(loc_of(ps, "highlight"), fmt::format("unknown highlight '{}' (expected phong or blinn)", lobe));
-    m.blinn = lobe == "blinn";
-  }
+  if (ps.has("highlight")) m.blinn = second_word(ps, "highlight", "phong", "blinn");
   m.brilliance = non_negative(ps, "brilliance", ps.number("brilliance", m.brilliance));
   m.metallic = non_negative(ps, "metallic", ps.number("metallic", m.metallic));
   if (!channel_texture("reflect", m.reflect_texture)) {
