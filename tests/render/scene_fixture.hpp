@@ -58,6 +58,21 @@ inline Triangle triangle(Vec3 a, Vec3 b, Vec3 c) {
   return t;
 }
 
+// An orthographic camera straight down on the y = 0 plane from y = 5, `view_width` units wide,
+// +z up in the image.
+inline SceneDesc top_down_scene(int width, int height, double view_width) {
+  SceneDesc s;
+  s.settings.width = width;
+  s.settings.height = height;
+  s.has_camera = true;
+  s.camera.projection = Projection::Orthographic;
+  s.camera.position = Vec3(0, 5, 0);
+  s.camera.look_at = Vec3(0, 0, 0);
+  s.camera.up = Vec3(0, 0, 1);
+  s.camera.view_width = view_width;
+  return s;
+}
+
 inline Mat4 translate(Vec3 v) { return glm::translate(Mat4(1.0), v); }
 inline Mat4 scale(Vec3 v) { return glm::scale(Mat4(1.0), v); }
 inline Mat4 rotate_deg(double deg, Vec3 axis) { return glm::rotate(Mat4(1.0), glm::radians(deg), axis); }

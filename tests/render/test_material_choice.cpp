@@ -34,19 +34,6 @@ MaterialId add_chooser(SceneDesc& s, TextureId pattern, const std::vector<Materi
   return add_material(s, m);
 }
 
-SceneDesc top_down(IntegratorKind integrator) {
-  SceneDesc s;
-  s.settings.width = 32;
-  s.settings.height = 32;
-  s.settings.integrator = integrator;
-  s.has_camera = true;
-  s.camera.projection = Projection::Orthographic;
-  s.camera.position = Vec3(0, 5, 0);
-  s.camera.look_at = Vec3(0, 0, 0);
-  s.camera.up = Vec3(0, 0, 1);
-  s.camera.view_width = 4;
-  return s;
-}
 
 }  // namespace
 
@@ -63,7 +50,8 @@ TEST_CASE("material choice: equal ranges of the luminance, the first for the dar
 
 TEST_CASE("material choice: each checker cell shows its own material", "[patterns]") {
   for (IntegratorKind integrator : {IntegratorKind::Whitted, IntegratorKind::Path}) {
-    SceneDesc s = top_down(integrator);
+    SceneDesc s = top_down_scene(32, 32, 4);
+    s.settings.integrator = integrator;
     const MaterialId tiles = add_chooser(s, add_checker(s), {emissive(Color(1, 0, 0)), emissive(Color(0, 0, 1))});
     place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, tiles));
     RenderOptions o;

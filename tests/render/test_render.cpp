@@ -72,19 +72,6 @@ bool all_finite(const Image& img) {
 
 // An orthographic view straight down onto the y = 0 plane (+z up in the image), `view_width`
 // units across.
-SceneDesc top_down_scene(int width, int height, double view_width) {
-  SceneDesc s;
-  s.settings.width = width;
-  s.settings.height = height;
-  s.has_camera = true;
-  s.camera.projection = Projection::Orthographic;
-  s.camera.position = Vec3(0, 5, 0);
-  s.camera.look_at = Vec3(0, 0, 0);
-  s.camera.up = Vec3(0, 0, 1);
-  s.camera.view_width = view_width;
-  return s;
-}
-
 // Adds `t` to the scene and a material that shows it unlit (ambient 1, no other light).
 MaterialId unlit_texture_material(SceneDesc& s, const TextureDesc& t) {
   s.textures.push_back(t);
