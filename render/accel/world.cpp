@@ -64,10 +64,7 @@ bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, con
   inst.material = material;  // its own, else its group's
   if (material < scene.materials.size()) {
     const Color& t = scene.materials[material].transmit;
-    // (may_transmit: a material chosen by pattern, when any choice does. Written so, the old
-    // test first, GCC inlines World::intersect_kind's normalize as before: see
-    // render/scene/material_choice.cpp.)
-    inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0 || may_transmit(scene.materials, material);
+    inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
     has_transmissive_ = has_transmissive_ || inst.transmissive;
   }
   bool identity = is_identity(to_world);

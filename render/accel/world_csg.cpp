@@ -37,7 +37,11 @@ constexpr std::array<bool, 256> kWindowedKind = windowed_kinds(std::make_index_s
 void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
                     AABB& world_bounds) {
   Csg csg;
-  auto transmits = [&](MaterialId id) { return may_transmit(scene.materials, id); };
+  auto transmits = [&](MaterialId m) {
+    if (m >= scene.materials.size()) return false;
+    const Color& t = scene.materials[m].transmit;
+    return t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
+  };
   const double inf = Interval::kInfinity;
   std::vector<uint32_t> block_transforms;  // this block's leaf transforms so far
   // Appends the nodes for `node_id` placed by `m`, children before parents; a group is a union.

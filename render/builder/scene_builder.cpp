@@ -610,8 +610,11 @@ MaterialId SceneBuilder::chosen_material(ParamSet& ps) {
     ps.fail(*ps.find("materials"),
             fmt::format("this material reaches {} materials through its nested choices; at most {}", leaves,
                         kMaxChoiceLeaves));
+  m.transmit = Color(0.0);  // the most any choice transmits (MaterialDesc::choice_pattern)
   for (MaterialId id : list->materials) {
     MaterialDesc copy = id < scene_.materials.size() ? scene_.materials[id] : default_material;
+    const Color& t = copy.transmit;  // a transmit texture's material holds 1 (material() above)
+    m.transmit = Color(std::max(m.transmit.r, t.r), std::max(m.transmit.g, t.g), std::max(m.transmit.b, t.b));
     scene_.materials.push_back(copy);  // copied first: push_back may move the one it came from
   }
   m.choice_leaves = static_cast<uint32_t>(leaves);

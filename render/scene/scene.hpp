@@ -125,8 +125,11 @@ struct MaterialDesc {
   MediumId medium = kNoId;     // what fills the inside (render/shade/medium.hpp), or none
   // A material chosen by pattern (POV-Ray's texture { checker texture {A} texture {B} }): at
   // each point the pattern's luminance in [0, 1] picks one of `choice_count` materials stored
-  // from `first_choice` on (equal ranges, the first for the darkest); its own values above are
-  // unused. choice_count 0: an ordinary material.
+  // from `first_choice` on (equal ranges, the first for the darkest). Of its own values above
+  // only `transmit` is set: the most any choice reached transmits (a transmit texture counts
+  // as 1), so what asks whether a surface may let light through (World's transmissive
+  // instances) reads it as for any material; shading always reads the choice.
+  // choice_count 0: an ordinary material.
   // A choice may itself be chosen by pattern (POV-Ray's nested texture_map): `choice_depth`
   // levels in all (1 for a chooser of ordinary materials), `choice_leaves` the ordinary
   // materials reached, counted along every path; both bounded by the builder.
@@ -142,10 +145,6 @@ struct MaterialDesc {
 // materials one reaches (what a scene-wide pass over its choices visits).
 inline constexpr int kMaxChoiceDepth = 8;
 inline constexpr uint32_t kMaxChoiceLeaves = 4096;
-
-// Whether a surface with material `id` lets light through anywhere: a transmit color above 0,
-// of the material or of any choice it reaches (render/scene/material_choice.cpp).
-bool may_transmit(const std::vector<MaterialDesc>& materials, MaterialId id);
 
 // Calls f(id, material) for what a surface with material `id` may show: the ordinary
 // materials a material chosen by pattern reaches through its choices (at most

@@ -59,10 +59,13 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
   atmosphere_ = settings.medium < media_->size() ? settings.medium : kNoId;
   media_samples_ = std::max(1, settings.media_samples);
   media_on_ = atmosphere_ != kNoId;
+  std::vector<bool> seen(materials.size(), false);  // each placed material once, not per instance
   for (std::size_t i = 0; i < world.instance_count(); ++i) {
     const MaterialId placed = world.instance(i).material;
+    if (placed >= materials.size() || seen[placed]) continue;
+    seen[placed] = true;
     // A material chosen by pattern transmits by the point, as a transmit texture does.
-    const bool chosen = placed < materials.size() && materials[placed].choice_count > 0;
+    const bool chosen = materials[placed].choice_count > 0;
     for_each_material_choice(materials, placed, [&](MaterialId, const MaterialDesc& m) {
       if (m.transmit_texture != kNoId || (chosen && transmits(m))) textured_transmit = true;
       if (m.medium < media_->size() && transmits(m)) media_on_ = true;

@@ -26,8 +26,7 @@ constexpr double kLightSide = 2.0;    // square light, centred above the origin
 constexpr double kPower = 2.0, kKd = 1.0, kAlbedo = 0.8;
 
 SceneDesc plane_under_square_light(int samples, SamplerKind sampler, uint64_t seed = 1) {
-  SceneDesc s;
-  s.settings.width = s.settings.height = kSize;
+  SceneDesc s = top_down_scene(kSize, kSize, kView);
   s.settings.samples = samples;
   s.settings.sampler = sampler;
   s.settings.seed = seed;
@@ -46,12 +45,6 @@ SceneDesc plane_under_square_light(int samples, SamplerKind sampler, uint64_t se
   l.intensity = kPower;
   l.attenuation = Vec3(0, 0, 1);
   place(s, add_light(s, l));
-  s.has_camera = true;
-  s.camera.projection = Projection::Orthographic;
-  s.camera.position = Vec3(0, 5, 0);
-  s.camera.look_at = Vec3(0, 0, 0);
-  s.camera.up = Vec3(0, 0, 1);
-  s.camera.view_width = kView;
   return s;
 }
 

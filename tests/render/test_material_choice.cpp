@@ -30,7 +30,12 @@ MaterialId add_chooser(SceneDesc& s, TextureId pattern, const std::vector<Materi
   m.choice_pattern = pattern;
   m.first_choice = static_cast<MaterialId>(s.materials.size());
   m.choice_count = static_cast<uint32_t>(choices.size());
-  for (const MaterialDesc& c : choices) s.materials.push_back(c);
+  m.transmit = Color(0.0);  // the most any choice transmits, as the builder sets it
+  for (const MaterialDesc& c : choices) {
+    s.materials.push_back(c);
+    m.transmit = Color(std::max(m.transmit.r, c.transmit.r), std::max(m.transmit.g, c.transmit.g),
+                       std::max(m.transmit.b, c.transmit.b));
+  }
   return add_material(s, m);
 }
 

@@ -49,10 +49,13 @@ PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const
     fog_color_ = to_rgb(scene.settings.fog_color);
   }
   has_media_ = atmosphere_ != kNoId;
-  std::vector<bool> placed(scene.materials.size(), false);
-  for (std::size_t i = 0; i < world.instance_count(); ++i)  // (a material chosen by pattern: its choices)
-    for_each_material_choice(scene.materials, world.instance(i).material,
-                             [&](MaterialId id, const MaterialDesc&) { placed[id] = true; });
+  std::vector<bool> placed(scene.materials.size(), false), on_instance(scene.materials.size(), false);
+  for (std::size_t i = 0; i < world.instance_count(); ++i)
+    if (world.instance(i).material < on_instance.size()) on_instance[world.instance(i).material] = true;
+  for (std::size_t id = 0; id < on_instance.size(); ++id)  // each once; a material chosen by pattern: its choices
+    if (on_instance[id])
+      for_each_material_choice(scene.materials, static_cast<MaterialId>(id),
+                               [&](MaterialId c, const MaterialDesc&) { placed[c] = true; });
   scale_.assign(scene.materials.size(), 1.0);
   for (std::size_t id = 0; id < scene.materials.size(); ++id) {
     if (!placed[id]) continue;
