@@ -496,6 +496,7 @@ void SceneBuilder::sky_sphere(ParamSet& ps, TextureDesc& t) {
 }
 
 MaterialId SceneBuilder::material(ParamSet& ps) {
+  if (ps.has("layers")) return layered_material(ps);
   if (ps.has("pattern") || ps.has("materials")) return chosen_material(ps);
   MaterialDesc m;
   m.loc = ps.loc();
@@ -617,6 +618,60 @@ MaterialId SceneBuilder::chosen_material(ParamSet& ps) {
     m.transmit = Color(std::max(m.transmit.r, t.r), std::max(m.transmit.g, t.g), std::max(m.transmit.b, t.b));
     scene_.materials.push_back(copy);  // copied first: push_back may move the one it came from
   }
+  m.choice_leaves = static_cast<uint32_t>(leaves);
+  m.choice_depth = static_cast<uint8_t>(depth + 1);
+  scene_.materials.push_back(m);
+  return static_cast<MaterialId>(scene_.materials.size() - 1);
+}
+
+// material { layers = [base, coat, ...] }: copies of the layers stored together, base first,
+// then the layered material (MaterialDesc::layered) pointing at them.
+MaterialId SceneBuilder::layered_material(ParamSet& ps) {
+  const MaterialListParam* list = reference<MaterialListParam>(ps, "layers", "material", "list of materials");
+  if (!list) ps.fail_block("'layers' holds the materials, base first: layers = [wood, varnish]");
+  // A layered material among the layers brings its own layers, in their place.
+  std::vector<MaterialId> layers;
+  for (MaterialId id : list->materials) {
+    if (id < scene_.materials.size() && scene_.materials[id].layered) {
+      const MaterialDesc& inner = scene_.materials[id];
+      for (uint32_t k = 0; k < inner.choice_count; ++k) layers.push_back(inner.first_choice + k);
+    } else {
+      layers.push_back(id);
+    }
+  }
+  if (layers.empty() || layers.size() > 64)
+    ps.fail(*ps.find("layers"), fmt::format("'layers' holds 1 to 64 materials (layered ones counted by their "
+                                            "layers), got {}",
+                                            layers.size()));
+  for (const Param& p : ps.params())
+    if (p.name != "layers")
+      ps.fail(p, fmt::format("a layered material takes only 'layers': give '{}' to the layer it belongs to", p.name));
+  MaterialDesc m;
+  m.loc = ps.loc();
+  m.layered = true;
+  m.first_choice = static_cast<MaterialId>(scene_.materials.size());
+  m.choice_count = static_cast<uint32_t>(layers.size());
+  const MaterialDesc default_material;
+  uint64_t leaves = 0;
+  int depth = 0;
+  for (MaterialId id : layers) {
+    const MaterialDesc& c = id < scene_.materials.size() ? scene_.materials[id] : default_material;
+    leaves += c.choice_count > 0 ? c.choice_leaves : 1;
+    depth = std::max(depth, static_cast<int>(c.choice_depth));
+  }
+  if (depth + 1 > kMaxChoiceDepth)
+    ps.fail(*ps.find("layers"), fmt::format("layered and chosen materials nest at most {} deep", kMaxChoiceDepth));
+  if (leaves > kMaxChoiceLeaves)
+    ps.fail(*ps.find("layers"),
+            fmt::format("this material reaches {} materials through its layers and choices; at most {}", leaves,
+                        kMaxChoiceLeaves));
+  for (MaterialId id : layers) {
+    MaterialDesc copy = id < scene_.materials.size() ? scene_.materials[id] : default_material;
+    scene_.materials.push_back(copy);  // copied first: push_back may move the one it came from
+  }
+  // What lets light through the object is the base's (a coat's transmit shows the layers
+  // below it, not the inside).
+  m.transmit = scene_.materials[m.first_choice].transmit;
   m.choice_leaves = static_cast<uint32_t>(leaves);
   m.choice_depth = static_cast<uint8_t>(depth + 1);
   scene_.materials.push_back(m);

@@ -51,6 +51,7 @@ class SceneBuilder {
   TextureId texture(std::string_view kind, ParamSet& params, const Mat4& transform = Mat4(1.0));
   MaterialId material(ParamSet& params);
   MaterialId chosen_material(ParamSet& params);  // material { pattern  materials }
+  MaterialId layered_material(ParamSet& params);  // material { layers }
   // text { font string thickness offset }: a group of glyph prisms (text_builder.cpp); `base`
   // holds the material and casts_shadow every glyph takes.
   NodeId text(ParamSet& params, const ShapeDesc& base);

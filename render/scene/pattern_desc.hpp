@@ -32,7 +32,8 @@ struct ColorMapEntry {
   double value = 0.0;
   glm::dvec3 color{0.0};   // linear rgb
   // POV-Ray's `transmit` (rgbt's t): how much of what lies behind shows through. Only a
-  // sky_sphere's layers look at it (render/shade/sky_sphere.hpp); surfaces ignore it.
+  // sky_sphere's layers (render/shade/sky_sphere.hpp) and a layered material's coats
+  // (render/shade/layers.hpp) look at it; other surfaces ignore it.
   double transmit = 0.0;
 };
 

@@ -133,11 +133,18 @@ struct MaterialDesc {
   // A choice may itself be chosen by pattern (POV-Ray's nested texture_map): `choice_depth`
   // levels in all (1 for a chooser of ordinary materials), `choice_leaves` the ordinary
   // materials reached, counted along every path; both bounded by the builder.
+  // A layered material (POV-Ray's layered textures, `material { layers = [base, coat, ...] }`)
+  // uses the same fields with `layered` set: its `choice_count` layers are stored from
+  // `first_choice` on, the base first, each later one a coat over those before it. A coat's
+  // transmit (its texture's colour map transmit at the point, plus its own `transmit`) is how
+  // much of what lies below shows through it (render/shade/layers.hpp). Of its own values it
+  // holds the base's `transmit` (shadows and World's transmissive instances read it).
   TextureId choice_pattern = kNoId;
   MaterialId first_choice = 0;
   uint32_t choice_count = 0;
   uint32_t choice_leaves = 0;
   uint8_t choice_depth = 0;
+  bool layered = false;
   SourceRef loc;
 };
 
@@ -147,7 +154,7 @@ inline constexpr int kMaxChoiceDepth = 8;
 inline constexpr uint32_t kMaxChoiceLeaves = 4096;
 
 // Calls f(id, material) for what a surface with material `id` may show: the ordinary
-// materials a material chosen by pattern reaches through its choices (at most
+// materials a material chosen by pattern or layered reaches through its choices and layers (at most
 // kMaxChoiceLeaves calls, a material reached twice called twice), else `id` itself (ids past
 // the list: the default material, not called).
 template <class F>
@@ -159,6 +166,16 @@ void for_each_material_choice(const std::vector<MaterialDesc>& materials, Materi
     return;
   }
   for (uint32_t k = 0; k < m.choice_count; ++k) for_each_material_choice(materials, m.first_choice + k, f, depth + 1);
+}
+
+// Whether material `id`, or a choice or layer it reaches, is layered.
+inline bool reaches_layers(const std::vector<MaterialDesc>& materials, MaterialId id, int depth = 0) {
+  if (id >= materials.size() || depth > kMaxChoiceDepth) return false;
+  const MaterialDesc& m = materials[id];
+  if (m.layered) return true;
+  for (uint32_t k = 0; k < m.choice_count; ++k)
+    if (reaches_layers(materials, m.first_choice + k, depth + 1)) return true;
+  return false;
 }
 
 // Does this material let light through at all (a zero weight is none; a transmit texture may)?

@@ -227,6 +227,11 @@ void SceneDesc::dump(std::ostream& out) const {
   out << fmt::format("materials {}\n", materials.size());
   for (std::size_t i = 0; i < materials.size(); ++i) {
     const MaterialDesc& m = materials[i];
+    if (m.layered) {
+      out << fmt::format("  material {}: layers {} (base) to {} (top){}\n", i, m.first_choice,
+                         m.first_choice + m.choice_count - 1, where(m.loc));
+      continue;
+    }
     if (m.choice_count > 0) {
       out << fmt::format("  material {}: chosen by texture {} among materials {} to {}{}\n", i, id(m.choice_pattern),
                          m.first_choice, m.first_choice + m.choice_count - 1, where(m.loc));

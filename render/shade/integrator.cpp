@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "render/shade/layers.hpp"
 #include "render/shade/material.hpp"
 #include "render/shade/path/path_integrator.hpp"
 #include "render/shade/shading.hpp"
@@ -66,6 +67,7 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
     seen[placed] = true;
     // A material chosen by pattern transmits by the point, as a transmit texture does.
     const bool chosen = materials[placed].choice_count > 0;
+    if (chosen && reaches_layers(materials, placed)) layers_on_ = true;
     for_each_material_choice(materials, placed, [&](MaterialId, const MaterialDesc& m) {
       if (m.transmit_texture != kNoId || (chosen && transmits(m))) textured_transmit = true;
       if (m.medium < media_->size() && transmits(m)) media_on_ = true;
@@ -75,7 +77,8 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
   // Media scenes, and scenes with surfaces light passes through unchanged, take the generic
   // path: shadow rays walk surface by surface to know which medium each stretch is in, and
   // the specialised paths carry none of this (leave-out: a scene without media pays nothing).
-  bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_ || has_pass_through_;
+  bool generic =
+      (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_ || has_pass_through_ || layers_on_;
   uint32_t skipped = 0;
   for (const CompiledLight& l : lights) {
     // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
@@ -345,10 +348,17 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
     const Rgb seen = through_medium(c);
     return fog_on_ ? fog_t * seen + (1.0 - fog_t) * fog_color_ : seen;
   };
+  if constexpr (kMedia) {
+    // Layered materials (only scenes with one, which take the generic path): each layer lit.
+    if (layers_on_) {
+      const MaterialId layered = layered_at(world_.instance(hit.instance).material, materials_, world_, hit, textures_);
+      if (layered != kNoId) return fogged(layers<F>(pr, hit, materials_[layered], fog_t, medium_t, path, pending));
+    }
+  }
   MaterialScratch scratch;
   const MaterialDesc& m = shading_material(material(hit), world_, hit, textures_, scratch);
-  Vec3 incident = glm::normalize(ray.direction);
   if (kMedia && has_pass_through_ && passes_through(m)) {
+    const Vec3 incident = glm::normalize(ray.direction);
     const bool into = glm::dot(hit.normal, incident) < 0.0;
     MediumStack beyond = pr.media;
     if (beyond.cross_clear(hit.medium, m, into)) {
@@ -361,6 +371,39 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
       return fogged(Rgb(0.0));
     }
   }
+  return fogged(surface<F, false>(pr, hit, m, fog_t, medium_t, Rgb(1.0), path, pending));
+}
+
+template <unsigned F>
+Rgb Integrator::layers(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& layered, double fog_t,
+                       const Rgb& medium_t, Path& path, std::vector<PendingRay>& pending) const {
+  // From the top coat down, each layer lit as a material of its own and weighted by what the
+  // coats above it let through (POV-Ray's layered textures); its reflected rays carry the same
+  // weight. The base is an ordinary material: what it transmits enters the object.
+  Rgb sum(0.0), left(1.0);
+  for (uint32_t k = layered.choice_count; k-- > 0;) {
+    const MaterialId id = surface_material_id(layered.first_choice + k, materials_, world_, hit, textures_);
+    const MaterialDesc& layer = id < materials_.size() ? materials_[id] : default_material_;
+    MaterialScratch scratch;
+    if (k == 0) {
+      sum += left * surface<F, true>(pr, hit, shading_material(layer, world_, hit, textures_, scratch), fog_t,
+                                     medium_t, left, path, pending);
+      break;
+    }
+    Rgb through;
+    const MaterialDesc& coat = coat_at(layer, world_, hit, textures_, scratch, through);
+    sum += left * surface<F, true>(pr, hit, coat, fog_t, medium_t, left, path, pending);
+    left *= through;
+    if (!(max_channel(left) > tol::kMinPathWeight)) break;  // nothing below shows
+  }
+  return saturate(sum);
+}
+
+template <unsigned F, bool kLayer>
+Rgb Integrator::surface(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& m, double fog_t,
+                        const Rgb& medium_t, const Rgb& layer, Path& path, std::vector<PendingRay>& pending) const {
+  const Ray& ray = pr.ray;
+  Vec3 incident = glm::normalize(ray.direction);
 
   // The geometric normal decides the side: face it towards the incoming ray (leaving a solid
   // = hitting its back side). The shading normal is then put into the same hemisphere as the
@@ -380,11 +423,13 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
                            path);
   color = saturate(color);
 
-  if constexpr (!(F & trace_flags::kSecondary)) return fogged(color);  // nothing reflects or transmits
-  if (pr.depth >= max_depth_) return fogged(color);
+  if constexpr (!(F & trace_flags::kSecondary)) return color;  // nothing reflects or transmits
+  if (pr.depth >= max_depth_) return color;
   // The light the secondary rays bring back crosses the same fog (x * 1.0 is exact: without
-  // fog the weights are unchanged).
-  const Rgb weight = kMedia ? pr.weight * fog_t * medium_t : pr.weight * fog_t;
+  // fog the weights are unchanged), and for a layer, its share.
+  constexpr bool kMedia = (F & trace_flags::kGeneric) != 0;
+  Rgb weight = kMedia ? pr.weight * fog_t * medium_t : pr.weight * fog_t;
+  if constexpr (kLayer) weight *= layer;
 
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Interface f;
@@ -411,7 +456,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
     Ray r{offset_ray_origin(hit.point, ng, dir, hit.error), dir};
     pending.push_back(PendingRay{r, saturate(weight * kr), pr.depth + 1, pr.media, pr.passes});
   }
-  return fogged(color);
+  return color;
 }
 
 // ---- media ----------------------------------------------------------------------------------

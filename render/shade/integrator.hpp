@@ -90,6 +90,18 @@ class Integrator {
   // reflected and refracted rays go onto `pending`.
   template <unsigned F>
   Rgb shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const;
+  // The light a surface of material `m` at `hit` sends back along the pending ray (emission,
+  // ambient, direct light), pushing its reflected and refracted rays with the pending ray's
+  // weight past the fog (fog_t) and media (medium_t), times `layer` for a layer (kLayer).
+  template <unsigned F, bool kLayer>
+  [[gnu::always_inline]] inline Rgb surface(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& m,
+                                            double fog_t, const Rgb& medium_t, const Rgb& layer, Path& path,
+                                            std::vector<PendingRay>& pending) const;
+  // A layered material's layers, each lit by surface() and weighted by what the coats above
+  // it let through (render/shade/layers.hpp).
+  template <unsigned F>
+  Rgb layers(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& layered, double fog_t,
+             const Rgb& medium_t, Path& path, std::vector<PendingRay>& pending) const;
   template <unsigned F>
   Rgb direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo, const Vec3& n,
                    const Vec3& shadow_origin, const Vec3& view, const MediumStack& media, Path& path) const;
@@ -152,6 +164,8 @@ class Integrator {
   MediumStack camera_media_;
   // Some placed material lets light through unchanged (passes_through): checked per hit only then.
   bool has_pass_through_ = false;
+  // Some placed material is layered: the generic path asks per hit only then.
+  bool layers_on_ = false;
   int max_depth_;
   const path::PathIntegrator* path_tracer_ = nullptr;
 };

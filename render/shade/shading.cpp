@@ -38,6 +38,8 @@ TexturePoint texture_point(const World& world, const WorldHit& hit, bool want_uv
 MaterialId choose_material_at(MaterialId id, const std::vector<MaterialDesc>& materials, const World& world,
                               const WorldHit& hit, const std::vector<CompiledTexture>& textures) {
   const MaterialDesc& m = materials[id];
+  // A layered material shows its base wherever layers are not shaded one by one (layers.hpp).
+  if (m.layered) return m.first_choice < materials.size() ? m.first_choice : id;
   double v = 0.0;
   if (valid(m.choice_pattern, textures)) {
     const CompiledTexture& pattern = textures[m.choice_pattern];

@@ -24,7 +24,9 @@ inline TexturePoint texture_point(const World& world, const WorldHit& hit, const
 
 // The material a hit on a surface with material `id` shows: for a material chosen by pattern
 // (MaterialDesc::choice_pattern), the choice its pattern's luminance picks at the hit (equal
-// ranges of [0, 1], the first for the darkest); else `id` itself. One test when nothing is chosen.
+// ranges of [0, 1], the first for the darkest); for a layered material (MaterialDesc::layered),
+// its base, where the caller does not shade its layers (render/shade/layers.hpp); else `id`
+// itself. One test when nothing is chosen.
 MaterialId choose_material_at(MaterialId id, const std::vector<MaterialDesc>& materials, const World& world,
                               const WorldHit& hit, const std::vector<CompiledTexture>& textures);
 inline MaterialId surface_material_id(MaterialId id, const std::vector<MaterialDesc>& materials, const World& world,

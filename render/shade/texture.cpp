@@ -215,6 +215,17 @@ Color CompiledTexture::eval_direction(const Vec3& direction) const {
   return eval(p);
 }
 
+glm::dvec4 CompiledTexture::eval_with_transmit(const TexturePoint& p) const {
+  if (desc_.kind != TextureKind::Pattern) {
+    const Color c = eval(p);
+    return {c.r, c.g, c.b, 0.0};
+  }
+  const Vec3 q = Vec3(inverse_ * glm::dvec4(p.object_point, 1.0));
+  glm::dvec4 c = pattern::pattern_color_transmit(desc_.pattern, q);
+  c.w = std::isfinite(c.w) ? std::clamp(c.w, 0.0, 1.0) : 0.0;
+  return c;
+}
+
 Color CompiledTexture::eval(const TexturePoint& p) const {
   const Vec3 q = Vec3(inverse_ * glm::dvec4(p.object_point, 1.0));
   switch (desc_.kind) {

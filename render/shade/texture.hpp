@@ -47,6 +47,9 @@ class CompiledTexture {
   // A procedural texture as one of a sky_sphere's layers: its color and (w) its transmit at
   // point p (the direction in the sky's space); only pattern color maps have a transmit.
   glm::dvec4 eval_layer(const Vec3& p) const;
+  // eval() with (w) the colour map's transmit at a surface point: a pattern's, 0 for other kinds
+  // (a layered material's coat, render/shade/layers.hpp).
+  glm::dvec4 eval_with_transmit(const TexturePoint& p) const;
   // SkySphere: its compiled layers (bottom first) and the settings' background, which shows
   // where every layer lets light through (compile_textures calls this).
   void set_sky(std::vector<CompiledTexture> layers, const Color& background) {

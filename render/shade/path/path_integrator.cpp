@@ -9,6 +9,7 @@
 #include "render/geometry/tolerances.hpp"
 #include "render/shade/medium_stack.hpp"
 #include "render/shade/material.hpp"
+#include "render/shade/layers.hpp"
 #include "render/shade/shading.hpp"
 
 namespace rts::render::path {
@@ -53,13 +54,27 @@ PathIntegrator::PathIntegrator(const World& world, const SceneDesc& scene, const
   for (std::size_t i = 0; i < world.instance_count(); ++i)
     if (world.instance(i).material < on_instance.size()) on_instance[world.instance(i).material] = true;
   for (std::size_t id = 0; id < on_instance.size(); ++id)  // each once; a material chosen by pattern: its choices
-    if (on_instance[id])
+    if (on_instance[id]) {
+      if (reaches_layers(scene.materials, static_cast<MaterialId>(id))) has_layers_ = true;
       for_each_material_choice(scene.materials, static_cast<MaterialId>(id),
                                [&](MaterialId c, const MaterialDesc&) { placed[c] = true; });
+    }
+  // A layered material's coats: what they transmit shows the layers below, so it is no
+  // part of the light they reflect (render/shade/layers.hpp).
+  std::vector<bool> coat(scene.materials.size(), false);
+  for (const MaterialDesc& m : scene.materials)
+    if (m.layered)
+      for (uint32_t k = 1; k < m.choice_count && m.first_choice + k < coat.size(); ++k) coat[m.first_choice + k] = true;
   scale_.assign(scene.materials.size(), 1.0);
   for (std::size_t id = 0; id < scene.materials.size(); ++id) {
     if (!placed[id]) continue;
-    const MaterialDesc& m = scene.materials[id];
+    MaterialDesc as_coat;
+    if (coat[id]) {
+      as_coat = scene.materials[id];
+      as_coat.transmit = Color(0.0);
+      as_coat.transmit_texture = kNoId;
+    }
+    const MaterialDesc& m = coat[id] ? as_coat : scene.materials[id];
     if (transmits(m)) {
       has_transmission_ = true;
       if (m.medium < media.size()) has_media_ = true;
@@ -90,6 +105,7 @@ void PathIntegrator::describe(std::vector<std::string>& used, std::vector<std::s
   report(has_media_, "media");
   report(fog_on_, "fog");
   report(has_pass_through_, "pass_through_surfaces");
+  report(has_layers_, "layered_materials");
   report(max_depth_ >= kRouletteStart, "russian_roulette");
   report(clamp_ > 0.0, "clamp");
 }
@@ -109,6 +125,11 @@ Lobes PathIntegrator::lobes(const MaterialDesc& m, uint32_t material_id, const W
   lb.transmit_alpha = lb.reflect_alpha;  // rough glass refracts through the facets it reflects from
   lb.fresnel = m.fresnel;
   return lb;
+}
+
+const MaterialDesc& PathIntegrator::surface_material(uint32_t& id, const WorldHit& hit) const {
+  id = surface_material_id(id, materials_, world_, hit, textures_);
+  return id < materials_.size() ? materials_[id] : default_material_;
 }
 
 const MaterialDesc& PathIntegrator::material(const WorldHit& hit) const {
@@ -245,9 +266,14 @@ Rgb PathIntegrator::trace(const Ray& camera_ray, Sampler& sampler, RayCounters& 
       }
       break;
     }
-    const uint32_t material_id =
-        surface_material_id(world_.instance(hit.instance).material, materials_, world_, hit, textures_);
-    const MaterialDesc& base = material_id < materials_.size() ? materials_[material_id] : default_material_;
+    // A layered material shows one layer per hit, picked by its share (render/shade/layers.hpp);
+    // only scenes with one draw the value.
+    MaterialScratch layer_scratch;
+    uint32_t material_id = world_.instance(hit.instance).material;
+    const MaterialDesc& base =
+        has_layers_ ? path_layer(material_id, materials_, world_, hit, textures_, sampler.next(), layer_scratch,
+                                 default_material_, material_id)
+                    : surface_material(material_id, hit);
     const bool into = glm::dot(hit.normal, dir) < 0.0;
     if (has_pass_through_ && media.cross_clear(hit.medium, base, into)) {
       // Not a bounce: the ray goes on from the far side, into the medium beyond, with what

@@ -47,7 +47,9 @@ class PathIntegrator {
 
  private:
   Lobes lobes(const MaterialDesc& m, uint32_t material_id, const WorldHit& hit) const;
-  const MaterialDesc& material(const WorldHit& hit) const;  // a material chosen by pattern: the choice there
+  const MaterialDesc& material(const WorldHit& hit) const;
+  // The material a hit on material `id` shows (a choice by pattern resolved; `id` becomes its id).
+  const MaterialDesc& surface_material(uint32_t& id, const WorldHit& hit) const;  // a material chosen by pattern: the choice there
   const CompiledMedium* medium_of(const MediumStack& media) const {
     const MediumId id = media.medium(atmosphere_);
     return id < media_.size() ? &media_[id] : nullptr;
@@ -79,6 +81,7 @@ class PathIntegrator {
   // Some placed material has a medium (or settings do), or lets light through unchanged:
   // shadow rays walk surfaces one by one and each segment may hold a medium.
   bool has_media_ = false, has_pass_through_ = false;
+  bool has_layers_ = false;  // a placed material is layered: one sampler value per hit picks the layer
   // Fog (settings.fog_*): in path mode a medium that absorbs and glows with its colour, so
   // every path segment brings T L + (1 - T) fog_color, and light reaching a point by a
   // shadow ray is dimmed by T too (unlike the Whitted integrator's POV-Ray rule).
