@@ -61,6 +61,22 @@ Item Reader::directive() {
       e->kind = Expr::BlockValue;
       e->loc = peek().loc;
       e->block = block();
+      if (e->block->kind == "texture" && peek().kind == Token::Name && peek().text == "texture" && is_punct("{", 1)) {
+        // A layered texture: `texture { A } texture { B } ...`, B over A (the last on top).
+        auto layers = std::make_shared<Block>();
+        layers->kind = "layered_texture";
+        layers->loc = e->block->loc;
+        auto add = [&](std::shared_ptr<Block> b) {
+          Item layer;
+          layer.kind = Item::Nested;
+          layer.loc = b->loc;
+          layer.block = std::move(b);
+          layers->items.push_back(std::move(layer));
+        };
+        add(e->block);
+        while (peek().kind == Token::Name && peek().text == "texture" && is_punct("{", 1)) add(block());
+        e->block = layers;
+      }
       it.args[0] = e;
     } else {
       it.args[0] = expr();

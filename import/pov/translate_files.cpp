@@ -76,6 +76,9 @@ void Translator::declare_library_file(const std::string& file) {
         std::string word = line.substr(w0, w1 == std::string::npos ? std::string::npos : w1 - w0);
         if (is_object_kind(word) && line.find('{', w0) != std::string::npos) {
           s = Symbol{Type::Object, nullptr, word};
+        } else if (pigment_pattern(word) && line.find('{', w0) != std::string::npos) {
+          // `let P_WoodGrain1A = wood { ... } scale ...`: a pattern, a pigment in POV-Ray.
+          s = Symbol{Type::Pigment, nullptr, ""};
         } else if (auto known = scopes_.front().find(word); known != scopes_.front().end()) {
           // `let Jade = jade`: another name for a library object, material or colour.
           const std::size_t rest = line.find_first_not_of(' ', w0 + word.size());

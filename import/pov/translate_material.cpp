@@ -69,6 +69,10 @@ void Translator::default_finish(MaterialProps& m) const {
 }
 
 std::string Translator::material_text(const MaterialProps& m, bool with_defaults) {
+  if (m.layered) {  // each layer carries POV-Ray's defaults; it takes nothing else
+    for (const auto& p : m.props)
+      if (p.first == "layers") return "material { layers = " + p.second + " }";
+  }
   if (m.chosen) {  // its choices carry POV-Ray's defaults; it takes nothing else
     std::string s;
     for (const auto& p : m.props)
@@ -133,6 +137,7 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
   std::string pattern;       // a pattern block's name (checker, marble, ...)
   std::vector<std::string> colors, pattern_props, xforms;
   std::string map;           // color_map as an rts list
+  std::string named_pattern;  // `pigment { P_WoodGrain1A color_map { ... } }`: a declared pigment
   double filter = 0, transmit = 0;
   static const std::set<std::string> unsupported_patterns = {
       "brick", "hexagon", "spiral1", "spiral2", "quilted", "facets", "average", "slope", "radial", "mandel",
@@ -147,6 +152,7 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
           // POV-Ray): the material is derived from it, its colour and pattern with it.
           if (s->type == Type::Material && library_names_.count(e.text) && m.base.empty()) m.base = rename(e.text);
           else m.set("color", rename(e.text));
+          if (s->type == Type::Pigment) named_pattern = rename(e.text);
           continue;
         }
         if (missing_name(it.loc, e.text, "pigment or colour")) {
@@ -324,6 +330,12 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
     if (!map.empty()) body += "  color_map = " + map;
     else if (colors.size() >= 2) body += fmt::format("  color_map = [[0, {}], [1, {}]]", colors[0], colors[1]);
     m.set("texture", pattern + " {" + body + (body.empty() ? "}" : " }") + suffix);
+    m.props.erase(std::remove_if(m.props.begin(), m.props.end(), [](const auto& p) { return p.first == "color"; }),
+                  m.props.end());
+  } else if (!named_pattern.empty() && !map.empty()) {
+    // A declared pattern given its colour map here (woods.inc's T_Wood1: P_WoodGrain1A with
+    // M_Wood1A): the pattern with that map, then the transforms written here.
+    m.set("texture", named_pattern + " with { color_map = " + map + " }" + suffix);
     m.props.erase(std::remove_if(m.props.begin(), m.props.end(), [](const auto& p) { return p.first == "color"; }),
                   m.props.end());
   } else if (!xforms.empty() && m.has("color")) {
@@ -530,12 +542,38 @@ void Translator::normal(const Block& b, MaterialProps& m) {
   m.set("bump_scale", "0.2 * " + amount);
 }
 
+void Translator::layered_texture(const std::vector<const Item*>& layers, const std::vector<const Item*>& base_parts,
+                                 MaterialProps& m) {
+  // POV-Ray's layered texture: the first texture at the bottom, each later one over it. rts's
+  // layered material reads a coat's transmit (its colour's, or its colour map's) as what shows
+  // through it and weights the coat's diffuse and ambient by the rest itself, so a coat's
+  // opacity is not written into it (MaterialProps::opacity).
+  std::string list;
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    MaterialProps layer;
+    texture_part(*layers[i], layer);
+    if (i == 0)
+      for (const Item* part : base_parts) texture_part(*part, layer);  // the object's interior
+    else
+      layer.opacity = 1.0;
+    list += (i ? ", " : "") + material_text(layer, true);
+  }
+  m = MaterialProps{};
+  m.layered = true;
+  m.set("layers", "[" + list + "]");
+}
+
 void Translator::texture_part(const Item& it, MaterialProps& m) {
   const Block& b = *it.block;
   if (b.kind == "pigment") return pigment(b, m);
   if (b.kind == "finish") return finish(b, m);
   if (b.kind == "interior") return interior(b, m);
   if (b.kind == "normal") return normal(b, m);
+  if (b.kind == "layered_texture") {
+    std::vector<const Item*> layers;
+    for (const Item& layer : b.items) layers.push_back(&layer);
+    return layered_texture(layers, {}, m);
+  }
   if (b.kind == "texture" && texture_pattern(b, m)) return;
   if (b.kind == "texture" || b.kind == "material") {
     for (const Item& part : b.items) {

@@ -149,6 +149,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   std::vector<const Item*> children;  // CSG and mesh members, directives among them
   MaterialProps mat;
   bool textured = false;
+  std::vector<const Item*> texture_blocks, interiors;  // two textures or more: layers
   std::string base;  // object { X }
   const Expr* font = nullptr;  // text { ttf "font" ... }
   text_values_.clear();
@@ -212,6 +213,8 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         break;
       case Item::Nested:
         if (is_texture_part(it.block->kind)) {
+          if (it.block->kind == "texture") texture_blocks.push_back(&it);
+          if (it.block->kind == "interior") interiors.push_back(&it);
           texture_part(it, mat);
           textured = textured || it.block->kind != "interior";
         } else if (is_object_kind(it.block->kind)) {
@@ -275,6 +278,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         break;
     }
   }
+  if (texture_blocks.size() >= 2) layered_texture(texture_blocks, interiors, mat);  // texture { A } texture { B }
   auto v = [&](std::size_t i) -> const Expr* { return i < values.size() ? values[i]->args[0].get() : nullptr; };
   auto need = [&](std::size_t n, const char* form) {
     if (values.size() < n) error(b.loc, fmt::format("'{}' needs {}", k, form));

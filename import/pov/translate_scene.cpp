@@ -300,7 +300,7 @@ void Translator::declare(Writer& w, const Item& it) {
       s.textured = has_texture(b);  // before N is redefined: `object { N texture { } }` names the old N
       object(w, b, head, false);
       if (b.kind != "object") s.object_kind = last_kind_;
-    } else if (b.kind == "texture" || b.kind == "material") {
+    } else if (b.kind == "texture" || b.kind == "material" || b.kind == "layered_texture") {
       s.type = Type::Material;
       MaterialProps m;
       Item part;

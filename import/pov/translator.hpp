@@ -45,6 +45,9 @@ struct MaterialProps {
   // A material chosen by pattern (translate_texture_map.cpp): `pattern` and `materials` only,
   // written without POV-Ray's defaults (each choice carries its own).
   bool chosen = false;
+  // A layered texture (POV-Ray's `texture { A } texture { B }`): `layers` only, each layer
+  // written with POV-Ray's defaults (material_text).
+  bool layered = false;
 };
 
 // A declared name. What a use needs from its block is worked out when it is declared, so
@@ -125,6 +128,10 @@ class Translator {
   // The material a POV-Ray texture-like block (texture, pigment, finish, normal, interior,
   // material) adds to `m`.
   void texture_part(const Item& it, MaterialProps& m);
+  // `layers` (texture blocks, the first at the bottom) as one layered material; `base_parts`
+  // (an object's interior) go to the bottom layer.
+  void layered_texture(const std::vector<const Item*>& layers, const std::vector<const Item*>& base_parts,
+                       MaterialProps& m);
   // texture { checker texture { A } texture { B } } and texture { PATTERN texture_map { ... } }
   // as rts's material chosen by pattern (translate_texture_map.cpp); false when `b` is neither.
   bool texture_pattern(const Block& b, MaterialProps& m);
