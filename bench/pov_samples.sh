@@ -45,7 +45,8 @@ mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 results="$out/results.tsv"
 printf 'scene\timported\trendered\tmad\tblock_mad\tnoise\tmatch\tfirst_missing\n' > "$results"
-noise='bozo|spotted|granite|marble|wood|agate|leopard|wrinkles|crackle|bumps|dents|ripples|waves|turbulence|cells|onion'
+# (also the library's names built on noise patterns, which a scene may use through an include)
+noise='bozo|spotted|granite|marble|wood|agate|leopard|wrinkles|crackle|bumps|dents|ripples|waves|turbulence|cells|onion|T_Wood|P_WoodGrain|T_Stone|T_Grnt'
 find -L "$scenes" -name '*.pov' | sort | grep -E -- "$filter" | while read -r scene; do
   rel="${scene#$scenes/}"
   name="$(echo "${rel%.pov}" | tr '/' '_')"
@@ -55,6 +56,7 @@ find -L "$scenes" -name '*.pov' | sort | grep -E -- "$filter" | while read -r sc
   grep -qE "$noise" "$scene" && is_noise=yes || is_noise=no
   if timeout "$timeout_s" "$rts" import "$scene" -o "$dir/scene.rts" 2> "$dir/import.log" < /dev/null; then
     imported=yes
+    grep -qE "$noise" "$dir"/*.rts && is_noise=yes   # the scene's own includes, translated beside it
     missing="$(grep -m1 -oE "warning: .*" "$dir/import.log" | sed 's/^warning: //' | cut -c1-110)"
     [[ -z "$missing" ]] && missing=-
     if (cd "$dir" && timeout "$timeout_s" nice "$rts" render scene.rts -o rts.png --width 320 --height 240 --threads 1 \

@@ -90,7 +90,7 @@ constexpr PropertyInfo kMaterial[] = {
     {"media_density", "texture", "none", "Medium inside (needs `transmit`): scales the three above by the texture's value (mean channel, clamped to [0, 1]) at each world point."},
     {"pattern", "texture", "none", "With `materials`: the texture whose luminance (0 to 1) picks the material at each point; nothing else may be given."},
     {"materials", "list of materials", "none", "With `pattern`: the materials chosen among, in equal ranges of the luminance, the first for the darkest (POV-Ray's texture checker, texture_map)."},
-    {"layers", "list of materials", "none", "Layered material: the base first, each later material a coat over those before; a coat's transmit (its colour map's or its own) shows what lies below (POV-Ray's layered textures); nothing else may be given."},
+    {"layers", "list of materials", "none", "Layered material: the base first, each later material a coat over those before; a coat's transmit (its colour map's or its own) shows what lies below (POV-Ray's layered textures); other properties given with it change the top layer (POV-Ray's modifiers of a layered texture)."},
 };
 
 // The properties every light takes, in the order the builder has always listed them (which

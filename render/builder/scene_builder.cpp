@@ -498,7 +498,11 @@ void SceneBuilder::sky_sphere(ParamSet& ps, TextureDesc& t) {
 MaterialId SceneBuilder::material(ParamSet& ps) {
   if (ps.has("layers")) return layered_material(ps);
   if (ps.has("pattern") || ps.has("materials")) return chosen_material(ps);
-  MaterialDesc m;
+  return ordinary_material(ps, nullptr);
+}
+
+MaterialId SceneBuilder::ordinary_material(ParamSet& ps, const MaterialDesc* start) {
+  MaterialDesc m = start ? *start : MaterialDesc{};
   m.loc = ps.loc();
   for (const Param& p : ps.params())
     if (auto* t = std::get_if<TextureRef>(&p.value); t && t->id < scene_.textures.size() &&
@@ -643,9 +647,20 @@ MaterialId SceneBuilder::layered_material(ParamSet& ps) {
     ps.fail(*ps.find("layers"), fmt::format("'layers' holds 1 to 64 materials (layered ones counted by their "
                                             "layers), got {}",
                                             layers.size()));
+  // Other properties (`layered with { specular = 0.5 }`, POV-Ray's texture { T_Wood1 finish { ... } })
+  // change the top layer, as POV-Ray's modifiers change a layered texture's top one.
+  const Param* extra = nullptr;
   for (const Param& p : ps.params())
-    if (p.name != "layers")
-      ps.fail(p, fmt::format("a layered material takes only 'layers': give '{}' to the layer it belongs to", p.name));
+    if (p.name != "layers" && !extra) extra = &p;
+  if (extra) {
+    const MaterialId top = layers.back();
+    if (top < scene_.materials.size() && scene_.materials[top].choice_count > 0)
+      ps.fail(*extra, fmt::format("a layered material's other properties change its top layer, which is chosen by "
+                                  "pattern here: give '{}' to the materials it chooses among",
+                                  extra->name));
+    const MaterialDesc start = top < scene_.materials.size() ? scene_.materials[top] : MaterialDesc{};
+    layers.back() = ordinary_material(ps, &start);
+  }
   MaterialDesc m;
   m.loc = ps.loc();
   m.layered = true;

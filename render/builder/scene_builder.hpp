@@ -52,6 +52,8 @@ class SceneBuilder {
   MaterialId material(ParamSet& params);
   MaterialId chosen_material(ParamSet& params);  // material { pattern  materials }
   MaterialId layered_material(ParamSet& params);  // material { layers }
+  // An ordinary material from `params`, starting from `start`'s values (else the defaults).
+  MaterialId ordinary_material(ParamSet& params, const MaterialDesc* start);
   // text { font string thickness offset }: a group of glyph prisms (text_builder.cpp); `base`
   // holds the material and casts_shadow every glyph takes.
   NodeId text(ParamSet& params, const ShapeDesc& base);
