@@ -114,6 +114,8 @@ int run(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx) 
   // settings { output_gamma = "linear" } (an imported POV-Ray scene without assumed_gamma 1.0)
   // is --linear written in the scene.
   if (!video && probe.scene.settings.output_linear) spec.spec->linear = true;
+  // settings { output_gamma = g } (an imported POV-Ray scene with assumed_gamma g).
+  if (!video) spec.spec->power = probe.scene.settings.output_power;
   const int64_t scene_frames = probe.scene.settings.frames;
   if (distributed) {
     if (scene_frames > 1)

@@ -199,10 +199,12 @@ void Translator::header(Writer& w, const std::string& source_name) {
 
 void Translator::footer(Writer& w) {
   // POV-Ray 3.7: a scene with assumed_gamma 1.0 (or #version 3.7 without assumed_gamma) is
-  // written with the sRGB curve; an older scene (no #version, no assumed_gamma) with none.
-  bool srgb = gamma_seen_ ? std::abs(assumed_gamma_ - 1.0) < 1e-9 : version_ >= 3.7;
-  if (gamma_seen_ && !srgb && std::abs(assumed_gamma_ - 2.2) > 1e-6)
-    warn(Loc{}, fmt::format("assumed_gamma {} is taken as 2.2 (no output gamma encoding)", num(assumed_gamma_)));
+  // written with the sRGB curve; an older scene (no #version, no assumed_gamma) with none; a
+  // scene with assumed_gamma g renders in a space of gamma g, and its values v are written as
+  // sRGB of v^g (measured: objects/prism3c, assumed_gamma 2.2, 0.48 codes from POV-Ray's image
+  // where no encoding was 7.1; objects/ttf1, 1.9, 0.22 codes where it was 8.9).
+  const bool srgb = gamma_seen_ ? std::abs(assumed_gamma_ - 1.0) < 1e-9 : version_ >= 3.7;
+  const bool power = gamma_seen_ && !srgb && assumed_gamma_ > 0.0;
   if (opt_.width > 0 || opt_.height > 0 || opt_.antialias_threshold >= 0) {
     // POV-Ray's render options (an .ini file): the image size, and +A as a fixed sample count.
     std::string s;
@@ -225,9 +227,16 @@ void Translator::footer(Writer& w) {
     w.line("camera { position = <0, 0, 0>  direction = <0, 0, 1>  right = <1.33, 0, 0>  up = <0, 1, 0> }");
   }
   w.blank();
-  w.line(srgb ? "// POV-Ray 3.7 with assumed_gamma 1.0: the image is sRGB-encoded."
-              : "// POV-Ray without #version 3.7 / assumed_gamma 1.0 writes the image without gamma encoding.");
-  w.line(fmt::format("settings {{ output_gamma = \"{}\" }}", srgb ? "srgb" : "linear"));
+  if (power) {
+    w.line(fmt::format("// POV-Ray with assumed_gamma {0}: the scene's values are in a space of gamma {0}; each is",
+                       num(assumed_gamma_)));
+    w.line(fmt::format("// written as sRGB of its {}th power.", num(assumed_gamma_)));
+    w.line(fmt::format("settings {{ output_gamma = {} }}", num(assumed_gamma_)));
+  } else {
+    w.line(srgb ? "// POV-Ray 3.7 with assumed_gamma 1.0: the image is sRGB-encoded."
+                : "// POV-Ray without #version 3.7 / assumed_gamma 1.0 writes the image without gamma encoding.");
+    w.line(fmt::format("settings {{ output_gamma = \"{}\" }}", srgb ? "srgb" : "linear"));
+  }
   w.line("// POV-Ray's lights fall off by their fade_distance/fade_power only: with --integrator path too.");
   w.line("settings { light_falloff = \"attenuation\" }");
   if (radiosity_) {

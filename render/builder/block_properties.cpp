@@ -34,7 +34,7 @@ constexpr PropertyInfo kSettings[] = {
     {"fog_octaves", "whole number 1 to 16", "`6`", "Turbulent fog: octaves of noise."},
     {"fog_omega", "number", "`0.5`", "Turbulent fog: each octave's weight against the last."},
     {"fog_lambda", "number", "`2`", "Turbulent fog: each octave's frequency against the last."},
-    {"output_gamma", "string", "`\"srgb\"`", "\"linear\": PNG output stores the linear values (`--linear` in the scene)."},
+    {"output_gamma", "string or number", "`\"srgb\"`", "\"linear\": PNG output stores the linear values (`--linear` in the scene). A number g: the image's values are raised to g before they are written (POV-Ray's assumed_gamma g)."},
     {"aov", "string", "none", "Auxiliary images to write beside the output, as --aov (\"normal,depth\")."},
     {"depth_range", "vector", "none", "Depth AOV: the distances mapped to black and white, as --depth-range."},
     {"depth_miss", "number", "`0`", "Depth AOV value where nothing is hit, as --depth-miss."},

@@ -283,7 +283,13 @@ void SceneBuilder::settings(ParamSet& ps) {
                        fmt::format("unknown integrator '{}' (expected whitted or path)", name));
   }
   if (ps.has("light_falloff")) s.light_falloff_attenuation = second_word(ps, "light_falloff", "inverse_square", "attenuation");
-  if (ps.has("output_gamma")) s.output_linear = second_word(ps, "output_gamma", "srgb", "linear");
+  if (const ParamValue* g = ps.value("output_gamma"); g && std::holds_alternative<double>(*g)) {
+    s.output_power = ps.number("output_gamma", 1.0);
+    require(ps, "output_gamma", std::isfinite(s.output_power) && s.output_power >= 0.1 && s.output_power <= 10.0,
+            "\"srgb\", \"linear\" or a gamma from 0.1 to 10", s.output_power);
+  } else if (ps.has("output_gamma")) {
+    s.output_linear = second_word(ps, "output_gamma", "srgb", "linear");
+  }
   if (MediumId id = medium(ps); id != kNoId) s.medium = id;
   if (ps.has("media_samples")) {
     const int n = ps.integer("media_samples", s.media_samples);

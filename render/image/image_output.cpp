@@ -1,6 +1,7 @@
 #include "render/image/image_output.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <filesystem>
 
@@ -89,15 +90,21 @@ std::string aov_path(const std::string& out, const std::string& name) {
 std::vector<std::string> write_images(const std::string& path, const OutputSpec& spec, const Image& color,
                                       const std::map<std::string, Image>& aovs) {
   std::vector<std::string> written;
+  Image powered;
+  if (spec.power != 1.0) {
+    powered = color;
+    for (float& v : powered.rgb) v = v > 0.0f ? static_cast<float>(std::pow(static_cast<double>(v), spec.power)) : 0.0f;
+  }
+  const Image& color_out = spec.power != 1.0 ? powered : color;
   if (spec.format == ImageFormat::Exr && !spec.aov_files) {
     // One file: the color as R, G, B; each AOV as a layer (depth as one channel, depth.Y).
-    std::vector<ExrLayer> layers{ExrLayer{"", &color, false}};
+    std::vector<ExrLayer> layers{ExrLayer{"", &color_out, false}};
     for (const auto& [name, image] : aovs) layers.push_back(ExrLayer{name, &image, name == "depth"});
     write_exr(path, layers, spec.bits == 16);
     written.push_back(path);
     return written;
   }
-  write_one(path, spec, color, spec.linear ? Encoding::Linear : Encoding::SRGB);
+  write_one(path, spec, color_out, spec.linear ? Encoding::Linear : Encoding::SRGB);
   written.push_back(path);
   // AOVs are data (normals, depth), not colors: stored without the sRGB curve.
   for (const auto& [name, image] : aovs) {

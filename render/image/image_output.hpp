@@ -19,6 +19,9 @@ struct OutputSpec {
   int bits = 8;             // png: 8 or 16; exr: 16 (half) or 32 (float); pfm: 32
   bool linear = false;      // png: store linear values instead of sRGB (float formats always are)
   bool aov_files = false;   // exr: AOVs as separate files instead of layers of the one file
+  // The color image's values are raised to this power before they are written (settings'
+  // numeric output_gamma: POV-Ray's assumed_gamma); AOVs are data and stay as they are.
+  double power = 1.0;
 };
 
 // The format named by `path`'s extension (any case), or nullopt for any other name.

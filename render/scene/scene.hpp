@@ -452,6 +452,10 @@ struct Settings {
   // settings { output_gamma = "linear" }: PNG output stores linear values (as --linear), the
   // way POV-Ray writes a scene without assumed_gamma 1.0. "srgb" (the default) encodes sRGB.
   bool output_linear = false;
+  // settings { output_gamma = g } (a number): the image's values v are POV-Ray's with
+  // assumed_gamma g, values in a space of gamma g: written as v^g, then encoded (sRGB for PNG).
+  // 1: as rendered.
+  double output_power = 1.0;
   // Which extra images `rts render` writes unless its command line says otherwise (--aov,
   // --depth-range, --depth-miss, --normal-miss): a course scene's images from a plain render.
   std::vector<std::string> aovs;   // "normal", "depth", "albedo", "error"
