@@ -235,6 +235,42 @@ Value Interpreter::make_texture(ast::Symbol kind, std::vector<Property> props, S
   return v;
 }
 
+// A texture moved by `t`; a material with each texture it holds moved (its colour pattern, its
+// channel textures, bump and normal maps, the pattern that chooses and each choice or layer:
+// POV-Ray's texture { T scale 2 }), except its medium's density, which lies in world space.
+Value Interpreter::transform_textures(const Value& v, const render::Mat4& t) {
+  if (v.type == Type::Texture) {
+    auto rec = std::make_shared<RecordValue>(as_record(v));
+    rec->built_id = render::kNoId;
+    rec->transform = t * rec->transform;
+    Value r = v;
+    r.ref = std::move(rec);
+    return r;
+  }
+  if (v.type == Type::Material) {
+    auto rec = std::make_shared<RecordValue>(as_record(v));
+    rec->built_id = render::kNoId;
+    for (Property& p : rec->props) {
+      if (p.name && *p.name == "media_density") continue;
+      p.value = transform_textures(p.value, t);
+    }
+    Value r = v;
+    r.ref = std::move(rec);
+    return r;
+  }
+  if (v.type == Type::List) {
+    const auto& items = as_list(v);
+    if (std::none_of(items.begin(), items.end(),
+                     [](const Value& x) { return x.type == Type::Material || x.type == Type::Texture; }))
+      return v;  // numbers, colours, a colour map: nothing to move
+    std::vector<Value> moved;
+    moved.reserve(items.size());
+    for (const Value& x : items) moved.push_back(transform_textures(x, t));
+    return Value::list(std::move(moved));
+  }
+  return v;
+}
+
 Value Interpreter::eval_transform(const ast::TransformExpr& e) {
   Value obj = eval(*e.object);
   Value arg = eval(*e.arg);
@@ -300,16 +336,11 @@ Value Interpreter::eval_transform(const ast::TransformExpr& e) {
       r.ref = std::make_shared<TransformValue>(t * as_transform(obj));
       return r;
     }
-    case Type::Texture: {
-      auto rec = std::make_shared<RecordValue>(as_record(obj));
-      rec->built_id = render::kNoId;
-      rec->transform = t * rec->transform;
-      Value r = obj;
-      r.ref = std::move(rec);
-      return r;
-    }
+    case Type::Texture:
+    case Type::Material:
+      return transform_textures(obj, t);
     default:
-      fail(e.op_loc, fmt::format("cannot {} {}; transforms apply to objects, textures and transforms", op,
+      fail(e.op_loc, fmt::format("cannot {} {}; transforms apply to objects, materials, textures and transforms", op,
                                  with_article(obj.type)));
   }
 }

@@ -79,6 +79,7 @@ class Interpreter {
   [[noreturn]] void fail(SourceLoc loc, std::string message) const;
   render::SourceRef ref(SourceLoc loc);
   Value make_texture(ast::Symbol kind, std::vector<Property> props, SourceLoc loc);
+  Value transform_textures(const Value& v, const render::Mat4& t);
   // The builder id of a material / texture value, built on first use and cached in it.
   uint32_t realize_material(const Value& material);
   uint32_t realize_texture(const Value& texture);

@@ -609,11 +609,13 @@ void Translator::texture_part(const Item& it, MaterialProps& m) {
       }
       std::vector<std::string> t = transforms(part);
       if (!t.empty()) {
-        // A transform of a whole texture moves its pattern.
+        // A transform of a whole texture moves its pattern, and a declared texture's
+        // (`texture { T_Grnt0a scale 2 }`: rts moves a material's textures with it).
         std::string suffix;
         for (const std::string& x : t) suffix += " " + x;
         for (auto& p : m.props)
           if (p.first == "texture" || p.first == "bump") p.second = "(" + p.second + ")" + suffix;
+        if (!m.base.empty()) m.base = "(" + m.base + suffix + ")";
         continue;
       }
       if (part.kind == Item::Keyword) unsupported(part.loc, part.name, "rts's material properties", false);
