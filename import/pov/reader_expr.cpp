@@ -202,6 +202,14 @@ ExprPtr Reader::primary() {
           return e;
         }
         e->args.push_back(add_expr());
+        // `color Black transmit 0.6`: channels set after the colour (each an extra argument,
+        // a Call named for its channel).
+        while (peek().kind == Token::Name && (peek().text == "filter" || peek().text == "transmit") &&
+               !is_punct("{", 1)) {
+          ExprPtr channel = make(Expr::Call, peek().loc, next().text);
+          channel->args.push_back(unary_expr());
+          e->args.push_back(channel);
+        }
         return e;
       }
       if (n == "array") {

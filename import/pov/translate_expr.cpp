@@ -260,6 +260,15 @@ Text Translator::expr(const Expr& e) {
         Text t;
         double f = 0, tr = 0;
         t.s = color_value(a, &f, &tr);
+        for (std::size_t i = 1; i < e.args.size(); ++i) {  // `color C transmit 0.6` (the reader's)
+          double v = 0;
+          const Expr& channel = *e.args[i];
+          if (channel.args.empty() || !literal_number(*channel.args[0], v)) {
+            warn(channel.loc, "a computed '" + channel.text + "' after a colour is dropped");
+            continue;
+          }
+          (channel.text == "filter" ? f : tr) = v;
+        }
         t.type = Type::Color;
         t.filter = f;
         t.transmit = tr;
