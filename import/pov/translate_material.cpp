@@ -400,15 +400,9 @@ void Translator::finish(const Block& b, MaterialProps& m) {
     const std::string& k = it.name;
     std::string v = it.args.empty() ? "" : value(*it.args[0]);
     if (k == "ambient" && !v.empty()) {
+      // A colour weighs each channel (rts's ambient = rgb(...)); golds.inc's finishes have one.
       double f;
-      if (!literal_number(*it.args[0], f) && expr(*it.args[0]).type != Type::Float) {
-        std::vector<double> c;
-        if (it.args[0]->kind == Expr::Color && literal_vector(*it.args[0]->args[0], c) && c.size() >= 3) {
-          unsupported(it.loc, "ambient <colour>", "a number (rts's ambient weighs the pigment): the mean is used",
-                      false);
-          v = num((c[0] + c[1] + c[2]) / 3);
-        }
-      }
+      if (!literal_number(*it.args[0], f) && it.args[0]->kind == Expr::Color) v = color_value(*it.args[0]);
       m.set("ambient", v);
     } else if (k == "diffuse" && !v.empty()) {
       m.set("diffuse", v);

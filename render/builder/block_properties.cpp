@@ -67,7 +67,7 @@ constexpr PropertyInfo kMaterial[] = {
     {"color", "color, or a texture", "`rgb(0.8)`", "Base (diffuse) color."},
     {"texture", "texture", "none", "Replaces `color` by the texture's color at each point."},
     {"emission", "color, or a texture", "`rgb(0)`", "Light the surface gives off towards the camera."},
-    {"ambient", "number ≥ 0", "`0.1`", "Weight of `settings.ambient_light`."},
+    {"ambient", "number or color ≥ 0", "`0.1`", "Weight of `settings.ambient_light`; a color weighs each channel (POV-Ray's `ambient rgb <...>`)."},
     {"diffuse", "number ≥ 0, or a texture", "`0.7`", "Lambertian weight."},
     {"specular", "number or color ≥ 0, or a texture", "`0`", "Phong highlight weight."},
     {"shininess", "number ≥ 0", "`32`", "Phong exponent: higher is a smaller, sharper highlight."},

@@ -536,7 +536,16 @@ MaterialId SceneBuilder::ordinary_material(ParamSet& ps, const MaterialDesc* sta
     m.emission = ps.color("emission", m.emission);
     non_negative_color(ps, "emission", m.emission);
   }
-  m.ambient = non_negative(ps, "ambient", ps.number("ambient", m.ambient));
+  if (const ParamValue* av = ps.value("ambient")) {
+    if (const double* d = std::get_if<double>(av)) {
+      m.ambient = non_negative(ps, "ambient", *d);
+    } else {
+      // A colour weighs each channel (POV-Ray's `ambient rgb <...>`, golds.inc): weight 1, that colour.
+      m.ambient = 1.0;
+      m.ambient_color = ps.color("ambient", m.ambient_color);
+      non_negative_color(ps, "ambient", m.ambient_color);
+    }
+  }
   if (channel_texture("diffuse", m.diffuse_texture))
     m.diffuse = 1.0;
   else

@@ -104,6 +104,7 @@ struct MaterialDesc {
   TextureId normal_map = kNoId;
   Color emission{0.0};
   double ambient = 0.1;
+  Color ambient_color{1.0};    // `ambient = rgb(...)` weighs each channel (ambient 1, this colour)
   double diffuse = 0.7;
   double specular = 0.0;
   Color specular_color{1.0};   // tints the highlight (`specular = rgb(...)` sets it, specular = 1)

@@ -256,6 +256,7 @@ void SceneDesc::dump(std::ostream& out) const {
     if (m.bump != kNoId) extra += fmt::format(" bump_scale {}", num(m.bump_scale));
     if (!extra.empty()) out << "    maps" << extra << '\n';
     if (m.medium != kNoId) out << fmt::format("    medium {}\n", m.medium);
+    if (!(m.ambient_color == Color(1.0))) out << fmt::format("    ambient color {}\n", col(m.ambient_color));
   }
   // Printed only when there are any, so the dumps of scenes without media stay as they were.
   if (!media.empty()) out << fmt::format("media {}\n", media.size());

@@ -55,6 +55,7 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
   // Shadow rays through glass whose `transmit` is a texture need the hit point, which the
   // specialised one-pass crossing test does not keep: such scenes take the generic path.
   bool textured_transmit = false;
+  bool colored_ambient = false;  // a placed material's ambient is a colour (emitted_and_ambient)
   static const std::vector<CompiledMedium> kNoMedia;
   media_ = media ? media : &kNoMedia;
   atmosphere_ = settings.medium < media_->size() ? settings.medium : kNoId;
@@ -72,13 +73,14 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
       if (m.transmit_texture != kNoId || (chosen && transmits(m))) textured_transmit = true;
       if (m.medium < media_->size() && transmits(m)) media_on_ = true;
       if (passes_through(m)) has_pass_through_ = true;
+      if (!(m.ambient_color == Color(1.0))) colored_ambient = true;
     });
   }
   // Media scenes, and scenes with surfaces light passes through unchanged, take the generic
   // path: shadow rays walk surface by surface to know which medium each stretch is in, and
   // the specialised paths carry none of this (leave-out: a scene without media pays nothing).
-  bool generic =
-      (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_ || has_pass_through_ || layers_on_;
+  bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_ || has_pass_through_ ||
+                 layers_on_ || colored_ambient;
   uint32_t skipped = 0;
   for (const CompiledLight& l : lights) {
     // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
@@ -403,6 +405,7 @@ template <unsigned F, bool kLayer>
 Rgb Integrator::surface(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& m, double fog_t,
                         const Rgb& medium_t, const Rgb& layer, Path& path, std::vector<PendingRay>& pending) const {
   const Ray& ray = pr.ray;
+  constexpr bool kMedia = (F & trace_flags::kGeneric) != 0;
   Vec3 incident = glm::normalize(ray.direction);
 
   // The geometric normal decides the side: face it towards the incoming ray (leaving a solid
@@ -417,7 +420,7 @@ Rgb Integrator::surface(const PendingRay& pr, const WorldHit& hit, const Materia
   Vec3 view = -incident;
   Rgb base = albedo<F>(m, hit);
   Rgb ambient = environment_ambient_ ? ambient_light_ * background(n) : ambient_light_;
-  Rgb color = emitted_and_ambient(m, base, ambient);
+  Rgb color = emitted_and_ambient<kMedia>(m, base, ambient);
   Vec3 front_origin = offset_ray_origin(hit.point, ng, ng, hit.error);
   color += direct_light<F>(hit, m, diffuse_color(m, base, world_, hit, textures_), n, front_origin, view, pr.media,
                            path);
@@ -427,7 +430,6 @@ Rgb Integrator::surface(const PendingRay& pr, const WorldHit& hit, const Materia
   if (pr.depth >= max_depth_) return color;
   // The light the secondary rays bring back crosses the same fog (x * 1.0 is exact: without
   // fog the weights are unchanged), and for a layer, its share.
-  constexpr bool kMedia = (F & trace_flags::kGeneric) != 0;
   Rgb weight = kMedia ? pr.weight * fog_t * medium_t : pr.weight * fog_t;
   if constexpr (kLayer) weight *= layer;
 

@@ -61,7 +61,11 @@ inline bool passes_through(const MaterialDesc& m) {
 // ---- Whitted (Phong) evaluation ------------------------------------------------------------
 
 // What the surface sends back without any light: emission + ambient * base * ambient light.
-inline Rgb emitted_and_ambient(const MaterialDesc& m, const Rgb& base, const Rgb& ambient_light) {
+// kColored: times the ambient's colour (MaterialDesc::ambient_color; only scenes with one,
+// which take the generic path, pay for it).
+template <bool kColored = false>
+[[gnu::always_inline]] inline Rgb emitted_and_ambient(const MaterialDesc& m, const Rgb& base, const Rgb& ambient_light) {
+  if constexpr (kColored) return to_rgb(m.emission) + m.ambient * (base * to_rgb(m.ambient_color)) * ambient_light;
   return to_rgb(m.emission) + m.ambient * base * ambient_light;
 }
 
