@@ -7,6 +7,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <glm/glm.hpp>
 
 #include "import/pov/translator.hpp"
 
@@ -200,8 +201,19 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
           std::string axis = "\"y\"";
           if (literal_vector(*it.args[0], v) && v.size() == 3) {
             axis = v[0] != 0 ? "\"x\"" : v[2] != 0 ? "\"z\"" : "\"y\"";
-            if ((v[0] != 0) + (v[1] != 0) + (v[2] != 0) != 1)
-              unsupported(it.loc, "gradient", "a gradient along x, y or z (rotate the texture)", false);
+            const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            if ((v[0] != 0) + (v[1] != 0) + (v[2] != 0) != 1 && len > 0) {
+              // POV-Ray's gradient along any vector (its direction; textures.inc's Candy_Cane
+              // is gradient x+y): rts's along x, turned so x goes along it, before the
+              // pigment's own transforms. The matrix's rows are the images of x, y and z.
+              const glm::dvec3 u = glm::dvec3(v[0], v[1], v[2]) / len;
+              const glm::dvec3 other = std::abs(u.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+              const glm::dvec3 w = glm::normalize(glm::cross(u, other)), t = glm::cross(u, w);
+              xforms.insert(xforms.begin(), fmt::format("matrix [{}, {}, {}, {}, {}, {}, {}, {}, {}, 0, 0, 0]",
+                                                        num(u.x), num(u.y), num(u.z), num(w.x), num(w.y),
+                                                        num(w.z), num(t.x), num(t.y), num(t.z)));
+              axis = "\"x\"";
+            }
           }
           pattern_props.push_back("axis = " + axis);
         }
@@ -579,6 +591,11 @@ void Translator::texture_part(const Item& it, MaterialProps& m) {
         }
         if (!s) {  // a texture from an include (textures.inc): derived from
           if (!missing_name(part.loc, part.args[0]->text, "texture")) m.base = rename(part.args[0]->text);
+          continue;
+        }
+        if (s->type == Type::Pigment) {
+          // A pigment where a texture belongs (`texture { Jade }`, which POV-Ray refuses): its colour.
+          m.set("color", rename(part.args[0]->text));
           continue;
         }
       }
