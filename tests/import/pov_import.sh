@@ -128,7 +128,7 @@ expect_grep "$TMP/out" '^include "woods.inc"' "woods.inc is a library include"
 expect_grep "$TMP/out" '^include "stones.inc"' "stones.inc is a library include"
 expect_grep "$TMP/out" "material = T_Wood20" "T_Wood20 kept"
 expect_grep "$TMP/out" "material = T_Stone25" "T_Stone25 kept"
-expect_grep "$TMP/out" "material = Jade" "Jade kept"
+expect_grep "$TMP/out" "color = Jade" "Jade (a pigment in textures.inc) kept as the colour"
 if grep -q "warning" "$TMP/err"; then echo "FAIL: library names gave warnings:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); fi
 expect_exit 0 "library materials render" -- "$RTS" render "$TMP/lib.pov" -o "$TMP/lib.png" --width 16 --height 12 --no-progress
 # POV-Ray's finish and interior names (finish.inc, metals.inc, glass.inc: Shiny, Phong_Glossy,
