@@ -469,6 +469,7 @@ bool Translator::library_part(const std::string& name, MaterialProps& m) {
 
 void Translator::interior(const Block& b, MaterialProps& m) {
   bool media_seen = false;
+  std::string fade_distance, fade_power, fade_color;  // POV-Ray's fade: written when it has a distance
   for (const Item& it : b.items) {
     if (it.kind == Item::Value && it.args[0]->kind == Expr::Name) {
       if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Interior) {
@@ -485,8 +486,13 @@ void Translator::interior(const Block& b, MaterialProps& m) {
     }
     if (it.kind == Item::Keyword && it.name == "ior" && !it.args.empty()) {
       m.set("ior", value(*it.args[0]));
-    } else if (it.kind == Item::Keyword && (it.name == "fade_distance" || it.name == "fade_power" ||
-                                            it.name == "dispersion" || it.name == "caustics")) {
+    } else if (it.kind == Item::Keyword && (it.name == "fade_distance" || it.name == "fade_power") &&
+               !it.args.empty()) {
+      (it.name == "fade_distance" ? fade_distance : fade_power) = value(*it.args[0]);
+    } else if (it.kind == Item::Keyword && (it.name == "fade_color" || it.name == "fade_colour") &&
+               !it.args.empty()) {
+      fade_color = color_value(*it.args[0]);
+    } else if (it.kind == Item::Keyword && (it.name == "dispersion" || it.name == "caustics")) {
       unsupported(it.loc, it.name, "media_absorption (Beer-Lambert absorption inside the object)", false);
     } else if (it.kind == Item::Nested && it.block->kind == "media") {
       if (media_seen) {
@@ -496,6 +502,15 @@ void Translator::interior(const Block& b, MaterialProps& m) {
       media_seen = true;
       for (const auto& p : media(*it.block)) m.set(p.first, p.second);
     }
+  }
+  // POV-Ray fades only with a fade_distance (its fade_power defaults to 0: light halved, what
+  // rts's default gives too); a distance of 0 is none.
+  double d = 1.0;
+  const bool literal = !fade_distance.empty() && parse_number(fade_distance, d);
+  if (!fade_distance.empty() && !(literal && !(d > 0.0))) {
+    m.set("fade_distance", fade_distance);
+    if (!fade_power.empty()) m.set("fade_power", fade_power);
+    if (!fade_color.empty()) m.set("fade_color", fade_color);
   }
 }
 

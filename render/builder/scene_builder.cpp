@@ -710,9 +710,11 @@ MaterialId SceneBuilder::layered_material(ParamSet& ps) {
 
 MediumId SceneBuilder::medium(ParamSet& ps) {
   static constexpr std::string_view kNames[] = {"media_absorption", "media_scattering", "media_emission",
-                                                "media_eccentricity", "media_density"};
+                                                "media_eccentricity", "media_density", "fade_distance",
+                                                "fade_power", "fade_color"};
+  const bool material = ps.kind() == "material";  // the fade is an object's, not the atmosphere's
   bool any = false;
-  for (std::string_view n : kNames) any = any || ps.has(n);
+  for (std::string_view n : kNames) any = any || ((material || n.rfind("fade_", 0) != 0) && ps.has(n));
   if (!any) return kNoId;
   MediumDesc d;
   d.loc = ps.loc();
@@ -735,6 +737,29 @@ MediumId SceneBuilder::medium(ParamSet& ps) {
   if (!finite(d.absorption)) require(ps, "media_absorption", false, "finite", d.absorption.r);
   if (!finite(d.scattering)) require(ps, "media_scattering", false, "finite", d.scattering.r);
   if (!finite(d.emission)) require(ps, "media_emission", false, "finite", d.emission.r);
+  if (material && (ps.has("fade_distance") || ps.has("fade_power") || ps.has("fade_color"))) {
+    // POV-Ray's interior fade: light crossing the inside over a distance d keeps
+    // fade_color + (1 - fade_color) / (1 + (d / fade_distance)^fade_power), or with a power of
+    // 1000 and more exp(-(1 - fade_color) d / fade_distance) (MediumDesc::fade_distance).
+    if (!ps.has("fade_distance"))
+      ps.fail(*ps.find(ps.has("fade_power") ? "fade_power" : "fade_color"),
+              "POV-Ray's fade needs its 'fade_distance' (the distance at which light is halved, for a power > 0)");
+    d.fade_distance = ps.number("fade_distance", d.fade_distance);
+    require(ps, "fade_distance", std::isfinite(d.fade_distance) && d.fade_distance > 0.0, "a distance > 0",
+            d.fade_distance);
+    d.fade_power = non_negative(ps, "fade_power", ps.number("fade_power", d.fade_power));
+    if (!std::isfinite(d.fade_power)) require(ps, "fade_power", false, "finite", d.fade_power);
+    d.fade_color = ps.color("fade_color", d.fade_color);
+    non_negative_color(ps, "fade_color", d.fade_color);
+    if (d.fade_color.r > 1.0 || d.fade_color.g > 1.0 || d.fade_color.b > 1.0)
+      require(ps, "fade_color", false, "a colour from 0 to 1 per channel", std::max({d.fade_color.r, d.fade_color.g, d.fade_color.b}));
+    for (std::string_view n : {"media_scattering", "media_density"})
+      if (ps.has(n))
+        ps.fail(*ps.find(n),
+                fmt::format("'{}' does not combine with POV-Ray's fade (fade_distance): the fade is a function of "
+                            "the whole distance crossed, which scattering and density split",
+                            n));
+  }
   scene_.media.push_back(d);
   return static_cast<MediumId>(scene_.media.size() - 1);
 }

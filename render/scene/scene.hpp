@@ -196,6 +196,16 @@ struct MediumDesc {
   Color emission{0.0};
   double eccentricity = 0.0;
   TextureId density = kNoId;
+  // POV-Ray's interior fade (an object's medium only; fade_distance 0: none): light that
+  // crosses a distance d of the inside keeps fade_color + (1 - fade_color) / (1 + (d /
+  // fade_distance)^fade_power) per channel, or, with fade_power >= 1000,
+  // exp(-(1 - fade_color) d / fade_distance). Not multiplicative over pieces of a segment, so
+  // it never combines with scattering or a density (the builder refuses both). POV-Ray's shadow
+  // rays skip a fade of power 0 (measured); the Whitted integrator's do too, the path
+  // tracer's take it as every other ray.
+  double fade_distance = 0.0;
+  double fade_power = 0.0;
+  Color fade_color{0.0};
   SourceRef loc;
 };
 

@@ -549,7 +549,8 @@ Rgb Integrator::media_shadow(Ray ray, double end, const MediumStack& media) cons
     WorldHit hit;
     const bool found = world_.intersect(ray, Interval(0.0, end), hit, /*transmissive_only=*/true, /*shadow_ray=*/true);
     if (const CompiledMedium* medium = medium_of(stack))
-      t *= medium->transmittance_marched(ray.origin, dir, (found ? hit.t : end) * len, media_samples_);
+      t *= medium->transmittance_marched(ray.origin, dir, (found ? hit.t : end) * len, media_samples_,
+                                         /*shadow=*/true);
     if (!found) return t;
     MaterialScratch scratch;
     const MaterialDesc& m = shading_material(material(hit), world_, hit, textures_, scratch);

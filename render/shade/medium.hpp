@@ -65,8 +65,11 @@ class CompiledMedium {
   double density(const Vec3& p) const;
 
   // Transmittance over `length` of a homogeneous medium (exact; 0 where sigma_t > 0 and the
-  // length is infinite).
+  // length is infinite), times POV-Ray's fade over it when the medium has one.
   Rgb transmittance(double length) const;
+  // POV-Ray's fade over a crossing of `length` (MediumDesc::fade_distance); 1 without one.
+  bool fades() const { return fade_distance_ > 0.0; }
+  Rgb fade(double length) const;
   // The light a homogeneous medium emits along a segment of `length` that reaches its start:
   // the integral of exp(-sigma_t s) eps ds.
   Rgb emitted(double length) const;
@@ -76,8 +79,9 @@ class CompiledMedium {
   Rgb transmittance(const Vec3& origin, const Vec3& dir, double length, MediumRng& rng) const;
 
   // The Whitted integrator's deterministic version for heterogeneous media: the optical depth
-  // by the midpoint rule over `steps` intervals (closed form when homogeneous).
-  Rgb transmittance_marched(const Vec3& origin, const Vec3& dir, double length, int steps) const;
+  // by the midpoint rule over `steps` intervals (closed form when homogeneous). `shadow`: for a
+  // shadow ray, which skips a fade of power 0 as POV-Ray's do.
+  Rgb transmittance_marched(const Vec3& origin, const Vec3& dir, double length, int steps, bool shadow = false) const;
 
   // The path tracer's free flight along a segment of `length`: adds to `radiance` (times
   // `beta`) the emission found, updates `beta` for what survives, and returns true with the
@@ -87,9 +91,12 @@ class CompiledMedium {
                    Rgb& radiance, double& t) const;
 
  private:
+  Rgb absorbed(double length) const;  // exp(-sigma_t length): transmittance without the fade
   Rgb sigma_a_{0.0}, sigma_s_{0.0}, sigma_t_{0.0}, emission_{0.0};
   double g_ = 0.0;
   double majorant_ = 0.0;
+  double fade_distance_ = 0.0, fade_power_ = 0.0;
+  Rgb fade_color_{0.0};
   bool scatters_ = false, emits_ = false;
   const CompiledTexture* density_ = nullptr;
 };
