@@ -66,7 +66,15 @@ void PixelRenderer::add_samples(int x, int y, uint32_t count, PixelAccum& acc, R
       lens = sampler.next2();
     else
       sampler.skip(2);
-    Rgb c = integrator_.trace(camera_.generate(x + offset.x, y + offset.y, lens), sampler, counters);
+    Rgb c;
+    if (!camera_.may_miss()) [[likely]] {
+      c = integrator_.trace(camera_.generate(x + offset.x, y + offset.y, lens), sampler, counters);
+    } else {
+      // A projection that sends no ray there (a fisheye's corners) leaves the sample black.
+      Ray ray;
+      c = camera_.generate(x + offset.x, y + offset.y, lens, ray) ? integrator_.trace(ray, sampler, counters)
+                                                                   : Rgb(0.0);
+    }
     if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
       ++counters.nan_samples;  // never let one bad sample poison the pixel
       c = Rgb(0.0);

@@ -1,7 +1,9 @@
 // POV-Ray's lights, camera and global settings as rts statements (the camera's right/up/
 // direction vectors, the light kinds and their falloff, the settings rts has).
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -178,6 +180,8 @@ void Translator::camera(Writer& w, const Block& b) {
   const Expr *location = nullptr, *look_at = nullptr, *angle = nullptr, *right = nullptr, *up = nullptr,
              *direction = nullptr, *sky = nullptr;
   bool ortho = false;
+  std::string projection;  // POV-Ray's other camera types: rts's projection of that name
+  const Expr* vertical_angle = nullptr;  // the spherical camera's second angle
   std::vector<std::string> extra;
   std::vector<const Item*> moves;  // the camera's own transforms, in order
   const Block* src = &b;
@@ -197,13 +201,16 @@ void Translator::camera(Writer& w, const Block& b) {
     const std::string& k = it.name;
     if (k == "location") location = a;
     else if (k == "look_at") look_at = a;
-    else if (k == "angle") angle = a;
+    else if (k == "angle") {
+      angle = a;
+      vertical_angle = it.args.size() > 1 ? it.args[1].get() : nullptr;
+    }
     else if (k == "right") right = a;
     else if (k == "up") up = a;
     else if (k == "direction") direction = a;
     else if (k == "sky") sky = a;
-    else if (k == "orthographic") ortho = true;
-    else if (k == "perspective") ortho = false;
+    else if (k == "orthographic") ortho = true, projection.clear();
+    else if (k == "perspective") ortho = false, projection.clear();
     else if (k == "aperture" && a) extra.push_back("aperture = " + value(*a));
     else if (k == "focal_point" && a) {
       extra.push_back(fmt::format("focus_distance = length({} - {})", vector_value(*a),
@@ -212,9 +219,17 @@ void Translator::camera(Writer& w, const Block& b) {
       // rts's samples per pixel carry the blur: settings { samples }
     } else if (k == "translate" || k == "rotate" || k == "scale" || k == "matrix" || k == "transform") {
       moves.push_back(&it);  // applied to the camera's vectors below, when they are literal
-    } else if (k == "fisheye" || k == "panoramic" || k == "spherical" || k == "cylinder" || k == "omnimax" ||
-               k == "ultra_wide_angle") {
-      unsupported(it.loc, k, "a perspective camera", false);
+    } else if (k == "fisheye" || k == "panoramic" || k == "spherical" || k == "omnimax" || k == "ultra_wide_angle") {
+      projection = k;
+      ortho = false;
+    } else if (k == "cylinder") {
+      double n = 0;
+      if (a && literal_number(*a, n) && n >= 1 && n <= 4 && n == std::floor(n)) {
+        projection = fmt::format("cylinder{}", static_cast<int>(n));
+        ortho = false;
+      } else {
+        unsupported(it.loc, "cylinder camera of a computed or unknown type", "cylinder 1 to 4", false);
+      }
     } else {
       unsupported(it.loc, k, "see docs/rendering.md#cameras", false);
     }
@@ -238,6 +253,12 @@ void Translator::camera(Writer& w, const Block& b) {
   camera_seen_ = true;
   std::vector<std::string> props;
   if (ortho) props.push_back("projection = \"orthographic\"");
+  if (!projection.empty()) {
+    // POV-Ray's angle is the projection's own (not the direction's length), its default 90.
+    props.push_back("projection = \"" + projection + "\"");
+    if (angle) props.push_back("fov = " + value(*angle));
+    if (vertical_angle && projection == "spherical") props.push_back("vertical_fov = " + value(*vertical_angle));
+  }
   std::string pos = location ? vector_value(*location) : "<0, 0, 0>";
   props.push_back("position = " + pos);
   // POV-Ray's camera is its three vectors: rts's camera takes them as given, so the picture is
@@ -248,8 +269,9 @@ void Translator::camera(Writer& w, const Block& b) {
   const bool literal_view = lr && lu && ld && !image_aspect && (!location || literal3(location, L)) &&
                             (!look_at || literal3(look_at, A)) && (!sky || literal3(sky, S)) &&
                             (!angle || literal_number(*angle, angle_deg));
-  if (literal_view && !(ortho && angle) && !(angle && (angle_deg <= 0 || angle_deg >= 180))) {
-    if (angle) D = glm::normalize(D) * (0.5 * glm::length(R) / std::tan(angle_deg * M_PI / 360));
+  const bool own_angle = !projection.empty();  // the angle is the projection's, not the direction's
+  if (literal_view && !(ortho && angle) && (own_angle || !(angle && (angle_deg <= 0 || angle_deg >= 180)))) {
+    if (angle && !own_angle) D = glm::normalize(D) * (0.5 * glm::length(R) / std::tan(angle_deg * M_PI / 360));
     if (look_at && glm::length(A - L) > 1e-9) {
       const double dl = glm::length(D), ul = glm::length(U), rl = glm::length(R);
       const double handedness = glm::dot(glm::cross(U, D), R);
@@ -332,6 +354,11 @@ void Translator::camera(Writer& w, const Block& b) {
     }
   }
   props.insert(props.end(), extra.begin(), extra.end());
+  // A projection's own angle was written first: the perspective fov derived below it is dropped.
+  std::set<std::string> keys;
+  props.erase(std::remove_if(props.begin(), props.end(),
+                             [&](const std::string& p) { return !keys.insert(p.substr(0, p.find(" ="))).second; }),
+              props.end());
   w.open("camera");
   for (const std::string& p : props) w.line(p);
   w.close();

@@ -49,11 +49,12 @@ constexpr PropertyInfo kSettings[] = {
 };
 
 constexpr PropertyInfo kCamera[] = {
-    {"projection", "string", "`\"perspective\"`", "\"perspective\" or \"orthographic\"."},
+    {"projection", "string", "`\"perspective\"`", "\"perspective\" or \"orthographic\"; or POV-Ray's \"fisheye\", \"ultra_wide_angle\", \"omnimax\", \"panoramic\", \"cylinder1\" to \"cylinder4\", \"spherical\" (docs/rendering.md#cameras)."},
     {"position", "vector", "`<0, 0, -5>`", "The eye (perspective) or the centre of the view (orthographic)."},
     {"look_at", "vector", "`<0, 0, 0>`", "The point at the image centre; must differ from `position`."},
     {"up", "vector", "`<0, 1, 0>`", "Which way is up in the image."},
-    {"fov", "number in (0, 180)", "`60`", "Perspective: field of view in degrees, across `fov_axis`."},
+    {"fov", "number in (0, 180)", "`60`", "Perspective: field of view in degrees, across `fov_axis`. POV-Ray's projections: their `angle`, up to 360 (default 90; spherical 360)."},
+    {"vertical_fov", "number in (0, 360]", "half of `fov`", "Spherical projection: the vertical sweep in degrees (POV-Ray's second angle; default 180 without `fov`)."},
     {"fov_axis", "string", "`\"horizontal\"`", "\"horizontal\" or \"vertical\": which side `fov` spans."},
     {"handedness", "string", "`\"left\"`", "\"left\" or \"right\" (OpenGL's, the courses')."},
     {"view_width", "number > 0", "`4`", "Orthographic: width of the view in scene units."},

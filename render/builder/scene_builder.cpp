@@ -304,16 +304,30 @@ void SceneBuilder::settings(ParamSet& ps) {
 
 void SceneBuilder::camera(ParamSet& ps) {
   CameraDesc& c = scene_.camera;
-  std::string proj = ps.string("projection", c.projection == Projection::Perspective ? "perspective" : "orthographic");
-  if (proj == "perspective")
-    c.projection = Projection::Perspective;
-  else if (proj == "orthographic")
-    c.projection = Projection::Orthographic;
-  else
-    throw SceneError(
-        loc_of(ps, "projection"),
-        fmt::format("property 'projection' of camera must be \"perspective\" or \"orthographic\", got \"{}\"", proj));
+  const std::string proj = ps.string("projection", projection_name(c.projection));
+  bool known = false;
+  for (int i = 0; i < static_cast<int>(std::size(kProjectionNames)); ++i)
+    if (proj == kProjectionNames[i]) c.projection = static_cast<Projection>(i), known = true;
+  if (!known)
+    throw SceneError(loc_of(ps, "projection"),
+                     fmt::format("property 'projection' of camera must be \"perspective\", \"orthographic\" or one of "
+                                 "POV-Ray's \"fisheye\", \"ultra_wide_angle\", \"omnimax\", \"panoramic\", "
+                                 "\"cylinder1\" to \"cylinder4\", \"spherical\"; got \"{}\"",
+                                 proj));
   c.position = ps.vec3("position", c.position);
+  if (pov_projection(c.projection)) {
+    // POV-Ray's angle: its default 90 (the spherical camera's 360 by 180, or half the given
+    // horizontal sweep upwards and downwards).
+    const bool spherical = c.projection == Projection::Spherical;
+    c.fov = ps.number("fov", spherical ? 360.0 : 90.0);
+    require(ps, "fov", c.fov > 0 && c.fov <= 360.0, "between 0 and 360 (POV-Ray's angle)", c.fov);
+    c.vertical_fov = ps.number("vertical_fov", ps.has("fov") ? c.fov / 2 : 180.0);
+    require(ps, "vertical_fov", c.vertical_fov > 0 && c.vertical_fov <= 360.0, "between 0 and 360", c.vertical_fov);
+    if (!spherical && ps.has("vertical_fov"))
+      throw SceneError(loc_of(ps, "vertical_fov"), "property 'vertical_fov' of camera applies to the spherical projection");
+  } else if (ps.has("vertical_fov")) {
+    throw SceneError(loc_of(ps, "vertical_fov"), "property 'vertical_fov' of camera applies to the spherical projection");
+  }
   if (ps.has("direction")) {
     given_vectors_camera(ps, c);
     return;
@@ -325,7 +339,7 @@ void SceneBuilder::camera(ParamSet& ps) {
   c.given_vectors = false;
   c.look_at = ps.vec3("look_at", c.look_at);
   c.up = direction(ps, "up", ps.vec3("up", c.up));
-  c.fov = ps.number("fov", c.fov);
+  if (!pov_projection(c.projection)) c.fov = ps.number("fov", c.fov);
   std::string axis = ps.string("fov_axis", c.fov_vertical ? "vertical" : "horizontal");
   if (axis != "horizontal" && axis != "vertical")
     throw SceneError(loc_of(ps, "fov_axis"),
@@ -336,7 +350,8 @@ void SceneBuilder::camera(ParamSet& ps) {
     throw SceneError(loc_of(ps, "handedness"),
                      fmt::format("property 'handedness' of camera must be \"left\" or \"right\", got \"{}\"", hand));
   c.right_handed = hand == "right";
-  require(ps, "fov", c.fov > 0 && c.fov < kMaxFovDegrees, "between 0 and 180 (exclusive)", c.fov);
+  if (!pov_projection(c.projection))
+    require(ps, "fov", c.fov > 0 && c.fov < kMaxFovDegrees, "between 0 and 180 (exclusive)", c.fov);
   c.view_width = positive(ps, "view_width", ps.number("view_width", c.view_width));
   c.aperture = non_negative(ps, "aperture", ps.number("aperture", c.aperture));
   c.focus_distance = non_negative(ps, "focus_distance", ps.number("focus_distance", c.focus_distance));
@@ -354,7 +369,7 @@ void SceneBuilder::camera(ParamSet& ps) {
 // so a scene says one thing.
 void SceneBuilder::given_vectors_camera(ParamSet& ps, CameraDesc& c) {
   for (std::string_view name : {"look_at", "fov", "fov_axis", "handedness", "view_width"})
-    if (ps.has(name))
+    if (ps.has(name) && !(name == "fov" && pov_projection(c.projection)))  // POV-Ray's angle
       throw SceneError(loc_of(ps, name),
                        fmt::format("property '{}' of camera does not apply with 'direction': the image plane is "
                                    "direction + x·right + y·up as given (their lengths set the view); "

@@ -159,12 +159,11 @@ void print_summary(std::ostream& out, const SceneDesc& scene, const SceneSummary
   const CameraDesc& c = scene.camera;
   if (c.given_vectors)
     out << fmt::format("camera:     {} at {}, direction {} right {} up {} (as given)\n",
-                       c.projection == Projection::Perspective ? "perspective" : "orthographic", vec(c.position),
-                       vec(c.direction), vec(c.right), vec(c.up));
+                       projection_name(c.projection), vec(c.position), vec(c.direction), vec(c.right), vec(c.up));
   else
     out << fmt::format("camera:     {}{} at {} looking at {}, {}\n",
-                       c.projection == Projection::Perspective ? "perspective" : "orthographic",
-                       scene.has_camera ? "" : " (default)", vec(c.position), vec(c.look_at),
+                       projection_name(c.projection), scene.has_camera ? "" : " (default)", vec(c.position),
+                       vec(c.look_at),
                        c.projection == Projection::Perspective ? fmt::format("fov {}", num(c.fov))
                                                                : fmt::format("view width {}", num(c.view_width)));
   const Settings& st = scene.settings;

@@ -387,7 +387,19 @@ struct LightDesc {
 };
 
 // ---- camera and settings ----------------------------------------------------------------
-enum class Projection : uint8_t { Perspective, Orthographic };
+// Perspective and orthographic, then POV-Ray's other camera types (render/sample/camera.cpp):
+// each maps the image to directions (or origins) its own way from the camera's direction, right
+// and up, with `fov` as POV-Ray's `angle`.
+enum class Projection : uint8_t {
+  Perspective, Orthographic, Fisheye, UltraWideAngle, Omnimax, Panoramic, Cylinder1, Cylinder2, Cylinder3,
+  Cylinder4, Spherical
+};
+inline constexpr const char* kProjectionNames[] = {"perspective", "orthographic", "fisheye", "ultra_wide_angle",
+                                                   "omnimax", "panoramic", "cylinder1", "cylinder2", "cylinder3",
+                                                   "cylinder4", "spherical"};
+inline const char* projection_name(Projection p) { return kProjectionNames[static_cast<int>(p)]; }
+// POV-Ray's camera types beyond perspective and orthographic.
+inline bool pov_projection(Projection p) { return p > Projection::Orthographic; }
 struct CameraDesc {
   Projection projection = Projection::Perspective;
   Vec3 position{0, 0, -5};
@@ -397,6 +409,10 @@ struct CameraDesc {
   bool fov_vertical = false;       // fov spans the image's height instead of its width
   bool right_handed = false;       // right = cross(forward, up): +x to the left seen from -z
   double view_width = 4.0;         // orthographic: width of the view in scene units
+  // POV-Ray's camera types (pov_projection): `fov` is POV-Ray's `angle` (the fisheye's circle,
+  // the ultra wide angle's and cylinders' sweep, the spherical camera's horizontal sweep; up to
+  // 360), and the spherical camera's vertical sweep is `vertical_fov` (up to 180).
+  double vertical_fov = 180.0;
   double aperture = 0.0;           // > 0: depth of field (lens diameter)
   double focus_distance = 0.0;     // 0: distance to look_at
   // POV-Ray's camera: with `direction` given, the image plane is direction + x·right + y·up

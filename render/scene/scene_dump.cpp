@@ -198,7 +198,7 @@ void SceneDesc::dump(std::ostream& out) const {
   const CameraDesc& c = camera;
   out << fmt::format("camera{} {} position {} look_at {} up {} fov {} view_width {} aperture {} focus_distance {}{}{}\n",
                      has_camera ? "" : " (default)",
-                     c.projection == Projection::Perspective ? "perspective" : "orthographic", vec(c.position),
+                     projection_name(c.projection), vec(c.position),
                      vec(c.look_at), vec(c.up), num(c.fov), num(c.view_width), num(c.aperture), num(c.focus_distance),
                      c.fov_vertical ? " fov_axis vertical" : "", c.right_handed ? " handedness right" : "");
   if (c.given_vectors)  // appended, so the dumps of look_at cameras stay as they were
