@@ -135,12 +135,14 @@ Item Reader::directive() {
       e->kind = Expr::Name;
       e->loc = peek().loc;
       e->text = expect_name("a name");
-      if (accept("[")) {  // #ifdef(A[i]): the element; read and drop the index
-        expr();
+      ExprPtr index;
+      if (accept("[")) {  // #ifdef(A[i]): whether that element has been given a value
+        index = expr();
         expect("]", "to close the index");
       }
       expect(")", "to close '#" + d + "'");
       it.args.push_back(e);
+      if (index) it.args.push_back(index);
       it.ifdef = true;
       it.negate = d == "ifndef";
     }

@@ -382,7 +382,7 @@ Text Translator::expr(const Expr& e) {
         return Text{s + "]", Type::List};
       }
       if (e.text == "multi") {
-        // array[n][m]: lists of lists of zeros (POV-Ray's elements start undefined).
+        // array[n][m]: lists of lists of none (POV-Ray's elements start undefined).
         helpers_.insert("pov_array");
         std::string sizes;
         for (const ExprPtr& a : e.args) sizes += (sizes.empty() ? "" : ", ") + value(*a);
@@ -390,11 +390,12 @@ Text Translator::expr(const Expr& e) {
       }
       double n;
       if (literal_number(*e.args[0], n) && n >= 0 && n <= 10000) {
+        // Elements without a value are none (#ifdef(A[i]) asks; reading one is POV-Ray's error too).
         std::string s = "[";
-        for (int i = 0; i < static_cast<int>(n); ++i) s += i ? ", 0" : "0";
+        for (int i = 0; i < static_cast<int>(n); ++i) s += i ? ", none" : "none";
         return Text{s + "]", Type::List};
       }
-      // A computed size: a list of that many zeros, made when the scene runs.
+      // A computed size: a list of that many nones, made when the scene runs.
       helpers_.insert("pov_array");
       return Text{"pov_array([" + value(*e.args[0]) + "])", Type::List, 11};
     }

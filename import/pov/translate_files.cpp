@@ -320,10 +320,11 @@ PovResult import_pov(const std::string& text, const PovOptions& options) {
   }
   if (t.helpers_.count("pov_array")) {
     out.blank();
-    out.line("// POV-Ray's array[n][m]...: lists (of lists) of zeros; an element changes with with_item.");
+    out.line("// POV-Ray's array[n][m]...: lists (of lists) of none, an element without a value (as in POV-Ray,");
+    out.line("// where reading one is an error); an element changes with with_item.");
     out.line("macro pov_array(sizes, k = 0) {");
     out.line("    let a = []");
-    out.line("    for i in 0 .. floor(sizes[k]) { a += [select(k + 1 < len(sizes), pov_array(sizes, k + 1), 0)] }");
+    out.line("    for i in 0 .. floor(sizes[k]) { a += [select(k + 1 < len(sizes), pov_array(sizes, k + 1), none)] }");
     out.line("    return a");
     out.line("}");
   }
