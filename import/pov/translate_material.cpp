@@ -128,9 +128,10 @@ std::string Translator::pigment_value(const Block& b) {
 }
 
 bool Translator::pigment_pattern(const std::string& k) {
-  static const std::set<std::string> patterns = {"bozo", "spotted", "granite", "marble", "wood", "agate", "onion",
-                                                 "leopard", "wrinkles", "crackle", "cells", "bumps", "dents",
-                                                 "ripples", "waves", "gradient"};
+  static const std::set<std::string> patterns = {"bozo",     "spotted", "granite", "marble",  "wood",    "agate",
+                                                 "onion",    "leopard", "wrinkles", "crackle", "cells",   "bumps",
+                                                 "dents",    "ripples", "waves",   "gradient", "radial", "spiral1",
+                                                 "spiral2",  "boxed",   "cylindrical", "planar", "spherical"};
   return patterns.count(k) > 0;
 }
 
@@ -141,8 +142,8 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
   std::string named_pattern;  // `pigment { P_WoodGrain1A color_map { ... } }`: a declared pigment
   double filter = 0, transmit = 0;
   static const std::set<std::string> unsupported_patterns = {
-      "brick", "hexagon", "spiral1", "spiral2", "quilted", "facets", "average", "slope", "radial", "mandel",
-      "julia", "magnet", "planar", "spherical", "cylindrical", "boxed", "toroidal", "density_file", "object",
+      "brick", "hexagon", "quilted", "facets", "average", "slope", "mandel",
+      "julia", "magnet", "toroidal", "density_file", "object",
       "pigment_pattern", "image_pattern", "tiling", "function", "cubic", "square", "triangular"};
   for (const Item& it : b.items) {
     if (it.kind == Item::Value) {
@@ -217,6 +218,7 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
           }
           pattern_props.push_back("axis = " + axis);
         }
+        if ((k == "spiral1" || k == "spiral2") && !it.args.empty()) pattern_props.push_back("arms = " + value(*it.args[0]));
         continue;
       }
       if (unsupported_patterns.count(k)) {
@@ -517,7 +519,8 @@ void Translator::interior(const Block& b, MaterialProps& m) {
 void Translator::normal(const Block& b, MaterialProps& m) {
   static const std::set<std::string> patterns = {"bumps", "dents", "ripples", "waves", "wrinkles", "granite",
                                                  "marble", "wood", "agate", "bozo", "spotted", "crackle", "cells",
-                                                 "leopard", "onion", "gradient"};
+                                                 "leopard", "onion", "gradient", "radial", "boxed", "cylindrical",
+                                                 "planar", "spherical"};
   std::string pattern, amount = "0.5";
   std::vector<std::string> props, xforms;
   for (const Item& it : b.items) {

@@ -22,7 +22,9 @@ constexpr PatternKindName kPatterns[] = {
     {"onion", PatternKind::Onion},       {"leopard", PatternKind::Leopard},   {"wrinkles", PatternKind::Wrinkles},
     {"crackle", PatternKind::Crackle},   {"cells", PatternKind::Cells},       {"bumps", PatternKind::Bumps},
     {"dents", PatternKind::Dents},       {"ripples", PatternKind::Ripples},   {"waves", PatternKind::Waves},
-    {"pattern", PatternKind::Function},
+    {"pattern", PatternKind::Function},  {"radial", PatternKind::Radial},     {"spiral1", PatternKind::Spiral1},
+    {"spiral2", PatternKind::Spiral2},   {"boxed", PatternKind::Boxed},       {"cylindrical", PatternKind::Cylindrical},
+    {"planar", PatternKind::Planar},     {"spherical", PatternKind::Spherical},
 };
 
 struct WaveName {
@@ -41,6 +43,7 @@ std::vector<std::string_view> names_for(PatternKind kind) {
   if (kind == PatternKind::Agate) names.push_back("agate_turb");
   if (kind == PatternKind::Function) names.push_back("function");
   if (kind == PatternKind::Gradient) names.push_back("axis");
+  if (kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2) names.push_back("arms");
   return names;
 }
 
@@ -84,8 +87,10 @@ void build_pattern_texture(std::string_view kind, ParamSet& ps, TextureDesc& t) 
   const std::vector<std::string_view> valid = names_for(d.kind);
   ps.set_valid_names(&valid);
 
-  // Marble and wood are triangle waves in POV-Ray; a user function's values are clamped.
-  d.wave = d.kind == PatternKind::Marble || d.kind == PatternKind::Wood ? WaveKind::Triangle
+  // Marble, wood and the spirals are triangle waves in POV-Ray; a user function's values are clamped.
+  d.wave = d.kind == PatternKind::Marble || d.kind == PatternKind::Wood || d.kind == PatternKind::Spiral1 ||
+                   d.kind == PatternKind::Spiral2
+               ? WaveKind::Triangle
            : d.kind == PatternKind::Function                           ? WaveKind::Clamp
                                                                        : WaveKind::Ramp;
   if (ps.has("wave")) {
@@ -115,6 +120,7 @@ void build_pattern_texture(std::string_view kind, ParamSet& ps, TextureDesc& t) 
   if (d.octaves < 1 || d.octaves > pattern::kMaxOctaves)
     fail_at(ps, "octaves", fmt::format("property 'octaves' of {} must be from 1 to {}, got {}", kind,
                                        pattern::kMaxOctaves, d.octaves));
+  if (d.kind == PatternKind::Spiral1 || d.kind == PatternKind::Spiral2) d.arms = finite_number(ps, "arms", d.arms);
   d.omega = finite_number(ps, "omega", d.omega);
   d.lambda = finite_number(ps, "lambda", d.lambda);
   d.frequency = finite_number(ps, "frequency", d.frequency);

@@ -62,7 +62,9 @@ constexpr KindInfo kKinds[] = {
     {"onion", BlockCategory::Texture}, {"leopard", BlockCategory::Texture}, {"wrinkles", BlockCategory::Texture},
     {"crackle", BlockCategory::Texture}, {"cells", BlockCategory::Texture}, {"bumps", BlockCategory::Texture},
     {"dents", BlockCategory::Texture}, {"ripples", BlockCategory::Texture}, {"waves", BlockCategory::Texture},
-    {"pattern", BlockCategory::Texture},
+    {"pattern", BlockCategory::Texture}, {"radial", BlockCategory::Texture}, {"spiral1", BlockCategory::Texture},
+    {"spiral2", BlockCategory::Texture}, {"boxed", BlockCategory::Texture}, {"cylindrical", BlockCategory::Texture},
+    {"planar", BlockCategory::Texture}, {"spherical", BlockCategory::Texture},
     {"", BlockCategory::Shape},  // here: every shape kind (kShapeInfos), in ShapeGeometry's order
     {"point_light", BlockCategory::Light},
     {"spot_light", BlockCategory::Light},

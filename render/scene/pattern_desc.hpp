@@ -19,6 +19,9 @@ enum class PatternKind : uint8_t {
   Bozo, Spotted, Granite, Marble, Wood, Agate, Onion, Leopard, Wrinkles, Crackle, Cells,
   Bumps, Dents, Ripples, Waves, Function,
   Gradient,   // `gradient` with a color_map: the point's coordinate along `axis` (POV-Ray's gradient)
+  // POV-Ray's geometric patterns: the angle around y, spirals around z (`arms` of them), and
+  // the distance-based boxed, cylindrical, planar and spherical (1 at the centre, 0 from 1 out).
+  Radial, Spiral1, Spiral2, Boxed, Cylindrical, Planar, Spherical,
 };
 
 // How the pattern's value (times frequency, plus phase) becomes the color map's index:
@@ -50,6 +53,7 @@ struct PatternDesc {
   double phase = 0.0;
   double agate_turb = 1.0;   // agate's own turbulence scale (POV-Ray's agate_turb)
   int axis = 1;              // Gradient: 0 = x, 1 = y, 2 = z
+  double arms = 1.0;         // Spiral1, Spiral2: how many arms wind around the axis
   // Ascending values; below the first entry the first color, above the last the last,
   // linear interpolation between. Never empty once built (the builder supplies color1→color2).
   std::vector<ColorMapEntry> color_map;

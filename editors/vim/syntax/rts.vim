@@ -13,7 +13,7 @@ syn keyword rtsConstant none clock frame frames
 
 " Block kinds.
 syn keyword rtsBlock settings camera material checker stripes gradient image_texture latlong_map cube_map sky_sphere
-syn keyword rtsBlock bozo spotted granite marble wood agate onion leopard wrinkles crackle cells bumps dents
+syn keyword rtsBlock bozo spotted granite marble wood agate onion leopard wrinkles crackle cells bumps dents radial spiral1 spiral2 boxed cylindrical planar spherical
 syn keyword rtsBlock ripples waves pattern
 syn keyword rtsBlock box cone cylinder disc mesh plane quad sphere superellipsoid torus triangle isosurface blob height_field sor lathe prism poly
 syn keyword rtsBlock point_light spot_light directional_light area_light group union intersection difference merge clip text

@@ -77,10 +77,21 @@ double waves(const glm::dvec3& p, double frequency, double phase, bool height) {
 
 }  // namespace
 
+namespace {
+// POV-Ray's distance patterns: 1 at the centre falling to 0 at distance 1, and 0 beyond (a
+// negative distance cannot occur; POV-Ray's 1 for it is kept).
+double clip_density(double r) { return r < 0.0 ? 1.0 : r > 1.0 ? 0.0 : 1.0 - r; }
+// 0 at whole numbers, 1 half-way: POV-Ray's triangle wave.
+double triangle_wave(double v) {
+  const double f = v - std::floor(v);
+  return f <= 0.5 ? 2.0 * f : 2.0 - 2.0 * f;
+}
+}  // namespace
+
 double raw_value(const PatternDesc& d, const glm::dvec3& q, bool height) {
   glm::dvec3 p = q;
   const bool warp = d.turbulence != glm::dvec3(0.0) && d.kind != PatternKind::Marble &&
-                    d.kind != PatternKind::Agate;
+                    d.kind != PatternKind::Agate && d.kind != PatternKind::Spiral1 && d.kind != PatternKind::Spiral2;
   if (warp) p += d.turbulence * vector_turbulence(p, d.octaves, d.lambda, d.omega);
   switch (d.kind) {
     case PatternKind::Bozo:
@@ -123,6 +134,27 @@ double raw_value(const PatternDesc& d, const glm::dvec3& q, bool height) {
     case PatternKind::Waves: return waves(p, d.frequency, d.phase, height);
     case PatternKind::Function: return d.function ? d.function->eval(p) : 0.0;
     case PatternKind::Gradient: return p[d.axis < 0 || d.axis > 2 ? 1 : d.axis];
+    case PatternKind::Radial:
+      // A quarter turn from the +x side, once around y (POV-Ray's radial; on the axis 1/4).
+      if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+      return 0.25 + (std::atan2(p.x, p.z) + std::numbers::pi) / kTwoPi;
+    case PatternKind::Spiral1:
+    case PatternKind::Spiral2: {
+      // Around the z axis: the distance plus the arms' share of the angle from -y, climbing
+      // with z; turbulence (its x) added inside, as marble's. Spiral2 folds both (two crossed
+      // families of arms).
+      const double rad = std::sqrt(p.x * p.x + p.y * p.y);
+      const double phi = rad == 0.0 ? 0.0 : p.x < 0.0 ? 1.5 * std::numbers::pi - std::asin(p.y / rad)
+                                                       : 0.5 * std::numbers::pi + std::asin(p.y / rad);
+      const double turb = d.turbulence.x != 0.0 ? d.turbulence.x * pov_turbulence(p, d.octaves, d.lambda, d.omega) : 0.0;
+      const double v = p.z + rad + d.arms * phi / kTwoPi + turb;
+      if (d.kind == PatternKind::Spiral1) return v;
+      return triangle_wave(rad) + triangle_wave(v);
+    }
+    case PatternKind::Boxed: return clip_density(std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}));
+    case PatternKind::Cylindrical: return clip_density(std::sqrt(p.x * p.x + p.z * p.z));
+    case PatternKind::Planar: return clip_density(std::fabs(p.y));
+    case PatternKind::Spherical: return clip_density(glm::length(p));
   }
   return 0.0;
 }
