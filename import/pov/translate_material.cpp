@@ -402,8 +402,8 @@ void Translator::finish(const Block& b, MaterialProps& m) {
       if (!r.empty()) m.set("reflect", r);
       for (const Item& v : it.block->items) {
         if (v.kind == Item::Keyword && v.name == "fresnel") m.set("fresnel", "true");
-        if (v.kind == Item::Keyword && v.name == "metallic")
-          unsupported(v.loc, "reflection { metallic }", "a reflect colour: rts's reflection is not tinted by angle", false);
+        if (v.kind == Item::Keyword && v.name == "metallic")  // `metallic` alone is 1
+          m.set("reflect_metallic", v.args.empty() ? "1" : value(*v.args[0]));
       }
       continue;
     }

@@ -84,6 +84,7 @@ constexpr PropertyInfo kMaterial[] = {
     {"highlight", "string", "`\"phong\"`", "The highlight's lobe: \"phong\" (R·V) or \"blinn\" (N·H)."},
     {"brilliance", "number ≥ 0", "`1`", "Whitted: the diffuse term is (N·L)^brilliance, a steeper fall-off above 1 (POV-Ray's brilliance; path mode: Lambert)."},
     {"metallic", "number ≥ 0", "`0`", "Whitted: tints the highlight with the surface color, less at grazing light (POV-Ray's metallic; 1 in full)."},
+    {"reflect_metallic", "number ≥ 0", "`0`", "Whitted: tints the reflection with the surface color, less at grazing angles (POV-Ray's reflection { metallic }; 1 in full)."},
     {"media_absorption", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light absorbed per unit length (POV-Ray's media absorption)."},
     {"media_scattering", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light scattered per unit length (POV-Ray's scattering color)."},
     {"media_emission", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light given off per unit length."},

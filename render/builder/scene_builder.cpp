@@ -583,6 +583,7 @@ MaterialId SceneBuilder::ordinary_material(ParamSet& ps, const MaterialDesc* sta
   if (ps.has("highlight")) m.blinn = second_word(ps, "highlight", "phong", "blinn");
   m.brilliance = non_negative(ps, "brilliance", ps.number("brilliance", m.brilliance));
   m.metallic = non_negative(ps, "metallic", ps.number("metallic", m.metallic));
+  m.reflect_metallic = non_negative(ps, "reflect_metallic", ps.number("reflect_metallic", m.reflect_metallic));
   if (!channel_texture("reflect", m.reflect_texture)) {
     m.reflect = ps.color("reflect", m.reflect);
     non_negative_color(ps, "reflect", m.reflect);

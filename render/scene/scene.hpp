@@ -117,6 +117,9 @@ struct MaterialDesc {
   // (render/shade/material.hpp).
   double brilliance = 1.0;
   double metallic = 0.0;
+  // POV-Ray's reflection { metallic }, Whitted only: the reflection tinted by the surface
+  // colour as `metallic` tints the highlight, by the viewing angle (render/shade/material.hpp).
+  double reflect_metallic = 0.0;
   Color reflect{0.0};          // mirror reflection weight per channel
   Color transmit{0.0};         // transmission weight per channel (also filters shadows)
   double ior = 1.0;            // absolute index of the inside (the medium stack pairs media)

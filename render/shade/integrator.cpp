@@ -55,7 +55,8 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
   // Shadow rays through glass whose `transmit` is a texture need the hit point, which the
   // specialised one-pass crossing test does not keep: such scenes take the generic path.
   bool textured_transmit = false;
-  bool colored_ambient = false;  // a placed material's ambient is a colour (emitted_and_ambient)
+  // A placed material's ambient is a colour (emitted_and_ambient), or its reflection metallic.
+  bool pov_finish_extras = false;
   static const std::vector<CompiledMedium> kNoMedia;
   media_ = media ? media : &kNoMedia;
   atmosphere_ = settings.medium < media_->size() ? settings.medium : kNoId;
@@ -73,14 +74,14 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
       if (m.transmit_texture != kNoId || (chosen && transmits(m))) textured_transmit = true;
       if (m.medium < media_->size() && transmits(m)) media_on_ = true;
       if (passes_through(m)) has_pass_through_ = true;
-      if (!(m.ambient_color == Color(1.0))) colored_ambient = true;
+      if (!(m.ambient_color == Color(1.0)) || m.reflect_metallic > 0.0) pov_finish_extras = true;
     });
   }
   // Media scenes, and scenes with surfaces light passes through unchanged, take the generic
   // path: shadow rays walk surface by surface to know which medium each stretch is in, and
   // the specialised paths carry none of this (leave-out: a scene without media pays nothing).
   bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_ || has_pass_through_ ||
-                 layers_on_ || colored_ambient;
+                 layers_on_ || pov_finish_extras;
   uint32_t skipped = 0;
   for (const CompiledLight& l : lights) {
     // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
@@ -456,7 +457,11 @@ Rgb Integrator::surface(const PendingRay& pr, const WorldHit& hit, const Materia
     Vec3 dir = reflected_direction(m, incident + 2.0 * cos_i * n, ng, path.sampler);
     ++path.counters.reflection;
     Ray r{offset_ray_origin(hit.point, ng, dir, hit.error), dir};
-    pending.push_back(PendingRay{r, saturate(weight * kr), pr.depth + 1, pr.media, pr.passes});
+    // POV-Ray's reflection { metallic } (only scenes with it, which take the generic path).
+    Rgb reflected = weight * kr;
+    if constexpr (kMedia)
+      if (m.reflect_metallic > 0.0) reflected *= metallic_reflection(m, base, cos_i);
+    pending.push_back(PendingRay{r, saturate(reflected), pr.depth + 1, pr.media, pr.passes});
   }
   return color;
 }

@@ -110,6 +110,14 @@ inline Rgb phong(const MaterialDesc& m, const Rgb& diffuse_color, const Vec3& n,
   return shade;
 }
 
+// POV-Ray's reflection { metallic }: the reflection turned towards the surface colour by
+// metallic * (1 - F), F the same empirical curve of the viewing angle (cos_i = n · view).
+inline Rgb metallic_reflection(const MaterialDesc& m, const Rgb& surface, double cos_i) {
+  const double x = std::acos(std::clamp(cos_i, -1.0, 1.0)) / (0.5 * std::numbers::pi);
+  const double f = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
+  return Rgb(1.0) + m.reflect_metallic * (1.0 - f) * (surface - Rgb(1.0));
+}
+
 // The reflect and transmit weights of a hit, and the refracted direction when light passes.
 struct SpecularWeights {
   Rgb reflect{0.0}, transmit{0.0};
