@@ -34,11 +34,12 @@ const std::map<std::string, std::string>& standard_includes() {
   return m;
 }
 const std::set<std::string>& unshipped_includes() {
-  static const std::set<std::string> s = {"stars.inc",
-                                          "shapes_old.inc", "chars.inc",
-                                          "skies.inc.old", "sunpos.inc", "screen.inc", "logo.inc", "rad_def.inc",
-                                          "glass_old.inc", "meshmaker.inc", "makegrass.inc", "stdcam.inc",
-                                          "stdinc.inc", "potions.inc", "fonts.inc"};
+  // POV-Ray's include files that neither map to rts's library nor translate as they are (macros
+  // the import cannot read, radiosity settings). The rest of its library folder (stars.inc,
+  // chars.inc, stdcam.inc, shapes_old.inc, sunpos.inc, screen.inc, stdinc.inc ...) is found
+  // last on the search path and translated as the user's own includes are.
+  static const std::set<std::string> s = {"skies.inc.old", "logo.inc",  "rad_def.inc", "glass_old.inc",
+                                          "meshmaker.inc", "makegrass.inc", "potions.inc", "fonts.inc"};
   return s;
 }
 

@@ -61,6 +61,17 @@ expect_exit 0 "metallic on/off (POV-Ray's booleans)" -- "$RTS" import "$TMP/meta
 expect_grep "$TMP/out" "metallic = 1" "metallic on is 1"
 expect_grep "$TMP/out" "metallic = 0 " "metallic off is 0"
 expect_grep "$TMP/out" "metallic = 0.4" "a number stays"
+# POV-Ray's library folder holds scene fragments as well as libraries rts maps (stdcam.inc: a
+# camera, a light and a floor): found on the search path (-I here, POV-Ray's folder last in
+# use) and translated beside the output as the user's own includes are.
+mkdir -p "$TMP/povlib" "$TMP/stdcam_out"
+printf 'camera { location <0, 1, -5> look_at 0 }\nlight_source { <20, 20, -25> rgb 1 }\nplane { y, 0 pigment { rgb 0.5 } }\n' \
+  > "$TMP/povlib/stdcam.inc"
+printf '#include "stdcam.inc"\nsphere { 0, 1 pigment { rgb 1 } }\n' > "$TMP/stdcam_scene.pov"
+expect_exit 0 "stdcam.inc from the library folder" -- "$RTS" import "$TMP/stdcam_scene.pov" -I "$TMP/povlib" -o "$TMP/stdcam_out/scene.rts"
+expect_grep "$TMP/stdcam_out/scene.rts" '^include "stdcam.rts"' "the fragment included"
+expect_grep "$TMP/stdcam_out/stdcam.rts" '^camera' "and translated beside it"
+if grep -q "warning" "$TMP/err"; then echo "FAIL: stdcam.inc gave warnings:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); fi
 printf 'global_settings { radiosity { count 100 } }\nsphere { 0, 1 }\n' > "$TMP/radiosity.pov"
 expect_exit 0 "radiosity maps to the path tracer" -- "$RTS" import "$TMP/radiosity.pov"
 expect_grep "$TMP/out" '^settings \{ integrator = "path" \}' "radiosity: integrator = path"
