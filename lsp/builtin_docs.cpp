@@ -37,7 +37,7 @@ constexpr BuiltinDoc kBuiltins[] = {
     {"select", "select(c, a, b)", "a when the bool c is true, else b (only the chosen one is evaluated)."},
     {"append", "append(xs, v, [more, ...])", "A new list: xs followed by the values (xs is unchanged)."},
     {"with_item", "with_item(xs, i, v)", "A new list: xs with item i (0-based) replaced by v (xs is unchanged)."},
-    {"str", "str(x)", "x as text."},
+    {"str", "str(x, width, decimals)", "x as text; with width and decimals as POV-Ray's str (printf's %W.Df: width < 0 pads with zeros; decimals < 0 is 6)."},
     {"format", "format(template, [args, ...])", "Text with each {} replaced by the next argument ({{ and }} for braces)."},
     {"print", "print([args, ...])", "Writes file:line:col: print: args to stderr."},
     {"assert", "assert(cond, [message])", "Stops with an error at the call unless cond is true."},

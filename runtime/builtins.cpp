@@ -171,7 +171,27 @@ Value with_item(BuiltinCall& c) {
   return Value::list(std::move(copy));
 }
 
-Value str_(BuiltinCall& c) { return Value::string(c.in.text_of(c.args[0], c.call.loc)); }
+// str(x), or with a width and decimals as POV-Ray's str(x, width, decimals) (C's printf
+// "%W.Df"): width > 0 pads with spaces, < 0 with zeros to |width|; decimals < 0 is 6.
+Value str_(BuiltinCall& c) {
+  if (c.argc == 1) return Value::string(c.in.text_of(c.args[0], c.call.loc));
+  const double x = num(c, 0);
+  const double w = c.argc > 1 ? num(c, 1) : 0.0, d = c.argc > 2 ? num(c, 2) : -1.0;
+  if (!(std::fabs(w) <= 1000.0) || !(d <= 100.0))
+    c.in.fail(arg_loc(c, std::fabs(w) <= 1000.0 ? 2 : 1), "str(x, width, decimals): width from -1000 to 1000, decimals at most 100");
+  const int width = static_cast<int>(w), decimals = d < 0 ? 6 : static_cast<int>(d);
+  std::string out = std::isfinite(x) ? fmt::format("{:.{}f}", x, decimals) : fmt::format("{}", x);
+  const std::size_t want = static_cast<std::size_t>(std::abs(width));
+  if (out.size() < want) {
+    if (width > 0 || !std::isfinite(x)) {
+      out.insert(0, want - out.size(), ' ');
+    } else {
+      const std::size_t at = out[0] == '-' ? 1 : 0;  // zeros after the sign, as printf's
+      out.insert(at, want - out.size(), '0');
+    }
+  }
+  return Value::string(std::move(out));
+}
 
 Value format(BuiltinCall& c) {
   const std::string& f = str(c, 0);
@@ -336,7 +356,7 @@ const std::vector<Builtin>& builtin_table() {
       {"select", 3, 3, select, true},
       {"append", 2, -1, append},
       {"with_item", 3, 3, with_item},
-      {"str", 1, 1, str_},
+      {"str", 1, 3, str_},
       {"format", 1, -1, format},
       {"print", 0, -1, print},
       {"assert", 1, 2, assert_},

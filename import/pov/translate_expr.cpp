@@ -435,7 +435,11 @@ Text Translator::call(const Expr& e) {
       for (std::size_t i = 0; i < a.size(); ++i) s += (i ? " + " : "") + a[i].s;
       return Text{s, Type::String, 7};
     }
-    if (f == "str") return Text{"str(" + (a.empty() ? std::string() : a[0].s) + ")", Type::String, 11};
+    if (f == "str") {  // POV-Ray's str(x, width, decimals): rts's str takes the same three
+      std::string s;
+      for (const Text& t : a) s += (s.empty() ? "" : ", ") + t.s;
+      return Text{"str(" + s + ")", Type::String, 11};
+    }
     return Text{it->second.first + "(" + args() + ")", it->second.second, 11};
   }
   if (f == "log" && a.size() == 1) return Text{"log(" + a[0].s + ") / log(10)", Type::Float, 8};

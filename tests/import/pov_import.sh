@@ -72,6 +72,9 @@ expect_exit 0 "stdcam.inc from the library folder" -- "$RTS" import "$TMP/stdcam
 expect_grep "$TMP/stdcam_out/scene.rts" '^include "stdcam.rts"' "the fragment included"
 expect_grep "$TMP/stdcam_out/stdcam.rts" '^camera' "and translated beside it"
 if grep -q "warning" "$TMP/err"; then echo "FAIL: stdcam.inc gave warnings:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); fi
+printf '#declare S = concat("A=", str(1/3, 0, 2), str(2, -4, 0));\n#debug S\n' > "$TMP/str.pov"
+expect_exit 0 "str with a width and decimals" -- "$RTS" import "$TMP/str.pov"
+expect_grep "$TMP/out" 'str\(1 / 3, 0, 2\)' "str keeps its width and decimals"
 printf 'global_settings { radiosity { count 100 } }\nsphere { 0, 1 }\n' > "$TMP/radiosity.pov"
 expect_exit 0 "radiosity maps to the path tracer" -- "$RTS" import "$TMP/radiosity.pov"
 expect_grep "$TMP/out" '^settings \{ integrator = "path" \}' "radiosity: integrator = path"

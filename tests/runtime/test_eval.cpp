@@ -127,6 +127,11 @@ TEST_CASE("builtins", "[eval]") {
   CHECK(probe1("probe(len([1, 2, 3]) + len(\"abcd\") + len(0 .. 10 step 2))") == 12);
   CHECK(probe1("probe(len(format(\"{} and {}\", 1, <1,2,3>)))") == std::string("1 and <1, 2, 3>").size());
   CHECK(probe1("probe(len(str(0.5)))") == 3);
+  // POV-Ray's str(x, width, decimals): printf's %W.Df, a negative width padding with zeros.
+  CHECK(probe1("probe(len(str(0, 0, 2)))") == 4);                              // "0.00"
+  CHECK(probe1("probe(len(str(3.14159, 8, 3)))") == 8);                        // "   3.142"
+  CHECK(probe1("assert(str(-2.5, -7, 1) == \"-0002.5\", \"zeros after the sign\")  probe(1)") == 1);
+  CHECK(probe1("assert(str(1, 0, -1) == \"1.000000\", \"six decimals\")  probe(1)") == 1);
   CHECK(probe1("probe(pow(2, 3) + exp(0) + log(1))") == 9);
   CHECK(probe1("let v = vec(1, 2, 3)  probe(v.z)") == 3);
   CHECK(probe1("assert(1 < 2, \"fine\")  probe(1)") == 1);
