@@ -416,10 +416,15 @@ void Translator::place_block(Writer& w, const Block& b) {
   }
   if (k == "fog") {
     std::string props;
+    double filter = 0, transmit = 0;  // the colour's: POV-Ray's fog tint and least transmittance
+    auto colour = [&](const Expr& e) {
+      std::string c = color_value(e, &filter, &transmit);
+      return "  fog_color = " + c;
+    };
     for (const Item& it : b.items) {
       if (it.kind == Item::Keyword && !it.args.empty()) {
         if (it.name == "distance") props += "  fog_distance = " + value(*it.args[0]);
-        else if (it.name == "color" || it.name == "colour") props += "  fog_color = " + color_value(*it.args[0]);
+        else if (it.name == "color" || it.name == "colour") props += colour(*it.args[0]);
         else if (it.name == "fog_offset") props += "  fog_offset = " + value(*it.args[0]);
         else if (it.name == "fog_alt") props += "  fog_altitude = " + value(*it.args[0]);
         else if (it.name == "turbulence") props += "  fog_turbulence = " + vector_value(*it.args[0]);
@@ -428,11 +433,13 @@ void Translator::place_block(Writer& w, const Block& b) {
         else if (it.name != "fog_type")
           unsupported(it.loc, it.name, "fog_distance, fog_color, fog_offset, fog_altitude, fog_turbulence", false);
       } else if (it.kind == Item::Value) {
-        props += "  fog_color = " + color_value(*it.args[0]);
+        props += colour(*it.args[0]);
       } else if (it.kind == Item::Nested) {
         unsupported(it.loc, it.block->kind, "constant or ground fog", false);
       }
     }
+    if (filter > 0) props += "  fog_filter = " + num(filter);
+    if (transmit > 0) props += "  fog_transmit = " + num(transmit);
     w.line("settings {" + props.substr(1) + " }");
     return;
   }

@@ -27,6 +27,8 @@ constexpr PropertyInfo kSettings[] = {
     {"light_falloff", "string", "`\"inverse_square\"`", "Path mode: \"attenuation\" makes point, spot and area lights fall off by their `attenuation`, as in Whitted mode and POV-Ray (not physical; `rts import` writes it)."},
     {"fog_distance", "number ≥ 0", "`0` (no fog)", "Constant fog: at this distance 37% of the light is left."},
     {"fog_color", "color", "`rgb(0)`", "The fog's colour."},
+    {"fog_filter", "number in [0, 1]", "`0`", "Light through the fog is tinted by its colour by this much (POV-Ray's fog colour filter): it keeps (1 - f) + f * fog_color."},
+    {"fog_transmit", "number in [0, 1]", "`0`", "The fog lets at least this much of the light through, however far (POV-Ray's fog colour transmit)."},
     {"fog_offset", "number", "`0`", "Ground fog: the height of its top."},
     {"fog_altitude", "number ≥ 0", "`0`", "Above 0: ground fog, thinning above `fog_offset`."},
     {"fog_turbulence", "number or vector ≥ 0", "`0` (none)", "Turbulent fog: scales the point where the noise is read (POV-Ray's fog turbulence)."},

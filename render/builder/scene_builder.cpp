@@ -238,6 +238,10 @@ void SceneBuilder::settings(ParamSet& ps) {
   require(ps, "fog_distance", s.fog_distance >= 0, ">= 0 (0: no fog)", s.fog_distance);
   s.fog_color = ps.color("fog_color", s.fog_color);
   non_negative_color(ps, "fog_color", s.fog_color);
+  s.fog_filter = ps.number("fog_filter", s.fog_filter);
+  require(ps, "fog_filter", s.fog_filter >= 0 && s.fog_filter <= 1, "from 0 to 1", s.fog_filter);
+  s.fog_transmit = ps.number("fog_transmit", s.fog_transmit);
+  require(ps, "fog_transmit", s.fog_transmit >= 0 && s.fog_transmit <= 1, "from 0 to 1", s.fog_transmit);
   s.fog_offset = ps.number("fog_offset", s.fog_offset);
   s.fog_altitude = ps.number("fog_altitude", s.fog_altitude);
   require(ps, "fog_altitude", s.fog_altitude >= 0, ">= 0 (0: constant fog)", s.fog_altitude);

@@ -462,6 +462,11 @@ struct Settings {
   // fog, thick below fog_offset and thinning above it.
   double fog_distance = 0.0;
   Color fog_color{0.0};
+  // POV-Ray's fog colour filter and transmit: light through the fog is tinted by fog_color by
+  // fog_filter (it keeps (1 - filter) + filter * fog_color of itself), and the fog lets at
+  // least fog_transmit of it through (Whitted; the path tracer reads the transmit alone).
+  double fog_filter = 0.0;
+  double fog_transmit = 0.0;
   double fog_offset = 0.0;
   double fog_altitude = 0.0;
   // Turbulent fog (POV-Ray's fog turbulence): non-zero in any component turns it on.

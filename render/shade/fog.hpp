@@ -30,10 +30,11 @@ struct Fog {
   double turb_depth = 0.5;
   int octaves = 6;
   double omega = 0.5, lambda = 2.0;
+  double least = 0.0;     // the transmittance never falls below it (POV-Ray's fog transmit)
 
   static Fog from(const Settings& s) {
-    return Fog{s.fog_distance, s.fog_offset, s.fog_altitude, s.fog_turbulence, s.fog_turb_depth, s.fog_octaves,
-               s.fog_omega, s.fog_lambda};
+    return Fog{s.fog_distance, s.fog_offset,  s.fog_altitude, s.fog_turbulence, s.fog_turb_depth,
+               s.fog_octaves,  s.fog_omega,   s.fog_lambda,   s.fog_transmit};
   }
 
   // Fraction of the light leaving origin + t * direction that reaches `origin` (t may be
@@ -43,7 +44,7 @@ struct Fog {
     const double s = t * len;  // path length
     double tau = optical_depth(origin, direction / len, s);
     if (turbulence != Vec3(0.0) && std::isfinite(s)) tau *= thinning(origin + (0.5 * t) * direction, s);
-    return std::exp(-tau);
+    return std::max(std::exp(-tau), least);
   }
 
   // The turbulent factor of a segment of length s whose middle is `middle`, in [0, 1].

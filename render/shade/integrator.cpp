@@ -81,7 +81,7 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
   // path: shadow rays walk surface by surface to know which medium each stretch is in, and
   // the specialised paths carry none of this (leave-out: a scene without media pays nothing).
   bool generic = (mask & trace_flags::kGeneric) != 0 || textured_transmit || media_on_ || has_pass_through_ ||
-                 layers_on_ || pov_finish_extras;
+                 layers_on_ || pov_finish_extras || settings.fog_filter > 0.0;
   uint32_t skipped = 0;
   for (const CompiledLight& l : lights) {
     // A light of power 0 adds nothing anywhere: leave it out, remembering what it would draw.
@@ -103,6 +103,9 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
     fog_on_ = true;
     fog_ = Fog::from(settings);
     fog_color_ = to_rgb(settings.fog_color);
+    // POV-Ray's fog filter tints what the fog lets through: the generic path (scenes with it).
+    fog_tint_ = Rgb(1.0 - settings.fog_filter) + settings.fog_filter * fog_color_;
+    fog_tinted_ = settings.fog_filter > 0.0;
   }
 }
 
@@ -342,6 +345,8 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
     const Rgb c = through_medium(background(ray.direction));
     if (!fog_on_) return c;
     double t = fog_.transmittance(ray.origin, ray.direction, std::numeric_limits<double>::infinity());
+    if constexpr (kMedia)
+      if (fog_tinted_) return t * (fog_tint_ * c) + (1.0 - t) * fog_color_;  // POV-Ray's fog filter
     return t * c + (1.0 - t) * fog_color_;
   }
   // What the fog between the ray's origin and the hit leaves of the light from the hit (1: no
@@ -349,6 +354,8 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
   const double fog_t = fog_on_ ? fog_.transmittance(ray.origin, ray.direction, hit.t) : 1.0;
   auto fogged = [&](const Rgb& c) {
     const Rgb seen = through_medium(c);
+    if constexpr (kMedia)
+      if (fog_tinted_) return fog_t * (fog_tint_ * seen) + (1.0 - fog_t) * fog_color_;  // POV-Ray's fog filter
     return fog_on_ ? fog_t * seen + (1.0 - fog_t) * fog_color_ : seen;
   };
   if constexpr (kMedia) {
@@ -433,6 +440,8 @@ Rgb Integrator::surface(const PendingRay& pr, const WorldHit& hit, const Materia
   // fog the weights are unchanged), and for a layer, its share.
   Rgb weight = kMedia ? pr.weight * fog_t * medium_t : pr.weight * fog_t;
   if constexpr (kLayer) weight *= layer;
+  if constexpr (kMedia)
+    if (fog_tinted_) weight *= fog_tint_;
 
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Interface f;

@@ -155,6 +155,8 @@ class Integrator {
   bool fog_on_ = false;
   Fog fog_;
   Rgb fog_color_{0.0};
+  Rgb fog_tint_{1.0};        // (1 - fog_filter) + fog_filter * fog_color
+  bool fog_tinted_ = false;  // fog_filter > 0: generic path only
   // Media: off (one test per ray) unless a placed material or the settings have one.
   const std::vector<CompiledMedium>* media_ = nullptr;
   bool media_on_ = false;
