@@ -428,7 +428,8 @@ Text Translator::call(const Expr& e) {
       {"vlength", {"length", Type::Float}}, {"vnormalize", {"normalize", Type::Vector}},
       {"vdot", {"dot", Type::Float}},      {"vcross", {"cross", Type::Vector}}, {"vrotate", {"vrotate", Type::Vector}},
       {"vaxis_rotate", {"vaxis_rotate", Type::Vector}}, {"rand", {"rand", Type::Float}},
-      {"seed", {"random", Type::Random}},  {"str", {"str", Type::String}},  {"concat", {"", Type::String}}};
+      {"seed", {"random", Type::Random}},  {"str", {"str", Type::String}},  {"concat", {"", Type::String}},
+      {"strlen", {"len", Type::Float}}};
   if (auto it = same.find(f); it != same.end()) {
     if (f == "concat") {
       std::string s;
