@@ -122,6 +122,13 @@ std::vector<std::string> Translator::transforms(const Item& it) {
 
 void Translator::object(Writer& w, const Block& b, const std::string& prefix, bool place) {
   const std::string& k = b.kind;
+  if (!blob_lists_.empty() && (k == "sphere" || k == "cylinder")) {
+    // A blob's component inside the loop that places it: appended to the blob's list.
+    bool sphere = true;
+    const std::string entry = blob_component(b, sphere);
+    w.line(fmt::format("{} += [{}]", sphere ? blob_lists_.back().spheres : blob_lists_.back().cylinders, entry));
+    return;
+  }
   if (is_unsupported_shape(k)) {
     auto [alt, planned] = shape_alternative(k);
     unsupported(b.loc, k, alt, planned);
@@ -156,7 +163,34 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   Block blob_rest;   // a blob without its components (they are in props)
   const Block* items_of = &b;
   if (k == "blob") {
-    blob_rest = blob_components(b, props);
+    // Components placed by loops (or conditions): the loops go before the blob, appending to
+    // two lists its spheres and cylinders then read.
+    bool looped = false;
+    for (const Item& it : b.items)
+      looped = looped || it.kind == Item::While || it.kind == Item::For || it.kind == Item::If ||
+               it.kind == Item::Switch;
+    if (looped) {
+      ++blob_list_count_;
+      BlobLists lists{fmt::format("pov_blob_spheres{}", blob_list_count_),
+                      fmt::format("pov_blob_cylinders{}", blob_list_count_)};
+      w.line(fmt::format("let {} = []  // the blob's components, placed by the loop below", lists.spheres));
+      w.line(fmt::format("let {} = []", lists.cylinders));
+      blob_lists_.push_back(lists);
+      for (const Item& it : b.items)
+        if (it.kind == Item::While || it.kind == Item::For || it.kind == Item::If || it.kind == Item::Switch ||
+            it.kind == Item::Declare)
+          item(w, it, false);
+      Block components = b;
+      components.items.clear();
+      for (const Item& it : b.items)
+        if (!(it.kind == Item::While || it.kind == Item::For || it.kind == Item::If || it.kind == Item::Switch ||
+              it.kind == Item::Declare))
+          components.items.push_back(it);
+      blob_rest = blob_components(components, props);
+      blob_lists_.pop_back();
+    } else {
+      blob_rest = blob_components(b, props);
+    }
     items_of = &blob_rest;
   }
   if (k == "height_field" || k == "isosurface") {

@@ -34,36 +34,47 @@ Block Translator::blob_components(const Block& b, std::vector<std::string>& prop
       continue;
     }
     if (it.kind == Item::Nested && (it.block->kind == "sphere" || it.block->kind == "cylinder")) {
-      const Block& c = *it.block;
-      std::vector<const Expr*> v;
-      std::string translate;  // a literal translate moves the component; other modifiers are not carried
-      for (const Item& ci : c.items) {
-        if (ci.kind == Item::Value) v.push_back(ci.args[0].get());
-        else if (ci.kind == Item::Keyword && ci.name == "strength" && !ci.args.empty()) v.push_back(ci.args[0].get());
-        else if (ci.kind == Item::Keyword && ci.name == "translate" && !ci.args.empty() && translate.empty())
-          translate = vector_value(*ci.args[0]);
-        else
-          unsupported(ci.loc, ci.kind == Item::Nested ? ci.block->kind + " (on a blob component)"
-                                                      : ci.name + " (on a blob component)",
-                      "the blob's own texture and transforms", false);
-      }
-      auto at = [&](std::size_t i) { return translate.empty() ? vector_value(*v[i])
-                                                              : vector_value(*v[i]) + " + " + translate; };
-      if (c.kind == "sphere") {
-        if (v.size() < 3) error(c.loc, "a blob's 'sphere' needs a centre, a radius and a strength");
-        spheres += fmt::format("{}[{}, {}, {}]", spheres.empty() ? "" : ", ", at(0), value(*v[1]), value(*v[2]));
-      } else {
-        if (v.size() < 4) error(c.loc, "a blob's 'cylinder' needs two ends, a radius and a strength");
-        cylinders += fmt::format("{}[{}, {}, {}, {}]", cylinders.empty() ? "" : ", ", at(0), at(1), value(*v[2]),
-                                 value(*v[3]));
-      }
+      bool sphere = true;
+      const std::string entry = blob_component(*it.block, sphere);
+      std::string& list = sphere ? spheres : cylinders;
+      list += (list.empty() ? "" : ", ") + entry;
       continue;
     }
     rest.items.push_back(it);
   }
-  if (!spheres.empty()) props.push_back("spheres = [" + spheres + "]");
-  if (!cylinders.empty()) props.push_back("cylinders = [" + cylinders + "]");
+  // Components a loop places: its lists, filled by the loops object() writes before the blob.
+  const BlobLists* lists = blob_lists_.empty() ? nullptr : &blob_lists_.back();
+  auto joined = [](const std::string& literal, const std::string& list) {
+    if (literal.empty()) return list;
+    return list.empty() ? "[" + literal + "]" : "[" + literal + "] + " + list;
+  };
+  const std::string s = joined(spheres, lists ? lists->spheres : ""), c = joined(cylinders, lists ? lists->cylinders : "");
+  if (!s.empty()) props.push_back("spheres = " + s);
+  if (!c.empty()) props.push_back("cylinders = " + c);
   return rest;
+}
+
+std::string Translator::blob_component(const Block& c, bool& sphere) {
+  std::vector<const Expr*> v;
+  std::string translate;  // a literal translate moves the component; other modifiers are not carried
+  for (const Item& ci : c.items) {
+    if (ci.kind == Item::Value) v.push_back(ci.args[0].get());
+    else if (ci.kind == Item::Keyword && ci.name == "strength" && !ci.args.empty()) v.push_back(ci.args[0].get());
+    else if (ci.kind == Item::Keyword && ci.name == "translate" && !ci.args.empty() && translate.empty())
+      translate = vector_value(*ci.args[0]);
+    else
+      unsupported(ci.loc, ci.kind == Item::Nested ? ci.block->kind + " (on a blob component)"
+                                                  : ci.name + " (on a blob component)",
+                  "the blob's own texture and transforms", false);
+  }
+  auto at = [&](std::size_t i) { return translate.empty() ? vector_value(*v[i]) : vector_value(*v[i]) + " + " + translate; };
+  sphere = c.kind == "sphere";
+  if (sphere) {
+    if (v.size() < 3) error(c.loc, "a blob's 'sphere' needs a centre, a radius and a strength");
+    return fmt::format("[{}, {}, {}]", at(0), value(*v[1]), value(*v[2]));
+  }
+  if (v.size() < 4) error(c.loc, "a blob's 'cylinder' needs two ends, a radius and a strength");
+  return fmt::format("[{}, {}, {}, {}]", at(0), at(1), value(*v[2]), value(*v[3]));
 }
 
 namespace {

@@ -110,6 +110,16 @@ class Translator {
   // A blob's components (translate_shapes.cpp) as rts's blob properties, added to `props`;
   // returns the block without them (its texture and transforms).
   Block blob_components(const Block& b, std::vector<std::string>& props);
+  // One blob component (`sphere { c, r, s }`, `cylinder { a, b, r, s }`) as a list entry of
+  // rts's blob; `sphere` says which list it belongs to.
+  std::string blob_component(const Block& c, bool& sphere);
+  // A blob whose components a loop places (`#while ... sphere { ... } #end`): the loops are
+  // written before the blob, each component appended to these lists (object()).
+  struct BlobLists {
+    std::string spheres, cylinders;
+  };
+  std::vector<BlobLists> blob_lists_;
+  int blob_list_count_ = 0;
   // An isosurface's or height field's own items (translate_shapes.cpp) as rts properties, added
   // to `props`; its function, if any, written first as a macro of the point. Returns the block
   // without them (its texture and transforms).
