@@ -365,6 +365,8 @@ Text Translator::expr(const Expr& e) {
         unsupported(e.loc, "." + m, "rts colours and vectors have 3 components (.x .y .z)", false);
         return Text{"0", Type::Float};
       }
+      // A float is promoted to a vector of three equal components (POV-Ray): its .x is itself.
+      if (a.type == Type::Float) return a;
       return Text{paren(a, 11) + "." + it->second, Type::Float, 11};
     }
     case Expr::Index: {

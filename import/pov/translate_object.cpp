@@ -416,6 +416,10 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     std::vector<double> en;
     if (literal_vector(*v(0), en) && en.size() == 2) {
       props.insert(props.begin(), {"e = " + num(en[0]), "n = " + num(en[1])});
+    } else if (expr(*v(0)).type == Type::Float) {
+      // A float promotes to <f, f>: both exponents.
+      const std::string p = value(*v(0));
+      props.insert(props.begin(), {"e = " + p, "n = " + p});
     } else {
       std::string p = value(*v(0));
       props.insert(props.begin(), {"e = " + p + ".x", "n = " + p + ".y"});
