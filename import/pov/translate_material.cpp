@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <set>
 
 #include <fmt/format.h>
@@ -140,6 +141,7 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
   std::vector<std::string> colors, pattern_props, xforms;
   std::string map;           // color_map as an rts list
   std::string named_pattern;  // `pigment { P_WoodGrain1A color_map { ... } }`: a declared pigment
+  std::string image;          // an image_map, moved by the pigment's transforms
   double filter = 0, transmit = 0;
   static const std::set<std::string> unsupported_patterns = {
       "brick", "hexagon", "quilted", "facets", "average", "slope", "mandel",
@@ -288,16 +290,7 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
         continue;
       }
       if (n.kind == "image_map") {
-        std::string file;
-        for (const Item& v : n.items)
-          if (v.kind == Item::Value && v.args[0]->kind == Expr::String) file = value(*v.args[0]);
-        if (file.empty()) {
-          unsupported(n.loc, "image_map", "image_texture { file = \"...\" }", false);
-        } else {
-          warn(n.loc, "image_map is planar in POV-Ray (the image spans x and y in [0, 1]); rts's image_texture "
-                      "uses the shape's uv mapping");
-          m.set("color", "image_texture { file = " + file + " }");
-        }
+        image = image_map(n);
         continue;
       }
       if (n.kind == "pigment_map" || n.kind == "warp") {
@@ -346,6 +339,10 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
     m.set("texture", pattern + " {" + body + (body.empty() ? "}" : " }") + suffix);
     m.props.erase(std::remove_if(m.props.begin(), m.props.end(), [](const auto& p) { return p.first == "color"; }),
                   m.props.end());
+  } else if (!image.empty()) {
+    m.set("texture", xforms.empty() ? image : "(" + image + ")" + suffix);
+    m.props.erase(std::remove_if(m.props.begin(), m.props.end(), [](const auto& p) { return p.first == "color"; }),
+                  m.props.end());
   } else if (!named_pattern.empty() && !map.empty()) {
     // A declared pattern given its colour map here (woods.inc's T_Wood1: P_WoodGrain1A with
     // M_Wood1A): the pattern with that map, then the transforms written here.
@@ -368,6 +365,42 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
                         : num(filter + transmit);
     m.set("transmit", t);
   }
+}
+
+std::string Translator::image_map(const Block& n) {
+  // image_map { [png] "file" [map_type 0] [interpolate 2] [once] }: POV-Ray's planar map spans x
+  // and y from 0 to 1 (projected along z), repeating; rts's planar image spans x and z, so the
+  // texture is turned a quarter about x. No interpolate is POV-Ray's nearest texel.
+  std::string file;
+  double map_type = 0, interpolate = 0;
+  for (const Item& v : n.items) {
+    if (v.kind == Item::Value && v.args[0]->kind == Expr::String) file = value(*v.args[0]);
+    if (v.kind == Item::Keyword && !v.args.empty() && v.args[0]->kind == Expr::String) file = value(*v.args[0]);
+    if (v.kind == Item::Keyword && v.name == "map_type" && !v.args.empty()) literal_number(*v.args[0], map_type);
+    if (v.kind == Item::Keyword && v.name == "interpolate" && !v.args.empty()) literal_number(*v.args[0], interpolate);
+    if (v.kind == Item::Keyword && (v.name == "once" || v.name == "filter" || v.name == "transmit" ||
+                                    v.name == "use_color" || v.name == "use_index" || v.name == "gamma"))
+      unsupported(v.loc, "image_map " + v.name, "the image's own colours, repeating", false);
+  }
+  if (file.empty()) {
+    unsupported(n.loc, "image_map", "image_texture { file = \"...\" }", false);
+    return "rgb(0.5)";
+  }
+  if (file.size() > 2 && file.find('.') == std::string::npos) {
+    // No extension: POV-Ray tries its image types; the first found beside the scene.
+    const std::string bare = file.substr(1, file.size() - 2);
+    for (const char* ext : {".png", ".jpg", ".jpeg", ".tga", ".bmp", ".hdr"})
+      if (std::filesystem::exists(std::filesystem::path(dir_) / (bare + ext))) {
+        file = "\"" + bare + ext + "\"";
+        break;
+      }
+  }
+  const std::string filter = interpolate > 0 ? "" : "  filter = \"nearest\"";
+  if (map_type == 1) return "image_texture { file = " + file + "  mapping = \"spherical\"" + filter + " }";
+  if (map_type != 0)
+    unsupported(n.loc, fmt::format("image_map map_type {}", num(map_type)), "the planar map (map_type 0) or the spherical (1)",
+                false);
+  return "(image_texture { file = " + file + "  mapping = \"planar\"" + filter + " } rotate <-90, 0, 0>)";
 }
 
 void Translator::finish(const Block& b, MaterialProps& m) {

@@ -138,6 +138,8 @@ class Translator {
   // The material a POV-Ray texture-like block (texture, pigment, finish, normal, interior,
   // material) adds to `m`.
   void texture_part(const Item& it, MaterialProps& m);
+  // An image_map block as rts's image texture (translate_material.cpp).
+  std::string image_map(const Block& n);
   // `layers` (texture blocks, the first at the bottom) as one layered material; `base_parts`
   // (an object's interior) go to the bottom layer.
   void layered_texture(const std::vector<const Item*>& layers, const std::vector<const Item*>& base_parts,
