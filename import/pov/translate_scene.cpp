@@ -1,6 +1,7 @@
 // POV-Ray statements as rts statements: diagnostics, directives, declarations and placements.
 // Lights, the camera and global settings are in translate_view.cpp; includes, files and the
 // entry point, import_pov, in translate_files.cpp.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,16 @@ void Translator::item(Writer& w, const Item& it, bool top) {
         return;
       }
       Text t = expr(*it.args[0]);
+      // A macro that #declares one of its parameters changes the caller's variable in
+      // POV-Ray (Turn_Me(Thing, ...)): the translated macro returns it, assigned here.
+      if (Symbol* s = lookup(it.args[0]->text); s && s->type == Type::Macro && s->out_param >= 0) {
+        const auto k = static_cast<std::size_t>(s->out_param);
+        if (k < it.args[0]->args.size() && it.args[0]->args[k]->kind == Expr::Name &&
+            declared(it.args[0]->args[k]->text)) {
+          w.line(rename(it.args[0]->args[k]->text) + " = " + t.s);
+          return;
+        }
+      }
       w.line(t.s);
       return;
     }
@@ -105,7 +116,30 @@ void Translator::item(Writer& w, const Item& it, bool top) {
                         (p.kind == Item::Nested && p.block->kind == "image_map");
         if (!pattern) gives = "pigment colour";
       }
-      define(it.name, Symbol{Type::Macro, nullptr, gives});
+      Symbol macro{Type::Macro, nullptr, gives};
+      // A parameter the body #declares (not #local): POV-Ray's by-reference argument.
+      {
+        std::vector<int> assigned;
+        std::vector<const std::vector<Item>*> todo = {&it.body};
+        while (!todo.empty()) {
+          const std::vector<Item>* list = todo.back();
+          todo.pop_back();
+          for (const Item& b : *list) {
+            if (b.kind == Item::Declare && !b.local && b.args.size() == 1)
+              for (std::size_t i = 0; i < it.params.size(); ++i)
+                if (it.params[i] == b.name &&
+                    std::find(assigned.begin(), assigned.end(), static_cast<int>(i)) == assigned.end())
+                  assigned.push_back(static_cast<int>(i));
+            if (b.kind == Item::If || b.kind == Item::While || b.kind == Item::For || b.kind == Item::Switch ||
+                b.kind == Item::Case) {
+              todo.push_back(&b.body);
+              todo.push_back(&b.else_body);
+            }
+          }
+        }
+        if (assigned.size() == 1) macro.out_param = assigned[0];
+      }
+      define(it.name, macro);
       std::string params;
       for (const std::string& p : it.params) params += (params.empty() ? "" : ", ") + rename(p);
       w.open(fmt::format("macro {}({})", rename(it.name), params));
@@ -135,6 +169,8 @@ void Translator::item(Writer& w, const Item& it, bool top) {
         w.line("return " + (real[0]->block->kind == "pigment" ? pigment_value(*real[0]->block) : material_text(m, true)));
       } else {
         items(w, it.body, false);
+        // POV-Ray's by-reference parameter: given back, and assigned by the call (Item::Value).
+        if (macro.out_param >= 0) w.line("return " + rename(it.params[static_cast<std::size_t>(macro.out_param)]));
       }
       --macro_depth_;
       scopes_.pop_back();

@@ -61,6 +61,9 @@ struct Symbol {
   bool textured = false;         // Object: it carries its own texture (has_texture)
   std::vector<std::string> steps;  // Transform: its steps as rts transforms
   MaterialProps props;           // Finish, Interior: what it adds to a material
+  // Macro: the parameter its body #declares (POV-Ray passes a variable by reference: the
+  // caller's variable changes), or -1. rts's macro returns it; the call assigns it back.
+  int out_param = -1;
   Symbol() = default;
   Symbol(Type t, std::shared_ptr<Block> b, std::string kind)
       : type(t), block(std::move(b)), object_kind(std::move(kind)) {}
