@@ -531,7 +531,17 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         // A bare name needs no parentheses, and a line starting with one would continue the
         // line before as a call (`QCone_Y` then `(QCone_Y) with ...`).
         const bool name = std::all_of(s.begin(), s.end(), [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; });
-        s = name ? s + " with { inverse = true }" : "(" + s + ") with { inverse = true }";
+        const std::size_t with = s.find(" with { ");
+        const bool derived = with != std::string::npos && s.size() > 2 && s.compare(s.size() - 2, 2, " }") == 0 &&
+                             std::all_of(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(with), [](char ch) {
+                               return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+                             });
+        if (name)
+          s += " with { inverse = true }";
+        else if (derived)  // `Name with { material = ... }`: one derivation more
+          s.insert(s.size() - 2, "  inverse = true");
+        else  // never a statement that starts with '(' (it would call the line before)
+          s = "union { (" + s + ") with { inverse = true } }";
       } else if (p == "casts_shadow = false") {
         s = "group { " + s + "  casts_shadow = false }";  // whatever it places casts none
       } else {

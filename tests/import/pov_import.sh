@@ -75,6 +75,12 @@ if grep -q "warning" "$TMP/err"; then echo "FAIL: stdcam.inc gave warnings:"; ca
 printf '#declare S = concat("A=", str(1/3, 0, 2), str(2, -4, 0));\n#debug S\n' > "$TMP/str.pov"
 expect_exit 0 "str with a width and decimals" -- "$RTS" import "$TMP/str.pov"
 expect_grep "$TMP/out" 'str\(1 / 3, 0, 2\)' "str keeps its width and decimals"
+# A reused object made inverse with a texture: one derivation, never a line that starts with
+# '(' (it would continue the line before as a call: incdemo/shapes_old stopped there).
+printf '#declare P = plane { y, 0 }\nobject { P pigment { rgb 1 } }\nobject { P pigment { rgb 1 } inverse }\n' > "$TMP/inverse.pov"
+expect_exit 0 "an inverse reused object" -- "$RTS" import "$TMP/inverse.pov" -o "$TMP/inverse.rts"
+expect_grep "$TMP/inverse.rts" '^P with \{ material = .*  inverse = true \}' "inverse joins the derivation"
+expect_exit 0 "and it evaluates" -- "$RTS" check "$TMP/inverse.rts"
 printf '#declare F = 0.5;\nsuperellipsoid { 0.15 }\nsphere { 0, F.x }\n' > "$TMP/promote.pov"
 expect_exit 0 "a float where a vector goes" -- "$RTS" import "$TMP/promote.pov"
 expect_grep "$TMP/out" 'e = 0.15  n = 0.15' "a float's two exponents"
