@@ -9,7 +9,7 @@ usage: assertions_from_examples.py OUT_DIR EXAMPLE.rts...
 import json, os, re, sys
 
 GRAMMAR = json.load(open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "syntaxes", "rts.tmLanguage.json")))
-BLOCKS = set(re.search(r"\(([a-z_|]+)\)", GRAMMAR["repository"]["block"]["match"]).group(1).split("|"))
+BLOCKS = set(re.search(r"\(([a-z0-9_|]+)\)", GRAMMAR["repository"]["block"]["match"]).group(1).split("|"))
 out_dir = sys.argv[1]
 os.makedirs(out_dir, exist_ok=True)
 
