@@ -198,24 +198,10 @@ void Translator::item(Writer& w, const Item& it, bool top) {
       return;
     }
     case Item::If: {
-      if (it.ifdef && it.args.size() > 1 && declared(it.args[0]->text)) {
-        // #ifdef(A[i]): whether the element has a value (pov_array's elements start as none).
-        hoist(w, it.body);
-        hoist(w, it.else_body);
-        w.open(fmt::format("if {}[{}] {} none", rename(it.args[0]->text), value(*it.args[1]), it.negate ? "==" : "!="));
-        scopes_.emplace_back();
-        items(w, it.body, false);
-        scopes_.pop_back();
-        if (!it.else_body.empty()) {
-          w.middle("else");
-          scopes_.emplace_back();
-          items(w, it.else_body, false);
-          scopes_.pop_back();
-        }
-        w.close();
-        return;
-      }
-      if (it.ifdef) {
+      // #ifdef(A[i]): whether the element has a value (pov_array's elements start as none),
+      // asked when the scene runs; any other #ifdef is answered here.
+      const bool element = it.ifdef && it.args.size() > 1 && declared(it.args[0]->text);
+      if (it.ifdef && !element) {
         // #ifdef: whether the name is declared at this point of the translation.
         bool d = declared(it.args[0]->text) != it.negate;
         w.line(fmt::format("// #{}({}): {} when translated", it.negate ? "ifndef" : "ifdef", it.args[0]->text,
@@ -225,7 +211,9 @@ void Translator::item(Writer& w, const Item& it, bool top) {
       }
       hoist(w, it.body);
       hoist(w, it.else_body);
-      w.open("if " + condition(*it.args[0]));
+      w.open("if " + (element ? fmt::format("{}[{}] {} none", rename(it.args[0]->text), value(*it.args[1]),
+                                            it.negate ? "==" : "!=")
+                              : condition(*it.args[0])));
       scopes_.emplace_back();
       items(w, it.body, false);
       scopes_.pop_back();
