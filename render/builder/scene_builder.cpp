@@ -39,6 +39,29 @@ bool second_word(ParamSet& ps, std::string_view name, std::string_view first, st
   return v == second;
 }
 
+// How deep and how wide a material made of `members` (a chooser's choices, a layered
+// material's layers) nests: MaterialDesc::choice_depth and choice_leaves of `m`, each bound
+// checked at `property`. A member made of members of its own keeps pointing at them, stored
+// before it, so its counts carry over.
+void nest_bounds(ParamSet& ps, const std::vector<MaterialDesc>& materials, const std::vector<MaterialId>& members,
+                 std::string_view property, std::string_view nesting, std::string_view through, MaterialDesc& m) {
+  uint64_t leaves = 0;
+  int depth = 0;
+  for (MaterialId id : members) {
+    const bool made = id < materials.size() && materials[id].choice_count > 0;
+    leaves += made ? materials[id].choice_leaves : 1;
+    if (made) depth = std::max(depth, static_cast<int>(materials[id].choice_depth));
+  }
+  if (depth + 1 > kMaxChoiceDepth)
+    ps.fail(*ps.find(property), fmt::format("{} nest at most {} deep", nesting, kMaxChoiceDepth));
+  if (leaves > kMaxChoiceLeaves)
+    ps.fail(*ps.find(property),
+            fmt::format("this material reaches {} materials through its {}; at most {}", leaves, through,
+                        kMaxChoiceLeaves));
+  m.choice_leaves = static_cast<uint32_t>(leaves);
+  m.choice_depth = static_cast<uint8_t>(depth + 1);
+}
+
 constexpr double kMaxFovDegrees = 180.0;
 
 struct KindInfo {
@@ -638,20 +661,7 @@ MaterialId SceneBuilder::chosen_material(ParamSet& ps) {
   m.first_choice = static_cast<MaterialId>(scene_.materials.size());
   m.choice_count = static_cast<uint32_t>(list->materials.size());
   const MaterialDesc default_material;
-  uint64_t leaves = 0;
-  int depth = 0;
-  for (MaterialId id : list->materials) {
-    const MaterialDesc& c = id < scene_.materials.size() ? scene_.materials[id] : default_material;
-    // A chosen one keeps pointing at its own choices, stored before it.
-    leaves += c.choice_count > 0 ? c.choice_leaves : 1;
-    depth = std::max(depth, static_cast<int>(c.choice_depth));
-  }
-  if (depth + 1 > kMaxChoiceDepth)
-    ps.fail(*ps.find("materials"), fmt::format("materials chosen by pattern nest at most {} deep", kMaxChoiceDepth));
-  if (leaves > kMaxChoiceLeaves)
-    ps.fail(*ps.find("materials"),
-            fmt::format("this material reaches {} materials through its nested choices; at most {}", leaves,
-                        kMaxChoiceLeaves));
+  nest_bounds(ps, scene_.materials, list->materials, "materials", "materials chosen by pattern", "nested choices", m);
   m.transmit = Color(0.0);  // the most any choice transmits (MaterialDesc::choice_pattern)
   for (MaterialId id : list->materials) {
     MaterialDesc copy = id < scene_.materials.size() ? scene_.materials[id] : default_material;
@@ -659,8 +669,6 @@ MaterialId SceneBuilder::chosen_material(ParamSet& ps) {
     m.transmit = Color(std::max(m.transmit.r, t.r), std::max(m.transmit.g, t.g), std::max(m.transmit.b, t.b));
     scene_.materials.push_back(copy);  // copied first: push_back may move the one it came from
   }
-  m.choice_leaves = static_cast<uint32_t>(leaves);
-  m.choice_depth = static_cast<uint8_t>(depth + 1);
   scene_.materials.push_back(m);
   return static_cast<MaterialId>(scene_.materials.size() - 1);
 }
@@ -704,19 +712,7 @@ MaterialId SceneBuilder::layered_material(ParamSet& ps) {
   m.first_choice = static_cast<MaterialId>(scene_.materials.size());
   m.choice_count = static_cast<uint32_t>(layers.size());
   const MaterialDesc default_material;
-  uint64_t leaves = 0;
-  int depth = 0;
-  for (MaterialId id : layers) {
-    const MaterialDesc& c = id < scene_.materials.size() ? scene_.materials[id] : default_material;
-    leaves += c.choice_count > 0 ? c.choice_leaves : 1;
-    depth = std::max(depth, static_cast<int>(c.choice_depth));
-  }
-  if (depth + 1 > kMaxChoiceDepth)
-    ps.fail(*ps.find("layers"), fmt::format("layered and chosen materials nest at most {} deep", kMaxChoiceDepth));
-  if (leaves > kMaxChoiceLeaves)
-    ps.fail(*ps.find("layers"),
-            fmt::format("this material reaches {} materials through its layers and choices; at most {}", leaves,
-                        kMaxChoiceLeaves));
+  nest_bounds(ps, scene_.materials, layers, "layers", "layered and chosen materials", "layers and choices", m);
   for (MaterialId id : layers) {
     MaterialDesc copy = id < scene_.materials.size() ? scene_.materials[id] : default_material;
     scene_.materials.push_back(copy);  // copied first: push_back may move the one it came from
@@ -724,8 +720,6 @@ MaterialId SceneBuilder::layered_material(ParamSet& ps) {
   // What lets light through the object is the base's (a coat's transmit shows the layers
   // below it, not the inside).
   m.transmit = scene_.materials[m.first_choice].transmit;
-  m.choice_leaves = static_cast<uint32_t>(leaves);
-  m.choice_depth = static_cast<uint8_t>(depth + 1);
   scene_.materials.push_back(m);
   return static_cast<MaterialId>(scene_.materials.size() - 1);
 }

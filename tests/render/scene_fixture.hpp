@@ -1,6 +1,9 @@
 // Helpers to build small SceneDescs in tests, without the scene language.
 #pragma once
 
+#include <algorithm>
+#include <vector>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/scene/scene.hpp"
@@ -47,6 +50,32 @@ inline MaterialDesc emissive(Color c) {
   m.ambient = 0;
   m.diffuse = 0;
   return m;
+}
+
+// A checker of black (color1: the first choice) and white (the second), cells of side 1.
+inline TextureId add_checker(SceneDesc& s) {
+  TextureDesc t;
+  t.kind = TextureKind::Checker;
+  t.color1 = Color(0.0);
+  t.color2 = Color(1.0);
+  t.scale = 1.0;
+  s.textures.push_back(t);
+  return static_cast<TextureId>(s.textures.size() - 1);
+}
+
+// The choices stored together, then the chooser (as the builder stores them).
+inline MaterialId add_chooser(SceneDesc& s, TextureId pattern, const std::vector<MaterialDesc>& choices) {
+  MaterialDesc m;
+  m.choice_pattern = pattern;
+  m.first_choice = static_cast<MaterialId>(s.materials.size());
+  m.choice_count = static_cast<uint32_t>(choices.size());
+  m.transmit = Color(0.0);  // the most any choice transmits, as the builder sets it
+  for (const MaterialDesc& c : choices) {
+    s.materials.push_back(c);
+    m.transmit = Color(std::max(m.transmit.r, c.transmit.r), std::max(m.transmit.g, c.transmit.g),
+                       std::max(m.transmit.b, c.transmit.b));
+  }
+  return add_material(s, m);
 }
 
 // A flat triangle without vertex normals.

@@ -143,20 +143,10 @@ TEST_CASE("layers: a material chosen by pattern may choose a layered one", "[lay
   MaterialDesc coat = emissive(Color(1, 0, 0));
   coat.transmit = Color(0.25);
   const MaterialId layered = add_layered(s, {emissive(Color(0, 0, 1)), coat});
-  // A checker of cells of side 1 (black: the first choice), as the builder stores a chooser.
-  TextureDesc t;
-  t.kind = TextureKind::Checker;
-  t.color1 = Color(0.0);
-  t.color2 = Color(1.0);
-  t.scale = 1.0;
-  s.textures.push_back(t);
-  MaterialDesc chooser;
-  chooser.choice_pattern = static_cast<TextureId>(s.textures.size() - 1);
-  chooser.first_choice = static_cast<MaterialId>(s.materials.size());
-  chooser.choice_count = 2;
-  s.materials.push_back(s.materials[layered]);  // the layered copy keeps naming its layers
-  s.materials.push_back(emissive(Color(0, 1, 0)));
-  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, add_material(s, chooser)));
+  // A checker of cells of side 1 choosing between them (the layered copy keeps naming its layers).
+  const MaterialDesc layered_copy = s.materials[layered];
+  const MaterialId chooser = add_chooser(s, add_checker(s), {layered_copy, emissive(Color(0, 1, 0))});
+  place(s, add_shape(s, Plane{Vec3(0, 1, 0), 0.0}, chooser));
   Tracer tr(std::move(s));
   const Rgb a = tr.trace(Ray{Vec3(0.5, 1, 0.5), Vec3(0, -1, 0)});
   const Rgb b = tr.trace(Ray{Vec3(1.5, 1, 0.5), Vec3(0, -1, 0)});

@@ -11,36 +11,6 @@
 using namespace rts::render;
 using namespace rts::render::test;
 
-namespace {
-
-// A checker of black (color1: the first choice) and white (the second), cells of side 1.
-TextureId add_checker(SceneDesc& s) {
-  TextureDesc t;
-  t.kind = TextureKind::Checker;
-  t.color1 = Color(0.0);
-  t.color2 = Color(1.0);
-  t.scale = 1.0;
-  s.textures.push_back(t);
-  return static_cast<TextureId>(s.textures.size() - 1);
-}
-
-// The choices stored together, then the chooser (as the builder stores them).
-MaterialId add_chooser(SceneDesc& s, TextureId pattern, const std::vector<MaterialDesc>& choices) {
-  MaterialDesc m;
-  m.choice_pattern = pattern;
-  m.first_choice = static_cast<MaterialId>(s.materials.size());
-  m.choice_count = static_cast<uint32_t>(choices.size());
-  m.transmit = Color(0.0);  // the most any choice transmits, as the builder sets it
-  for (const MaterialDesc& c : choices) {
-    s.materials.push_back(c);
-    m.transmit = Color(std::max(m.transmit.r, c.transmit.r), std::max(m.transmit.g, c.transmit.g),
-                       std::max(m.transmit.b, c.transmit.b));
-  }
-  return add_material(s, m);
-}
-
-
-}  // namespace
 
 TEST_CASE("material choice: equal ranges of the luminance, the first for the darkest", "[patterns]") {
   CHECK(choice_for(0.0, 2) == 0);
