@@ -188,8 +188,14 @@ void Translator::item(Writer& w, const Item& it, bool top) {
     }
     case Item::For: {
       hoist(w, it.body);
-      std::string step = it.args.size() > 2 ? " step " + value(*it.args[2]) : "";
-      w.open(fmt::format("for {} in {} ..= {}{}", rename(it.name), value(*it.args[0]), value(*it.args[1]), step));
+      // A range's ends and step are additive-level expressions in rts: a lower one (`#for (R, 0,
+      // !1)`: `not 1 != 0`, which the fuzzer found) goes in parentheses.
+      auto bound = [&](const Expr& e) {
+        const Text t = expr(e);
+        return t.prec < 7 ? "(" + t.s + ")" : t.s;
+      };
+      std::string step = it.args.size() > 2 ? " step " + bound(*it.args[2]) : "";
+      w.open(fmt::format("for {} in {} ..= {}{}", rename(it.name), bound(*it.args[0]), bound(*it.args[1]), step));
       scopes_.emplace_back();
       define(it.name, Symbol{Type::Float, nullptr, ""});
       items(w, it.body, false);
