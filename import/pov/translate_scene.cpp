@@ -470,6 +470,7 @@ void Translator::place_block(Writer& w, const Block& b) {
     }
     if (filter > 0) props += "  fog_filter = " + num(filter);
     if (transmit > 0) props += "  fog_transmit = " + num(transmit);
+    if (props.empty()) return;  // nothing rts reads (fuzz_pov: a fog of unknown words only)
     w.line("settings {" + props.substr(1) + " }");
     return;
   }
