@@ -486,14 +486,20 @@ render::ParamValue Interpreter::to_param(const Property& p, const std::string& k
         render::ColorMapParam map;
         for (const Value& x : items) {
           const auto* pair = x.type == Type::List ? &as_list(x) : nullptr;
-          // [value, color] or [value, color, transmit] (POV-Ray's rgbt: a sky_sphere layer's see-through).
+          // [value, color] or [value, color, transmit] (POV-Ray's rgbt: a sky_sphere layer's see-through),
+          // or [value, texture] (POV-Ray's pigment_map: the texture's color at the point).
+          const bool textured = pair && pair->size() == 2 && (*pair)[1].type == Type::Texture;
           if (!pair || pair->size() < 2 || pair->size() > 3 || (*pair)[0].type != Type::Number ||
-              ((*pair)[1].type != Type::Color && (*pair)[1].type != Type::Vector) ||
+              ((*pair)[1].type != Type::Color && (*pair)[1].type != Type::Vector && !textured) ||
               (pair->size() == 3 && (*pair)[2].type != Type::Number))
             fail(p.loc, fmt::format("property '{}' of {} cannot hold this list: a color map is a list of [number, "
-                                    "color] pairs (or [number, color, transmit]), e.g. [[0, rgb(1)], [1, rgb(0)]]",
+                                    "color] pairs (or [number, color, transmit], or [number, texture]), e.g. "
+                                    "[[0, rgb(1)], [1, rgb(0)]]",
                                     *p.name, kind));
-          map.entries.push_back({(*pair)[0].v.x, (*pair)[1].v, pair->size() == 3 ? (*pair)[2].v.x : 0.0});
+          render::ColorMapEntry entry{(*pair)[0].v.x, textured ? render::Vec3(0.0) : (*pair)[1].v,
+                                      pair->size() == 3 ? (*pair)[2].v.x : 0.0};
+          if (textured) entry.texture = realize_texture((*pair)[1]);
+          map.entries.push_back(entry);
         }
         return map;
       }

@@ -173,10 +173,11 @@ std::string Translator::vector_value(const Expr& e) {
   return t.s;
 }
 
-std::string Translator::color_value(const Expr& e, double* filter, double* transmit) {
+std::string Translator::color_value(const Expr& e, double* filter, double* transmit, int* prec) {
   Text t = expr(e);
   if (filter) *filter = t.filter;
   if (transmit) *transmit = t.transmit;
+  if (prec) *prec = t.type == Type::Float || t.type == Type::Vector ? 12 : t.prec;  // rgb(...) is whole
   if (t.type == Type::Float) return "rgb(" + t.s + ")";
   if (t.type == Type::Vector) {
     std::vector<double> v;
@@ -259,7 +260,9 @@ Text Translator::expr(const Expr& e) {
       if (k == "color") {
         Text t;
         double f = 0, tr = 0;
-        t.s = color_value(a, &f, &tr);
+        // An expression color_value passes through keeps its precedence (`colour !0`, from the
+        // fuzzer, is `not 0 != 0`: an operand of another `!` needs its parentheses).
+        t.s = color_value(a, &f, &tr, &t.prec);
         for (std::size_t i = 1; i < e.args.size(); ++i) {  // `color C transmit 0.6` (the reader's)
           double v = 0;
           const Expr& channel = *e.args[i];

@@ -293,13 +293,27 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
         image = image_map(n);
         continue;
       }
-      if (n.kind == "pigment_map" || n.kind == "warp") {
-        unsupported(n.loc, n.kind, n.kind == "warp" ? "turbulence on the pattern" : "a color_map", false);
+      if (n.kind == "pigment_map") {
+        map = pigment_map(n);
+        continue;
+      }
+      if (n.kind == "warp") {
+        unsupported(n.loc, n.kind, "turbulence on the pattern", false);
         continue;
       }
       if (n.kind == "pigment") {
         MaterialProps inner;
         pigment(n, inner);
+        if (pattern == "checker") {
+          // `checker pigment { A } pigment { B }`: the two pigments' colours (a pattern in one
+          // of them becomes its colour: rts's checker takes colours).
+          std::string c = "rgb(0)";
+          for (const auto& p : inner.props)
+            if (p.first == "color") c = p.second;
+          if (inner.has("texture")) unsupported(n.loc, "checker of patterned pigments", "a checker of two colours", false);
+          colors.push_back(c);
+          continue;
+        }
         for (const auto& p : inner.props) m.set(p.first, p.second);
         continue;
       }
@@ -365,6 +379,39 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
                         : num(filter + transmit);
     m.set("transmit", t);
   }
+}
+
+std::string Translator::pigment_map(const Block& n) {
+  // pigment_map { [v pigment-body] ... }: rts's colour map with a texture (or a colour) per
+  // entry. Each entry's pigment is translated as a pigment of its own; its transforms stay its own
+  // (rts evaluates an entry at the map's point, after the entry's transform, as POV-Ray does).
+  std::string list;
+  const std::string outer_override = pattern_map_override_;   // a texture_map's, not the entries'
+  pattern_map_override_.clear();
+  for (const Item& e : n.items) {
+    if (e.kind == Item::Value && e.args[0]->kind == Expr::Name) {
+      list = rename(e.args[0]->text);   // a declared pigment_map
+      break;
+    }
+    if (e.kind != Item::MapEntry || e.block->items.empty() || e.block->items[0].kind != Item::Value) continue;
+    Block body;
+    body.kind = "pigment";
+    body.loc = e.loc;
+    body.items.assign(e.block->items.begin() + 1, e.block->items.end());
+    MaterialProps inner;
+    pigment(body, inner);
+    std::string entry = "rgb(0)";   // POV-Ray's default pigment: black
+    bool textured = false;
+    for (const auto& [name, text] : inner.props) {
+      if (name == "texture") entry = text, textured = true;
+      if (name == "color" && !textured) entry = text;
+    }
+    const double clear = textured ? 0.0 : std::min(1.0, 1.0 - inner.opacity);
+    list += (list.empty() ? "[[" : ", [") + value(*e.block->items[0].args[0]) + ", " + entry +
+            (clear > 0 ? ", " + num(clear) : "") + "]";
+  }
+  pattern_map_override_ = outer_override;
+  return list.empty() || list[0] != '[' ? list : list + "]";
 }
 
 std::string Translator::image_map(const Block& n) {

@@ -377,7 +377,7 @@ void Translator::declare(Writer& w, const Item& it) {
     } else if (b.kind == "light_source") {
       s.type = Type::Light;
       light(w, b, head);
-    } else if (b.kind == "color_map" || b.kind == "colour_map") {
+    } else if (b.kind == "color_map" || b.kind == "colour_map" || b.kind == "pigment_map") {
       s.type = Type::List;
       Block p;
       p.kind = "pigment";

@@ -85,7 +85,8 @@ class Translator {
   std::string vector_value(const Expr& e);
   // An array initialiser's element: a value, or a texture, material or pigment block.
   std::string array_element(const Expr& e);  // promotes a float to <f, f, f>
-  std::string color_value(const Expr& e, double* filter = nullptr, double* transmit = nullptr);
+  std::string color_value(const Expr& e, double* filter = nullptr, double* transmit = nullptr,
+                          int* prec = nullptr);
   std::string condition(const Expr& e);     // a bool: floats compare with 0
   std::string float_value(const Expr& e) { return expr(e).s; }
   // Literal values, when the expression is one (after folding x, y, z, unary minus, k * v).
@@ -143,6 +144,8 @@ class Translator {
   void texture_part(const Item& it, MaterialProps& m);
   // An image_map block as rts's image texture (translate_material.cpp).
   std::string image_map(const Block& n);
+  // A pigment_map block as rts's colour map list, its entries' pigments as textures or colours.
+  std::string pigment_map(const Block& n);
   // `layers` (texture blocks, the first at the bottom) as one layered material; `base_parts`
   // (an object's interior) go to the bottom layer.
   void layered_texture(const std::vector<const Item*>& layers, const std::vector<const Item*>& base_parts,

@@ -38,6 +38,10 @@ struct ColorMapEntry {
   // sky_sphere's layers (render/shade/sky_sphere.hpp) and a layered material's coats
   // (render/shade/layers.hpp) look at it; other surfaces ignore it.
   double transmit = 0.0;
+  // POV-Ray's pigment_map: the entry is a texture (a TextureId built before this one; the
+  // maximum uint32_t, scene.hpp's kNoId, when the entry is the plain `color`), evaluated at the
+  // same texture-space point as the map's own pattern, after its own transform.
+  uint32_t texture = 0xffffffffu;
 };
 
 struct PatternDesc {

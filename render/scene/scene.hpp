@@ -45,6 +45,7 @@ using MediumId = uint32_t;
 using NodeId = uint32_t;
 using MeshId = uint32_t;
 inline constexpr uint32_t kNoId = std::numeric_limits<uint32_t>::max();
+static_assert(ColorMapEntry{}.texture == kNoId, "a plain color map entry holds no texture");
 
 // ---- textures ---------------------------------------------------------------------------
 // LatLong and CubeMap are environment maps: looked up by direction (the background, rays that

@@ -262,6 +262,16 @@ std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
   for (const FlatCsg& fc : flat.csgs) for_each_csg_leaf(scene, fc.csg, use, fc.inherited);
   if (scene.settings.environment < used.size()) used[scene.settings.environment] = true;
   use_medium(scene.settings.medium);
+  // A used texture uses its sky layers and its pigment_map's entries. They were built before it
+  // (lower ids), so one pass from the top reaches entries of entries.
+  for (std::size_t t = used.size(); t-- > 0;) {
+    if (!used[t]) continue;
+    const TextureDesc& d = scene.textures[t];
+    for (TextureId layer : d.sky_layers)
+      if (layer < t) used[layer] = true;
+    for (const ColorMapEntry& e : d.pattern.color_map)
+      if (e.texture < t) used[e.texture] = true;
+  }
   return used;
 }
 

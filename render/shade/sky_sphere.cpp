@@ -17,7 +17,7 @@ namespace rts::render {
 glm::dvec4 CompiledTexture::eval_layer(const Vec3& p) const {
   if (desc_.kind == TextureKind::Pattern) {
     const Vec3 q = Vec3(inverse_ * glm::dvec4(p, 1.0));
-    glm::dvec4 c = pattern::pattern_color_transmit(desc_.pattern, q);
+    glm::dvec4 c = map_entries_.empty() ? pattern::pattern_color_transmit(desc_.pattern, q) : eval_map_entries(q);
     c.w = std::isfinite(c.w) ? std::clamp(c.w, 0.0, 1.0) : 0.0;
     return c;
   }

@@ -215,13 +215,30 @@ Color CompiledTexture::eval_direction(const Vec3& direction) const {
   return eval(p);
 }
 
+glm::dvec4 CompiledTexture::eval_map_entries(const Vec3& q) const {
+  const std::vector<ColorMapEntry>& map = desc_.pattern.color_map;
+  const double t = pattern::wave(desc_.pattern, pattern::raw_value(desc_.pattern, q));
+  auto entry = [&](std::size_t i) {
+    if (map[i].texture == kNoId) return glm::dvec4(map[i].color, map[i].transmit);
+    return map_entries_[i].eval_layer(q);   // the entry's own transform, then its value at q
+  };
+  if (!(t > map.front().value)) return entry(0);   // also NaN
+  if (t >= map.back().value) return entry(map.size() - 1);
+  std::size_t i = 1;
+  while (map[i].value < t) ++i;   // map[i-1].value < t <= map[i].value
+  const double span = map[i].value - map[i - 1].value;
+  if (!(span > 0.0)) return entry(i);
+  const double w = (t - map[i - 1].value) / span;
+  return entry(i - 1) * (1.0 - w) + entry(i) * w;
+}
+
 glm::dvec4 CompiledTexture::eval_with_transmit(const TexturePoint& p) const {
   if (desc_.kind != TextureKind::Pattern) {
     const Color c = eval(p);
     return {c.r, c.g, c.b, 0.0};
   }
   const Vec3 q = Vec3(inverse_ * glm::dvec4(p.object_point, 1.0));
-  glm::dvec4 c = pattern::pattern_color_transmit(desc_.pattern, q);
+  glm::dvec4 c = map_entries_.empty() ? pattern::pattern_color_transmit(desc_.pattern, q) : eval_map_entries(q);
   c.w = std::isfinite(c.w) ? std::clamp(c.w, 0.0, 1.0) : 0.0;
   return c;
 }
@@ -233,6 +250,10 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
     case TextureKind::Stripes: return stripes(desc_, q);
     case TextureKind::Gradient: return gradient(desc_, q);
     case TextureKind::Pattern: {
+      if (!map_entries_.empty()) {
+        const glm::dvec4 c = eval_map_entries(q);
+        return {c.x, c.y, c.z};
+      }
       const glm::dvec3 c = pattern::pattern_color(desc_.pattern, q);
       return {c.x, c.y, c.z};
     }
@@ -257,7 +278,7 @@ Color CompiledTexture::eval(const TexturePoint& p) const {
 }
 
 Color CompiledTexture::eval_height(const TexturePoint& p) const {
-  if (desc_.kind != TextureKind::Pattern) return eval(p);
+  if (desc_.kind != TextureKind::Pattern || !map_entries_.empty()) return eval(p);
   const Vec3 q = Vec3(inverse_ * glm::dvec4(p.object_point, 1.0));
   const glm::dvec3 c = pattern::pattern_color(desc_.pattern, q, /*height=*/true);
   return {c.x, c.y, c.z};
@@ -298,6 +319,22 @@ std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std:
       for (const std::string& face : desc.face_paths) images.push_back(load(face, desc));
     }
     compiled.emplace_back(desc, std::move(images));
+    const std::vector<ColorMapEntry>& map = desc.pattern.color_map;
+    if (desc.kind == TextureKind::Pattern &&
+        std::any_of(map.begin(), map.end(), [](const ColorMapEntry& e) { return e.texture != kNoId; })) {
+      // A pigment_map: its entries' textures were built before it (its block realised them).
+      std::vector<CompiledTexture> entries;
+      entries.reserve(map.size());
+      for (const ColorMapEntry& e : map) {
+        if (e.texture == kNoId)
+          entries.emplace_back(TextureDesc{}, std::vector<std::shared_ptr<const Image>>{});   // never evaluated
+        else if (e.texture < id)
+          entries.push_back(compiled[e.texture]);
+        else
+          throw RenderError(desc.loc, "a color map entry is not a texture built before its pattern");
+      }
+      compiled.back().set_map_entries(std::move(entries));
+    }
     if (desc.kind == TextureKind::SkySphere) {
       // The layers were built before the sky (its block realised them), so they precede it.
       std::vector<CompiledTexture> layers;

@@ -56,6 +56,9 @@ class CompiledTexture {
     sky_layers_ = std::move(layers);
     sky_background_ = background;
   }
+  // Pattern with a pigment_map: the compiled texture of each entry that holds one, in the
+  // order of the color map (entries without a texture hold an unused placeholder).
+  void set_map_entries(std::vector<CompiledTexture> entries) { map_entries_ = std::move(entries); }
   // The size of one texel in uv units (0 for procedural textures), for bump-map differences.
   double texel_size() const;
   // Whether eval() reads TexturePoint::uv (an image with `mapping = "uv"`); every other kind
@@ -67,11 +70,15 @@ class CompiledTexture {
   Color sample(const Image& image, double u, double v) const;
   Color lookup_direction(const Vec3& texture_space_direction) const;
   Color eval_sky(const Vec3& direction) const;   // render/shade/sky_sphere.cpp
+  // A pigment_map's color and (w) transmit at texture-space point q: the entries on either
+  // side of the pattern's index, each a color or its texture evaluated at q, blended.
+  glm::dvec4 eval_map_entries(const Vec3& q) const;
 
   TextureDesc desc_;
   Mat4 inverse_;                                       // object space → texture space
   std::vector<std::shared_ptr<const Image>> images_;   // image kinds only (linear RGB)
   std::vector<CompiledTexture> sky_layers_;            // SkySphere only, bottom first
+  std::vector<CompiledTexture> map_entries_;           // Pattern with textures in its map only
   Color sky_background_{0.0};                          // SkySphere: behind every layer
   bool uses_uv_ = false;
 };

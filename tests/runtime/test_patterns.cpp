@@ -231,6 +231,24 @@ TEST_CASE("noise in a placement loop places each copy at its noise value", "[pat
   }
 }
 
+TEST_CASE("a color map entry may be a texture (POV-Ray's pigment_map)", "[patterns]") {
+  render::SceneDesc s = eval_text(
+      "let inner = gradient { axis = \"y\" } scale 0.5\n"
+      "plane { normal = <0, 1, 0>  material = material { texture = bozo { color_map = [[0, rgb(1, 0, 0)], "
+      "[0.5, inner], [1, rgb(0, 0, 1), 0.25]] } } }\n");
+  REQUIRE(s.textures.size() == 2);
+  const auto& map = s.textures[1].pattern.color_map;
+  REQUIRE(map.size() == 3);
+  CHECK(map[0].texture == render::kNoId);
+  CHECK(map[1].texture == 0);   // the entry's texture, realised before the map's own
+  CHECK(s.textures[0].transform[0][0] == 0.5);
+  CHECK(map[2].transmit == 0.25);
+  // A textured entry takes its transmit from the texture: a third number is refused.
+  CHECK(eval_diagnostic("plane { normal = <0, 1, 0>  material = material { texture = bozo { color_map = "
+                        "[[0, checker(rgb(0), rgb(1), 1), 0.5]] } } }")
+            .message.starts_with("property 'color_map' of bozo cannot hold this list"));
+}
+
 TEST_CASE("pattern block errors are located and say what to do", "[patterns]") {
   auto message = [](const std::string& text) { return eval_diagnostic(text).message; };
   CHECK(message("let t = marble { turbulance = 1 }\nplane { normal = <0, 1, 0>  material = material { texture = t } }")
