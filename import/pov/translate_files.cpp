@@ -75,7 +75,9 @@ void Translator::declare_library_file(const std::string& file) {
       if (w0 != std::string::npos) {
         std::size_t w1 = line.find_first_of(" {", w0);
         std::string word = line.substr(w0, w1 == std::string::npos ? std::string::npos : w1 - w0);
-        if (is_object_kind(word) && line.find('{', w0) != std::string::npos) {
+        if (word == "sky_sphere") {
+          s.object_kind = word;   // skies.rts' S_Cloud1 ...: a sky_sphere { S_Cloud1 } names it
+        } else if (is_object_kind(word) && line.find('{', w0) != std::string::npos) {
           s = Symbol{Type::Object, nullptr, word};
         } else if (pigment_pattern(word) && line.find('{', w0) != std::string::npos) {
           // `let P_WoodGrain1A = wood { ... } scale ...`: a pattern, a pigment in POV-Ray.

@@ -358,6 +358,10 @@ void Translator::declare(Writer& w, const Item& it) {
     } else if (b.kind == "pigment") {
       s.type = Type::Pigment;
       w.line(head + pigment_value(b));
+    } else if (b.kind == "sky_sphere") {
+      s.object_kind = "sky_sphere";   // used by name in a scene's sky_sphere { }
+      const std::string sky = sky_sphere_value(b);
+      w.line(head + (sky.empty() ? "none  // a sky_sphere without a pigment" : sky));
     } else if (b.kind == "finish") {
       s.type = Type::Finish;
       finish(b, s.props);

@@ -5,8 +5,8 @@
 
 namespace rts::import::pov {
 
-void Translator::sky_sphere(Writer& w, const Block& b) {
-  std::string layers, suffix;
+std::string Translator::sky_sphere_value(const Block& b) {
+  std::string layers, suffix, named;
   for (const Item& it : b.items) {
     if (it.kind == Item::Nested && it.block->kind == "pigment") {
       layers += (layers.empty() ? "" : ", ") + pigment_value(*it.block);
@@ -28,17 +28,31 @@ void Translator::sky_sphere(Writer& w, const Block& b) {
         layers += (layers.empty() ? "" : ", ") + rename(it.args[0]->text);
         continue;
       }
-      // A declared sky_sphere (skies.inc's S_Cloud1 ...): rts's skies.rts has its own skies.
+      if (s && s->object_kind == "sky_sphere" && named.empty() && layers.empty()) {
+        // A declared sky (the scene's, or skies.inc's S_Cloud1 ... in rts's skies.rts).
+        named = rename(it.args[0]->text);
+        continue;
+      }
       unsupported(it.loc, "sky_sphere " + it.args[0]->text,
-                  "a sky from skies.rts (settings { environment = sky_cloudy })", false);
+                  s ? "one declared sky_sphere, alone" : "a sky from skies.rts (settings { environment = S_Cloud1 })", false);
+      continue;
+    }
+    if (!named.empty()) {
+      unsupported(it.loc, "a layer added to a declared sky_sphere", "the declared sky, or every layer written out", false);
       continue;
     }
     unsupported(it.loc, it.kind == Item::Nested ? it.block->kind : it.name, "pigment layers and transforms", false);
   }
+  if (!named.empty()) return suffix.empty() ? named : "(" + named + ")" + suffix;
+  if (layers.empty()) return "";
+  return "sky_sphere { layers = [" + layers + "] }" + suffix;
+}
+
+void Translator::sky_sphere(Writer& w, const Block& b) {
   // POV-Ray's sky_sphere without a pigment shows nothing (the background); so does rts's scene
   // without one.
-  if (layers.empty()) return;
-  w.line("settings { environment = sky_sphere { layers = [" + layers + "] }" + suffix + " }");
+  const std::string sky = sky_sphere_value(b);
+  if (!sky.empty()) w.line("settings { environment = " + sky + " }");
 }
 
 }  // namespace rts::import::pov

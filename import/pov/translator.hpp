@@ -173,6 +173,9 @@ class Translator {
   void light(Writer& w, const Block& b, const std::string& prefix);
   void camera(Writer& w, const Block& b);
   void sky_sphere(Writer& w, const Block& b);  // translate_sky.cpp
+  // The sky as an rts value (`sky_sphere { layers = [...] }`, a declared sky's name), or "" when
+  // it has no layer.
+  std::string sky_sphere_value(const Block& b);
   void global_settings(Writer& w, const Block& b);
   void include(Writer& w, const Item& it);
   void declare_library_file(const std::string& file);  // its names, and the files it includes

@@ -158,6 +158,20 @@ expect_grep "$TMP/out" "material = T_Stone25" "T_Stone25 kept"
 expect_grep "$TMP/out" "color = Jade" "Jade (a pigment in textures.inc) kept as the colour"
 if grep -q "warning" "$TMP/err"; then echo "FAIL: library names gave warnings:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); fi
 expect_exit 0 "library materials render" -- "$RTS" render "$TMP/lib.pov" -o "$TMP/lib.png" --width 16 --height 12 --no-progress
+# skies.inc's skies by name: `sky_sphere { S_Cloud2 }` is rts's S_Cloud2 (skies.rts, POV-Ray's
+# values, its pigment_map a colour map of cloud textures), with no warning; it renders.
+cat > "$TMP/skies.pov" <<'EOF'
+#include "skies.inc"
+camera { location <0, 1, -4> look_at <0, 2, 0> }
+sky_sphere { S_Cloud2 rotate y * 30 }
+sphere { <0, 0, 10>, 1 pigment { P_Cloud4 } }
+EOF
+expect_exit 0 "skies.inc names import" -- "$RTS" import "$TMP/skies.pov"
+expect_grep "$TMP/out" '^include "skies.inc"' "skies.inc is a library include"
+expect_grep "$TMP/out" 'environment = [(]S_Cloud2[)] rotate <0, 30, 0>' "S_Cloud2 is the environment, turned"
+expect_grep "$TMP/out" "color = P_Cloud4" "P_Cloud4 is a texture, the colour"
+if grep -q "warning" "$TMP/err"; then echo "FAIL: skies.inc names gave warnings:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); fi
+expect_exit 0 "skies.inc names render" -- "$RTS" render "$TMP/skies.pov" -o "$TMP/skies.png" --width 16 --height 12 --no-progress
 # POV-Ray's finish and interior names (finish.inc, metals.inc, glass.inc: Shiny, Phong_Glossy,
 # Dull, Phong_Dull, Luminous, Mirror, F_MetalC, F_Glass4, I_Glass) merge into the materials
 # with no warning: the scene renders to the same bytes as written.pov, which writes rts's
