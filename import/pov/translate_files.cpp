@@ -321,6 +321,25 @@ PovResult import_pov(const std::string& text, const PovOptions& options) {
     out.line("// POV-Ray's int(): rounds towards zero.");
     out.line("macro pov_int(x) { if x < 0 { return ceil(x) }  return floor(x) }");
   }
+  if (t.helpers_.count("pov_look_at")) {
+    out.blank();
+    out.line("// POV-Ray's camera vectors when the scene computes them: `angle` (0: none) sets direction's");
+    out.line("// length from right's; towards a look_at point they turn keeping their lengths and right's");
+    out.line("// handedness, `sky` the reference for up (looking along it keeps right's direction).");
+    out.line("macro pov_look_at(position, target, sky, direction, right, up, angle) {");
+    out.line("    let d = direction");
+    out.line("    if angle > 0 { d = normalize(d) * (0.5 * length(right) / tan(angle * pi / 360)) }");
+    out.line("    if target == none { return [d, right, up] }");
+    out.line("    if length(target - position) < 1e-9 { return [d, right, up] }");
+    out.line("    let dl = length(d)");
+    out.line("    let hand = select(dot(cross(up, d), right) > 0, 1, -1)");
+    out.line("    d = normalize(target - position)");
+    out.line("    let r = cross(sky, d)");
+    out.line("    if length(r) < 1e-9 { r = right }");
+    out.line("    r = normalize(r)");
+    out.line("    return [d * dl, r * (length(right) * hand), cross(d, r) * length(up)]");
+    out.line("}");
+  }
   if (t.helpers_.count("pov_array")) {
     out.blank();
     out.line("// POV-Ray's array[n][m]...: lists (of lists) of none, an element without a value (as in POV-Ray,");

@@ -314,6 +314,19 @@ void Translator::camera(Writer& w, const Block& b) {
     props.push_back("direction = " + clean(D));
     props.push_back("right = " + clean(R));
     props.push_back("up = " + clean(U));
+  } else if (projection.empty() && !ortho && !image_aspect) {
+    // Vectors the scene computes (`direction z * CamZoom`): POV-Ray's own construction written
+    // as rts, the helper pov_look_at turning them towards look_at as the literal case above does.
+    for (const Item* it : moves) unsupported(it->loc, "camera " + it->name, "location and look_at written moved", false);
+    helpers_.insert("pov_look_at");
+    const std::string name = fmt::format("pov_camera_{}", ++computed_cameras_);
+    w.line("// POV-Ray's camera vectors, computed: turned towards look_at as POV-Ray turns them");
+    w.line(fmt::format("let {} = pov_look_at({}, {}, {}, {}, {}, {}, {})", name, pos,
+                       look_at ? vector_value(*look_at) : "none", sky ? vector_value(*sky) : "<0, 1, 0>",
+                       direction ? vector_value(*direction) : "<0, 0, 1>",
+                       right ? vector_value(*right) : "<1.33, 0, 0>", up ? vector_value(*up) : "<0, 1, 0>",
+                       angle ? value(*angle) : "0"));
+    props.push_back(fmt::format("direction = {0}[0]  right = {0}[1]  up = {0}[2]", name));
   } else {
     for (const Item* it : moves) unsupported(it->loc, "camera " + it->name, "location and look_at written moved", false);
     if (look_at) props.push_back("look_at = " + vector_value(*look_at));

@@ -197,6 +197,7 @@ class Translator {
   // A key no POV-Ray name can be: marks the scope a macro's body opens (#local's reach).
   static constexpr const char* kMacroScope = "\x01macro";
   std::set<std::string> helpers_;  // helper macros the output needs (pov_if, pov_int)
+  int computed_cameras_ = 0;       // cameras whose vectors the scene computes (pov_camera_N)
   std::set<std::string> included_;
   std::set<std::string> reader_names_;  // declared names, for the reader (reader.hpp)
   std::set<std::string> library_names_;  // names the included standard library files define
