@@ -142,6 +142,8 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
   std::string map;           // color_map as an rts list
   std::string named_pattern;  // `pigment { P_WoodGrain1A color_map { ... } }`: a declared pigment
   std::string image;          // an image_map, moved by the pigment's transforms
+  std::vector<std::string> warp_props;  // a `warp { turbulence }` before the transforms
+  Loc warp_loc;
   double filter = 0, transmit = 0;
   static const std::set<std::string> unsupported_patterns = {
       "brick", "hexagon", "quilted", "facets", "average", "slope", "mandel",
@@ -298,7 +300,27 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
         continue;
       }
       if (n.kind == "warp") {
-        unsupported(n.loc, n.kind, "turbulence on the pattern", false);
+        // POV-Ray applies a pattern's warps and transforms to the point from the last written
+        // to the first: `warp { turbulence T }` written before every transform displaces the
+        // point in the pattern's own space, which is what rts's `turbulence` does.
+        std::vector<std::string> props;
+        bool turbulence = false, other = false;
+        for (const Item& w : n.items) {
+          if (w.kind == Item::Keyword && !w.args.empty() &&
+              (w.name == "turbulence" || w.name == "octaves" || w.name == "omega" || w.name == "lambda")) {
+            props.push_back(w.name + " = " + value(*w.args[0]));
+            turbulence |= w.name == "turbulence";
+          } else {
+            other = true;
+          }
+        }
+        if (!turbulence || other || !xforms.empty() || !warp_props.empty()) {
+          unsupported(n.loc, n.kind,
+                      "turbulence on the pattern (a warp { turbulence } written before the pigment's transforms)", false);
+          continue;
+        }
+        warp_props = props;
+        warp_loc = n.loc;
         continue;
       }
       if (n.kind == "pigment") {
@@ -324,6 +346,17 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
       }
       unsupported(n.loc, n.kind, "see docs/textures.md", false);
     }
+  }
+  if (!warp_props.empty()) {
+    // Marble and wood take a classic turbulence inside the pattern (POV-Ray's and rts's), so
+    // only other patterns, without a turbulence of their own, carry the warp as theirs.
+    const bool classic = std::any_of(pattern_props.begin(), pattern_props.end(),
+                                     [](const std::string& p) { return p.rfind("turbulence", 0) == 0; });
+    if (classic || pattern == "marble" || pattern == "wood" || pattern == "agate" || pattern == "spiral1" ||
+        pattern == "spiral2" || !pigment_pattern(pattern))
+      unsupported(warp_loc, "warp", "turbulence on a pattern without its own turbulence", false);
+    else
+      pattern_props.insert(pattern_props.end(), warp_props.begin(), warp_props.end());
   }
   if (!pattern_map_override_.empty()) map = pattern_map_override_;
   std::string suffix;

@@ -158,6 +158,18 @@ expect_grep "$TMP/out" "material = T_Stone25" "T_Stone25 kept"
 expect_grep "$TMP/out" "color = Jade" "Jade (a pigment in textures.inc) kept as the colour"
 if grep -q "warning" "$TMP/err"; then echo "FAIL: library names gave warnings:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); fi
 expect_exit 0 "library materials render" -- "$RTS" render "$TMP/lib.pov" -o "$TMP/lib.png" --width 16 --height 12 --no-progress
+# warp { turbulence }: before the pigment's transforms it is rts's turbulence on the pattern;
+# after one (POV-Ray then displaces the point in another space), on marble (whose turbulence is
+# inside the pattern) or beside a classic turbulence it is a located warning.
+cat > "$TMP/warp.pov" <<'EOF'
+plane { z, 0 pigment { bozo warp { turbulence 0.3 octaves 3 } scale 0.5 } }
+plane { z, 1 pigment { bozo scale 0.5 warp { turbulence 0.3 } } }
+plane { z, 2 pigment { marble warp { turbulence 0.3 } } }
+EOF
+expect_exit 0 "warp import" -- "$RTS" import "$TMP/warp.pov"
+expect_grep "$TMP/out" 'bozo {  turbulence = 0.3  octaves = 3 } scale 0.5' "a warp before the transforms is the pattern's turbulence"
+expect_grep "$TMP/err" "warp.pov:2:39: warning: POV-Ray's 'warp' is not translated" "a warp after a transform is reported"
+expect_grep "$TMP/err" "warp.pov:3:31: warning: POV-Ray's 'warp' is not translated" "a warp on marble is reported"
 # skies.inc's skies by name: `sky_sphere { S_Cloud2 }` is rts's S_Cloud2 (skies.rts, POV-Ray's
 # values, its pigment_map a colour map of cloud textures), with no warning; it renders.
 cat > "$TMP/skies.pov" <<'EOF'
