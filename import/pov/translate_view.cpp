@@ -136,10 +136,10 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
   // (fuzz_pov: `light_source { nt { ... } }` gave `position =` with no value).
   if (position.empty())
     error(b.loc, "a light_source begins with its location vector: light_source { <x, y, z> color rgb <r, g, b> }");
-  // An area light's keywords may come before or after `spotlight`: rts has no spot area light.
-  if (area && kind == "spot_light") {
-    unsupported(b.loc, "spotlight area_light", "area_light or spot_light", false);
-  } else if (area && kind == "point_light") {
+  // An area light's keywords may come before or after `spotlight`: a spotlight with an
+  // area_light is rts's area_light with the spot's point_at, radius and falloff.
+  const bool area_spot = area && kind == "spot_light";
+  if (area && (kind == "point_light" || area_spot)) {
     kind = "area_light";
     extra.insert(extra.begin(), area_props.begin(), area_props.end());
   }
@@ -150,7 +150,7 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
     props.push_back("position = " + position);
   }
   if (color != "rgb(1)") props.push_back("color = " + color);
-  if (kind == "spot_light") {
+  if (kind == "spot_light" || area_spot) {
     props.push_back("point_at = " + point_at);
     if (!radius.empty()) props.push_back("radius = " + radius);
     if (!falloff.empty()) props.push_back("falloff = " + falloff);

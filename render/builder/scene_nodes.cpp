@@ -413,6 +413,19 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
       l.samples = kMaxAreaSamples;
     }
     l.disc = ps.boolean("disc", l.disc);
+    if (ps.has("point_at")) {
+      // A spot's cone on an area light (POV-Ray's spotlight with area_light), from its centre.
+      l.area_spot = true;
+      l.point_at = ps.require_vec3("point_at");
+      direction(ps, "point_at", l.point_at - l.position);
+      l.radius = ps.number("radius", l.radius);
+      require(ps, "radius", l.radius >= 0 && l.radius <= 90, "from 0 to 90 degrees", l.radius);
+      l.falloff = ps.number("falloff", std::max(l.falloff, l.radius));
+      require(ps, "falloff", l.falloff >= l.radius && l.falloff <= 90, ">= radius and <= 90 degrees", l.falloff);
+    } else if (ps.has("radius") || ps.has("falloff")) {
+      const char* name = ps.has("radius") ? "radius" : "falloff";
+      throw SceneError(loc_of(ps, name), fmt::format("property '{}' of area_light needs 'point_at' (the spot's axis)", name));
+    }
     attenuation();
     ps.check_unused(kAreaLightNames);
   } else {

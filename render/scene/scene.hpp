@@ -381,6 +381,10 @@ struct LightDesc {
   bool attenuation_clamp = false;  // the factor is min(1, 1 / (c + l d + q d^2)) (UW CSE 457)
   Vec3 u{1, 0, 0}, v{0, 0, 1};     // area: edge vectors (rectangle centred on position)
   bool disc = false;               // area: an ellipse inscribed in the u,v rectangle
+  // area: limited to the spot cone of point_at, radius and falloff, its factor taken from the
+  // centre (`position`) to the shading point for every sample: POV-Ray's spotlight with an
+  // area_light (which attenuates once per light, from its centre).
+  bool area_spot = false;
   int samples = 16;                // area: shadow samples per shading point
   // area: `samples` was not written. Then the light gets kAutoAreaSamplesPerPixel samples per
   // *pixel*, spread over the pixel samples (compile_lights), instead of 16 per shading point

@@ -164,8 +164,12 @@ std::string light_text(const LightDesc& l) {
     case LightKind::Directional:
       return fmt::format("directional_light direction {} {}", vec(l.direction), common);
     case LightKind::Area:
-      return fmt::format("area_light position {} u {} v {} samples {} disc {} attenuation {} {}", vec(l.position),
-                         vec(l.u), vec(l.v), l.samples, yes(l.disc), vec(l.attenuation), common);
+      return fmt::format("area_light position {} u {} v {} samples {} disc {}{} attenuation {} {}", vec(l.position),
+                         vec(l.u), vec(l.v), l.samples, yes(l.disc),
+                         l.area_spot ? fmt::format(" point_at {} radius {} falloff {}", vec(l.point_at), num(l.radius),
+                                                   num(l.falloff))
+                                     : "",
+                         vec(l.attenuation), common);
   }
   return "?";
 }

@@ -39,6 +39,7 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     l.u = d.u;
     l.v = d.v;
     l.disc = d.disc;
+    l.area_spot = d.kind == LightKind::Area && d.area_spot;
     int asked = d.auto_samples ? auto_area_samples(pixel_samples) : d.samples;
     l.samples = d.kind == LightKind::Area ? std::clamp(asked, 1, kMaxAreaSamples) : 1;
     l.strata_side = square_side(static_cast<uint32_t>(l.samples));
@@ -60,6 +61,12 @@ double spot_factor(const CompiledLight& l, const Vec3& light_to_point) {
   if (c <= l.cos_outer) return 0.0;
   double t = (c - l.cos_outer) / (l.cos_inner - l.cos_outer);
   return t * t * (3.0 - 2.0 * t);
+}
+
+double area_spot_factor(const CompiledLight& l, const Vec3& point) {
+  const Vec3 d = point - l.position;
+  const double length = glm::length(d);
+  return length > tol::kTinyLength ? spot_factor(l, d / length) : 1.0;
 }
 
 namespace {
@@ -106,6 +113,7 @@ LightSample sample_light(const CompiledLight& l, const Vec3& point, glm::dvec2 o
       glm::dvec2 p = l.disc ? 0.5 * concentric_disc(on_light) : on_light - 0.5;  // in [-0.5, 0.5]^2
       LightSample s = toward(l.position + p.x * l.u + p.y * l.v, point);
       s.radiance = sample_radiance(l, s.distance);
+      if (l.area_spot) s.radiance *= area_spot_factor(l, point);
       return s;
     }
   }

@@ -25,6 +25,7 @@ struct CompiledLight {
   bool attenuation_clamp = false;  // factor min(1, ...): never brighter than power
   Vec3 u{1, 0, 0}, v{0, 0, 1};
   bool disc = false;
+  bool area_spot = false;      // area: the spot cone (cos_inner, cos_outer, spot_axis) from position
   int samples = 1;             // shading samples (area lights; 1 otherwise)
   uint32_t strata_side = 1;    // square_side(samples): grid strata, or 0 for N-rooks
   double inv_strata = 1.0;     // 1 / strata_side, or 1 / samples for N-rooks
@@ -65,6 +66,8 @@ LightSample sample_light(const CompiledLight& light, const Vec3& point, glm::dve
 // A spot light's smooth falloff towards the unit `light_to_point`: 1 inside the inner cone, 0
 // outside the outer one, smoothstep between.
 double spot_factor(const CompiledLight& light, const Vec3& light_to_point);
+// An area spot light's (area_spot) cone factor at `point`, from the light's centre.
+double area_spot_factor(const CompiledLight& light, const Vec3& point);
 
 // 1 / (c + l d + q d^2), guarded against non-positive denominators; with `clamp`,
 // min(1, 1 / (c + l d + q d^2)) (UW CSE 457's point lights).

@@ -114,6 +114,28 @@ TEST_CASE("builder validation messages", "[builder]") {
           b.light("area_light", p);
         }) == "property 'samples' of area_light must be >= 1, got 0");
   CHECK(scene_error([&] {
+          ParamSet p("area_light", at(1));
+          p.add("position", Vec3(0), at(1, 2));
+          p.add("u", Vec3(1, 0, 0), at(1, 3));
+          p.add("v", Vec3(0, 0, 1), at(1, 4));
+          p.add("falloff", 40.0, at(1, 5));
+          b.light("area_light", p);
+        }) == "property 'falloff' of area_light needs 'point_at' (the spot's axis)");
+  {
+    // With point_at the area light is a spot: POV-Ray's spotlight with an area_light.
+    ParamSet p("area_light", at(1));
+    p.add("position", Vec3(0, 5, 0), at(1, 2));
+    p.add("u", Vec3(1, 0, 0), at(1, 3));
+    p.add("v", Vec3(0, 0, 1), at(1, 4));
+    p.add("point_at", Vec3(0), at(1, 5));
+    p.add("radius", 20.0, at(1, 6));
+    b.light("area_light", p);
+    const LightDesc& l = b.scene().lights.back();
+    CHECK(l.area_spot);
+    CHECK(l.radius == 20.0);
+    CHECK(l.falloff == 45.0);
+  }
+  CHECK(scene_error([&] {
           ParamSet p("point_light", at(1));
           p.add("position", 3.0, at(1, 2));
           b.light("point_light", p);

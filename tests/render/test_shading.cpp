@@ -85,6 +85,31 @@ TEST_CASE("spot light: full inside radius, zero past falloff, smooth between", "
   CHECK(at_angle(12) > at_angle(18));
 }
 
+TEST_CASE("an area light with point_at is a spot: the cone's factor from its centre, on every sample", "[shading]") {
+  // POV-Ray's spotlight with an area_light attenuates once per light, from its centre: each
+  // sample of the rectangle carries the same factor (a point's light is the samples' mean).
+  const SpotAtAngle spot(10, 20);
+  LightDesc d = spot.d;
+  d.kind = LightKind::Area;
+  d.area_spot = true;
+  d.u = Vec3(2, 0, 0);
+  d.v = Vec3(0, 0, 2);
+  d.samples = 1;
+  const CompiledLight l = compile_lights({d})[0];
+  for (double deg : {0.0, 12.0, 15.0, 18.0, 25.0}) {
+    const double a = deg * std::numbers::pi / 180.0;
+    const Vec3 p = d.position + Vec3(std::sin(a), -std::cos(a), 0) * 10.0;
+    for (glm::dvec2 on : {glm::dvec2(0.1, 0.2), glm::dvec2(0.5), glm::dvec2(0.9, 0.7)}) {
+      INFO("angle " << deg << " sample " << on.x << ", " << on.y);
+      CHECK(rts::render::sample_light(l, p, on).radiance.x == Approx(spot(deg)).margin(1e-12));
+    }
+  }
+  // Without point_at the same rectangle lights every direction.
+  d.area_spot = false;
+  const CompiledLight plain = compile_lights({d})[0];
+  CHECK(rts::render::sample_light(plain, d.position + Vec3(10, -1, 0), glm::dvec2(0.5)).radiance.x == Approx(1.0));
+}
+
 TEST_CASE("spot light of radius 90: full over the half-space in front, none behind", "[shading]") {
   // POV-Ray scenes write `radius 90` (with falloff 90): a hemisphere light.
   const SpotAtAngle at_angle(90, 90);

@@ -348,12 +348,13 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
         out.radiance = glm::min(
             e.light.power * attenuation_factor(e.light.attenuation, dist, e.light.attenuation_clamp),
             Rgb(tol::kMaxRadiance));
+        if (e.light.area_spot) out.radiance *= area_spot_factor(e.light, point);
         out.pdf = e.pick;
         out.delta = true;
         return true;
       }
       if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
-      out.radiance = e.radiance;
+      out.radiance = e.light.area_spot ? e.radiance * area_spot_factor(e.light, point) : e.radiance;
       out.delta = true;  // no ray can hit it: sampling is its only strategy
       return true;
     }
