@@ -162,6 +162,8 @@ void Reader::function_header(Block& f) {
       n->kind = Expr::Name;
       n->loc = peek().loc;
       n->text = next().text;
+      for (const ExprPtr& p : params.args)
+        if (p->text == n->text) fail(n->loc, fmt::format("the function's parameter '{}' is named twice", n->text));
       params.args.push_back(n);
       if (!accept(",")) break;
     }

@@ -1,4 +1,5 @@
 // The POV-Ray reader's #declare and #local, #if/#ifdef/#ifndef, #switch, #while, #for, #macro, #include and the other directives (reader_parser.hpp).
+#include <algorithm>
 #include <cstdlib>
 #include <set>
 #include <string>
@@ -90,7 +91,12 @@ Item Reader::directive() {
     declared_.insert(it.name);
     expect("(", "to open the macro's parameters");
     while (!is_punct(")")) {
-      it.params.push_back(expect_name("a parameter name"));
+      const Loc at = peek().loc;
+      std::string name = expect_name("a parameter name");
+      // A name twice has no meaning (which argument would it hold?); rts refuses it too.
+      if (std::find(it.params.begin(), it.params.end(), name) != it.params.end())
+        fail(at, fmt::format("the macro's parameter '{}' is named twice", name));
+      it.params.push_back(std::move(name));
       declared_.insert(it.params.back());
       if (!accept(",")) break;
     }
