@@ -69,25 +69,35 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
   std::vector<std::string> extra, xforms;
   std::string fade_distance;
   const Expr* fade_power = nullptr;
+  const Item* location = nullptr;         // the light's location (the first value)
+  const Item* looks_like = nullptr;       // looks_like { object }: placed at the light
+  std::vector<const Item*> moves;         // the light's own transforms, in order
   int values = 0;
   for (const Item& it : b.items) {
     if (it.kind == Item::Value) {
+      if (values == 0) location = &it;
       if (values == 0) position = vector_value(*it.args[0]);
       else if (values == 1) color = color_value(*it.args[0]);
       ++values;
       continue;
     }
     if (it.kind == Item::Nested) {
-      if (it.block->kind == "looks_like" || it.block->kind == "projected_through")
+      if (it.block->kind == "looks_like" && prefix.empty() && !looks_like) {
+        looks_like = &it;
+      } else if (it.block->kind == "looks_like" || it.block->kind == "projected_through") {
         unsupported(it.loc, it.block->kind, "an object placed at the light (with no shadows from the light)", false);
-      else if (it.block->kind == "photons" || it.block->kind == "media_interaction") {}
-      else for (std::string& t : transforms(it)) xforms.push_back(std::move(t));
+      } else if (it.block->kind != "photons" && it.block->kind != "media_interaction") {
+        std::vector<std::string> t = transforms(it);
+        if (!t.empty()) moves.push_back(&it);
+        for (std::string& s : t) xforms.push_back(std::move(s));
+      }
       continue;
     }
     if (it.kind != Item::Keyword) continue;
     const std::string& k = it.name;
     std::vector<std::string> t = transforms(it);
     if (!t.empty()) {
+      moves.push_back(&it);
       xforms.insert(xforms.end(), t.begin(), t.end());
     } else if ((k == "color" || k == "colour") && !it.args.empty()) {
       color = color_value(*it.args[0]);
@@ -174,6 +184,29 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
   std::string suffix;
   for (const std::string& t : xforms) suffix += " " + t;
   w.line(fmt::format("{}{} {{{} }}{}", prefix, kind, s, suffix));
+  if (looks_like) {
+    // POV-Ray shows looks_like's object moved to the light's location (then by the light's
+    // transforms), and it casts no shadow of its own light; rts's casts_shadow = false leaves
+    // out its shadows from every light.
+    Block placed;
+    placed.kind = "object";
+    placed.loc = looks_like->loc;
+    for (const Item& inner : looks_like->block->items) placed.items.push_back(inner);
+    Item no_shadow;
+    no_shadow.kind = Item::Keyword;
+    no_shadow.name = "no_shadow";
+    no_shadow.loc = looks_like->loc;
+    placed.items.push_back(no_shadow);
+    Item to_light;
+    to_light.kind = Item::Keyword;
+    to_light.name = "translate";
+    to_light.loc = location->loc;
+    to_light.args.push_back(location->args[0]);
+    placed.items.push_back(to_light);
+    for (const Item* m : moves) placed.items.push_back(*m);
+    w.line("// the light's looks_like object, at the light");
+    object(w, placed, "", true);
+  }
 }
 
 void Translator::camera(Writer& w, const Block& b) {
