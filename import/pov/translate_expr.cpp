@@ -173,6 +173,19 @@ std::string Translator::vector_value(const Expr& e) {
   return t.s;
 }
 
+// POV-Ray's library colours declared rgbf (colors.inc's Clear, glass.inc's Col_Glass_*): their
+// filter, which rts's library colours (rgb) leave out; null for the others.
+static const double* library_filter(const std::string& name) {
+  static const std::map<std::string, double> filters = {
+      {"Clear", 1.0},                 {"Col_Glass_Old", 0.85},        {"Col_Glass_Winebottle", 0.6},
+      {"Col_Glass_Beerbottle", 0.6},  {"Col_Glass_Ruby", 0.8},        {"Col_Glass_Green", 0.9},
+      {"Col_Glass_Dark_Green", 0.8},  {"Col_Glass_Yellow", 0.8},      {"Col_Glass_Orange", 0.8},
+      {"Col_Glass_Vicksbottle", 0.9}, {"Col_Glass_Clear", 1.0},       {"Col_Glass_General", 0.9},
+      {"Col_Glass_Bluish", 0.8}};
+  auto it = filters.find(name);
+  return it == filters.end() ? nullptr : &it->second;
+}
+
 std::string Translator::color_value(const Expr& e, double* filter, double* transmit, int* prec) {
   Text t = expr(e);
   if (filter) *filter = t.filter;
@@ -206,8 +219,11 @@ Text Translator::expr(const Expr& e) {
       if (auto v = function_vars_.find(n); v != function_vars_.end()) return Text{v->second, Type::Float};
       if (Symbol* s = lookup(n)) {
         // colors.inc's Clear is white with filter 1: a pigment of it lets light through (the
-        // faces of a CSG box that only cuts, as in POV-Ray's quartic demos).
-        if (n == "Clear" && library_names_.count(n)) return Text{"rgb(1)", Type::Color, 12, 1.0, 0.0};
+        // faces of a CSG box that only cuts, as in POV-Ray's quartic demos); glass.inc's
+        // Col_Glass_* carry a filter too. rts's library colour is the rgb part; the filter
+        // goes with it here.
+        if (library_names_.count(n))
+          if (const double* f = library_filter(n)) return Text{n == "Clear" ? "rgb(1)" : rename(n), Type::Color, 12, *f, 0.0};
         return Text{rename(n), s->type};
       }
       if (n == "x" || n == "y" || n == "z") {

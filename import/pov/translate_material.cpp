@@ -599,6 +599,19 @@ void Translator::interior(const Block& b, MaterialProps& m) {
       missing_name(it.loc, it.args[0]->text, "interior");
       continue;
     }
+    if (it.kind == Item::Value && it.args[0]->kind == Expr::Call && it.args[0]->args.size() == 1 &&
+        (it.args[0]->text == "I_Glass_Exp" || it.args[0]->text == "I_Glass_Sqr") && library_names_.count(it.args[0]->text)) {
+      // glass.inc's macros of a fade distance: glass's index, faded exponentially or by the
+      // inverse square over that distance (glass.rts has them as macros of a material).
+      m.set("ior", "1.5");
+      fade_distance = value(*it.args[0]->args[0]);
+      fade_power = it.args[0]->text == "I_Glass_Exp" ? "1001" : "2";
+      continue;
+    }
+    if (it.kind == Item::Value) {
+      unsupported(it.loc, "interior value", "an interior's ior, fade and media, or a declared interior", false);
+      continue;
+    }
     if (it.kind == Item::Keyword && it.name == "ior" && !it.args.empty()) {
       m.set("ior", value(*it.args[0]));
     } else if (it.kind == Item::Keyword && (it.name == "fade_distance" || it.name == "fade_power") &&

@@ -206,6 +206,20 @@ if [[ -z "$mad" ]] || ! awk -v m="$mad" 'BEGIN { exit !(m <= 5.0) }'; then
 else
   echo "ok: finish names within $mad/255 of POV-Ray"
 fi
+# glass.inc's names carry POV-Ray's values: the glass scene imports without a warning and
+# renders within 1.5 codes of POV-Ray's render (glass.pov.png, 80x60; measured 0.84).
+expect_exit 0 "glass names import" -- "$RTS" import "$fin/glass.pov" -o "$TMP/glass.rts"
+if grep -q "warning" "$TMP/err"; then echo "FAIL: glass names gave warnings:"; cat "$TMP/err"; FAILS=$((FAILS + 1)); fi
+expect_grep "$TMP/glass.rts" 'material = T_Ruby_Glass with { ior = 1.5  fade_distance = 1  fade_power = 1001 }' "a glass texture with an interior's fade"
+expect_grep "$TMP/glass.rts" 'transmit = Col_Glass_Bluish [*] 0.8' "Col_Glass_Bluish keeps its filter"
+expect_exit 0 "render glass.rts" -- "$RTS" render "$TMP/glass.rts" -o "$TMP/glass.png" --width 80 --height 60 --no-progress
+"$IMGDIFF" "$fin/glass.pov.png" "$TMP/glass.png" > "$TMP/diff.txt"
+mad="$(sed -n 's#^mean |difference|: \([0-9.]*\)/255.*#\1#p' "$TMP/diff.txt")"
+if [[ -z "$mad" ]] || ! awk -v m="$mad" 'BEGIN { exit !(m <= 1.5) }'; then
+  echo "FAIL: glass names: mean difference from POV-Ray's render ${mad:-?}/255 > 1.5"; cat "$TMP/diff.txt"; FAILS=$((FAILS + 1))
+else
+  echo "ok: glass names within $mad/255 of POV-Ray"
+fi
 # A roughness that is an expression is inverted whole (POV-Ray's roughness r is rts's shininess
 # 1/r): `roughness R + 0` with R = 1/300 is shininess 300, not 1 / R + 0.
 cat > "$TMP/rough.pov" <<'EOF'

@@ -1,4 +1,4 @@
-// names.pov with rts's values for its finish and interior names written out (finish.inc's are POV-Ray's).
+// names.pov with rts's values for its finish and interior names written out (finish.inc's and glass.inc's are POV-Ray's).
 #version 3.7;
 #include "colors.inc"
 #include "finish.inc"
@@ -12,6 +12,6 @@ sphere { <-2.4, 0.6, 0>, 0.6 pigment { Red } finish { specular 1 roughness 0.001
 sphere { <-1.2, 0.6, 0.8>, 0.6 texture { pigment { color Green } finish { phong 1 phong_size 300 reflection 0.13 } } }
 sphere { <0, 0.6, 0>, 0.6 pigment { Blue } finish { specular 0.5 roughness 0.15 } }
 sphere { <1.2, 0.6, 0.8>, 0.6 pigment { color rgb <0.9, 0.7, 0.3> } finish { ambient 0.25 brilliance 4 diffuse 0.5 metallic specular 0.8 roughness 0.0125 reflection 0.5 } }
-sphere { <2.4, 0.6, 0>, 0.6 pigment { color rgbf <1, 1, 1, 0.95> } finish { ambient 0 diffuse 0 specular 1 roughness 0.0005 reflection 0.25 } interior { ior 1.5 } }
+sphere { <2.4, 0.6, 0>, 0.6 pigment { color rgbf <1, 1, 1, 0.95> } finish { ambient 0.1 diffuse 0.1 specular 1 roughness 0.001 reflection 0.25 } interior { ior 1.5 } }
 sphere { <0, 2.2, 1.5>, 0.4 pigment { Yellow } finish { ambient 1 diffuse 0 } }
 sphere { <1.6, 2, 2>, 0.5 pigment { White } finish { ambient 0 diffuse 0 reflection 1 } }
