@@ -553,6 +553,17 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
     w.line(prefix + s);
     return;
   }
+  // What may place a member: an object, a directive (a loop, an #if), a macro call; a bare
+  // value (`merge { y, 0 ... }`, from fuzz_pov) places nothing.
+  const bool members = std::any_of(children.begin(), children.end(), [](const Item* c) {
+    return c->kind != Item::Value || c->args.empty() || c->args[0]->kind == Expr::Call;
+  });
+  if ((kind == "intersection" || kind == "difference" || kind == "merge" || kind == "union") && !members) {
+    // rts's CSG needs a shape; one without shows nothing in POV-Ray either: an empty group,
+    // which renders nothing.
+    warn(b.loc, fmt::format("a {} without objects shows nothing: written as an empty group", k));
+    kind = "group";
+  }
   bool pushed = false;
   if (kind == "group") {
     if (textured || needs_default) {
