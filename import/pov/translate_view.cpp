@@ -347,9 +347,11 @@ void Translator::camera(Writer& w, const Block& b) {
     props.push_back("direction = " + clean(D));
     props.push_back("right = " + clean(R));
     props.push_back("up = " + clean(U));
-  } else if (projection.empty() && !ortho && !image_aspect) {
+  } else if (projection.empty() && !ortho && !(image_aspect && lu && ld)) {
     // Vectors the scene computes (`direction z * CamZoom`): POV-Ray's own construction written
     // as rts, the helper pov_look_at turning them towards look_at as the literal case above does.
+    // (`right x*image_width/image_height` alone keeps the look_at and fov below, which follow
+    // the image's aspect; beside a computed direction or up it is 640/480 here.)
     for (const Item* it : moves) unsupported(it->loc, "camera " + it->name, "location and look_at written moved", false);
     helpers_.insert("pov_look_at");
     const std::string name = fmt::format("pov_camera_{}", ++computed_cameras_);

@@ -170,6 +170,16 @@ expect_exit 0 "warp import" -- "$RTS" import "$TMP/warp.pov"
 expect_grep "$TMP/out" 'bozo {  turbulence = 0.3  octaves = 3 } scale 0.5' "a warp before the transforms is the pattern's turbulence"
 expect_grep "$TMP/err" "warp.pov:2:39: warning: POV-Ray's 'warp' is not translated" "a warp after a transform is reported"
 expect_grep "$TMP/err" "warp.pov:3:31: warning: POV-Ray's 'warp' is not translated" "a warp on marble is reported"
+# A camera whose direction is computed beside `right x*image_width/image_height` (POV-Ray's
+# stacker demos): POV-Ray's construction through the pov_look_at helper, the image's size as
+# 640x480 (a located warning each).
+cat > "$TMP/cam_aspect.pov" <<'EOF'
+#declare Zoom = 2;
+camera { location <1, 2, -5> direction z * Zoom right x*image_width/image_height look_at <0, 1, 0> }
+EOF
+expect_exit 0 "computed camera with the image's aspect" -- "$RTS" import "$TMP/cam_aspect.pov"
+expect_grep "$TMP/out" 'let pov_camera_1 = pov_look_at[(]<1, 2, -5>, <0, 1, 0>, <0, 1, 0>, <0, 0, 1> [*] Zoom, <1, 0, 0> [*] 640 / 480, <0, 1, 0>, 0[)]' "the helper takes the computed vectors"
+expect_grep "$TMP/err" "'image_width' is taken as 640" "the image size is reported"
 # skies.inc's skies by name: `sky_sphere { S_Cloud2 }` is rts's S_Cloud2 (skies.rts, POV-Ray's
 # values, its pigment_map a colour map of cloud textures), with no warning; it renders.
 cat > "$TMP/skies.pov" <<'EOF'
