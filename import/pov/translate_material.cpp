@@ -508,15 +508,30 @@ void Translator::finish(const Block& b, MaterialProps& m) {
       continue;
     }
     if (it.kind == Item::Nested && it.block->kind == "reflection") {
-      // reflection { rmin rmax fresnel metallic }: the largest of the values.
-      std::string r;
+      // reflection { [rmin,] rmax fresnel falloff metallic }: rmax is `reflect`; a different
+      // rmin is rts's variable reflection, reflect_min head-on rising to reflect (POV-Ray's).
+      std::vector<const Expr*> values;
       for (const Item& v : it.block->items)
-        if (v.kind == Item::Value) r = value(*v.args[0]);
-      if (!r.empty()) m.set("reflect", r);
+        if (v.kind == Item::Value) values.push_back(v.args[0].get());
+      // A number stays one (rts reads it as a grey); a colour is a colour.
+      auto amount = [&](const Expr& e) {
+        double k;
+        return literal_number(e, k) ? num(k) : color_value(e);
+      };
+      if (!values.empty()) m.set("reflect", amount(*values.back()));
+      if (values.size() >= 2) {
+        double lo = 0, hi = 0;
+        const bool same = literal_number(*values[0], lo) && literal_number(*values.back(), hi) && lo == hi;
+        if (!same) m.set("reflect_min", amount(*values[0]));
+      }
       for (const Item& v : it.block->items) {
-        if (v.kind == Item::Keyword && v.name == "fresnel") m.set("fresnel", "true");
+        if (v.kind == Item::Keyword && v.name == "fresnel" && (v.args.empty() || value(*v.args[0]) != "0"))
+          m.set("fresnel", "true");
+        if (v.kind == Item::Keyword && v.name == "falloff" && !v.args.empty()) m.set("reflect_falloff", value(*v.args[0]));
         if (v.kind == Item::Keyword && v.name == "metallic")  // `metallic` alone is 1
           m.set("reflect_metallic", v.args.empty() ? "1" : value(*v.args[0]));
+        if (v.kind == Item::Keyword && v.name == "exponent")
+          unsupported(v.loc, "reflection exponent", "reflect and reflect_min (the reflection's own brightness)", false);
       }
       continue;
     }

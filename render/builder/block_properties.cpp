@@ -87,6 +87,8 @@ constexpr PropertyInfo kMaterial[] = {
     {"brilliance", "number ≥ 0", "`1`", "Whitted: the diffuse term is (N·L)^brilliance, a steeper fall-off above 1 (POV-Ray's brilliance; path mode: Lambert)."},
     {"metallic", "number ≥ 0", "`0`", "Whitted: tints the highlight with the surface color, less at grazing light (POV-Ray's metallic; 1 in full)."},
     {"reflect_metallic", "number ≥ 0", "`0`", "Whitted: tints the reflection with the surface color, less at grazing angles (POV-Ray's reflection { metallic }; 1 in full)."},
+    {"reflect_min", "color ≥ 0", "none", "Whitted: the reflection head-on, rising to `reflect` at grazing angles (by Fresnel's factor with `fresnel`, else by (1 − cos)^reflect_falloff): POV-Ray's reflection { min, max }."},
+    {"reflect_falloff", "number ≥ 0", "`1`", "Whitted, with `reflect_min` and no `fresnel`: the exponent of (1 − cos) that blends reflect_min into reflect (POV-Ray's reflection falloff)."},
     {"media_absorption", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light absorbed per unit length (POV-Ray's media absorption)."},
     {"media_scattering", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light scattered per unit length (POV-Ray's scattering color)."},
     {"media_emission", "color ≥ 0", "`rgb(0)`", "Medium inside (needs `transmit`): light given off per unit length."},

@@ -611,6 +611,12 @@ MaterialId SceneBuilder::ordinary_material(ParamSet& ps, const MaterialDesc* sta
   m.brilliance = non_negative(ps, "brilliance", ps.number("brilliance", m.brilliance));
   m.metallic = non_negative(ps, "metallic", ps.number("metallic", m.metallic));
   m.reflect_metallic = non_negative(ps, "reflect_metallic", ps.number("reflect_metallic", m.reflect_metallic));
+  if (ps.has("reflect_min")) {
+    m.has_reflect_min = true;
+    m.reflect_min = ps.color("reflect_min", m.reflect_min);
+    non_negative_color(ps, "reflect_min", m.reflect_min);
+  }
+  m.reflect_falloff = non_negative(ps, "reflect_falloff", ps.number("reflect_falloff", m.reflect_falloff));
   if (!channel_texture("reflect", m.reflect_texture)) {
     m.reflect = ps.color("reflect", m.reflect);
     non_negative_color(ps, "reflect", m.reflect);

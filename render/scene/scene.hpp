@@ -121,6 +121,12 @@ struct MaterialDesc {
   // POV-Ray's reflection { metallic }, Whitted only: the reflection tinted by the surface
   // colour as `metallic` tints the highlight, by the viewing angle (render/shade/material.hpp).
   double reflect_metallic = 0.0;
+  // POV-Ray's variable reflection, reflection { min, max }, Whitted only: with has_reflect_min
+  // the reflection runs from reflect_min head-on to `reflect` at grazing angles, by Fresnel's
+  // factor when `fresnel` is set, else by (1 - cos)^reflect_falloff (render/shade/material.hpp).
+  bool has_reflect_min = false;
+  Color reflect_min{0.0};
+  double reflect_falloff = 1.0;
   Color reflect{0.0};          // mirror reflection weight per channel
   Color transmit{0.0};         // transmission weight per channel (also filters shadows)
   double ior = 1.0;            // absolute index of the inside (the medium stack pairs media)

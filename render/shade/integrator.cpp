@@ -74,7 +74,7 @@ Integrator::Integrator(const World& world, const std::vector<CompiledLight>& lig
       if (m.transmit_texture != kNoId || (chosen && transmits(m))) textured_transmit = true;
       if (m.medium < media_->size() && transmits(m)) media_on_ = true;
       if (passes_through(m)) has_pass_through_ = true;
-      if (!(m.ambient_color == Color(1.0)) || m.reflect_metallic > 0.0) pov_finish_extras = true;
+      if (!(m.ambient_color == Color(1.0)) || m.reflect_metallic > 0.0 || m.has_reflect_min) pov_finish_extras = true;
     });
   }
   // Media scenes, and scenes with surfaces light passes through unchanged, take the generic
@@ -446,7 +446,18 @@ Rgb Integrator::surface(const PendingRay& pr, const WorldHit& hit, const Materia
   double cos_i = std::clamp(glm::dot(n, view), 0.0, 1.0);
   Interface f;
   if (!is_black(to_rgb(m.transmit))) f = interface(pr.media, hit.medium, m, entering);
-  const SpecularWeights w = specular_weights(m, incident, n, cos_i, f.n_from, f.n_to);
+  SpecularWeights w = specular_weights(m, incident, n, cos_i, f.n_from, f.n_to);
+  if constexpr (kMedia) {
+    // POV-Ray's reflection { min, max } (only scenes with it, which take the generic path).
+    // Total internal reflection (a transmitting surface that refracts nothing) stays a mirror.
+    // With fresnel the interface splits its budget as specular_weights does: what reflects does
+    // not pass (POV-Ray's conserve_energy, which its glass finishes write).
+    const bool transmits = !is_black(to_rgb(m.transmit));
+    if (m.has_reflect_min && !(transmits && is_black(w.transmit))) {
+      w.reflect = variable_reflection(m, cos_i, transmits ? f.n_to / f.n_from : m.ior);
+      if (transmits && m.fresnel) w.transmit = to_rgb(m.transmit) * glm::max(Rgb(0.0), Rgb(1.0) - w.reflect);
+    }
+  }
   const Rgb &kr = w.reflect, &kt = w.transmit;
   const Vec3& refracted = w.refracted;
 

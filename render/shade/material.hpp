@@ -110,6 +110,28 @@ inline Rgb phong(const MaterialDesc& m, const Rgb& diffuse_color, const Vec3& n,
   return shade;
 }
 
+// The unpolarised Fresnel reflectance of a dielectric interface for cos_i = cos of the incidence
+// angle and eta = n_to / n_from (the textbook form, Cook and Torrance 1982): 1 under total
+// internal reflection, 0 for eta = 1.
+inline double fresnel_dielectric(double cos_i, double eta) {
+  const double c = std::clamp(cos_i, 0.0, 1.0);
+  const double g2 = eta * eta + c * c - 1.0;
+  if (!(g2 > 0.0)) return 1.0;
+  const double g = std::sqrt(g2);
+  const double a = (g - c) / (g + c);
+  const double b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+  return std::clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
+}
+
+// POV-Ray's variable reflection (MaterialDesc::has_reflect_min): reflect_min head-on to
+// `reflect` at grazing angles, by the Fresnel reflectance for the interface's eta (with
+// `fresnel`) or by (1 - cos_i)^reflect_falloff. Total internal reflection keeps what
+// specular_weights gave (everything reflects).
+inline Rgb variable_reflection(const MaterialDesc& m, double cos_i, double eta) {
+  const double t = m.fresnel ? fresnel_dielectric(cos_i, eta) : std::pow(std::max(0.0, 1.0 - cos_i), m.reflect_falloff);
+  return to_rgb(m.reflect) * t + to_rgb(m.reflect_min) * (1.0 - t);
+}
+
 // POV-Ray's reflection { metallic }: the reflection turned towards the surface colour by
 // metallic * (1 - F), F the same empirical curve of the viewing angle (cos_i = n · view).
 inline Rgb metallic_reflection(const MaterialDesc& m, const Rgb& surface, double cos_i) {

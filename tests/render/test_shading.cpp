@@ -110,6 +110,29 @@ TEST_CASE("an area light with point_at is a spot: the cone's factor from its cen
   CHECK(rts::render::sample_light(plain, d.position + Vec3(10, -1, 0), glm::dvec2(0.5)).radiance.x == Approx(1.0));
 }
 
+TEST_CASE("variable reflection: reflect_min head-on to reflect at grazing angles (POV-Ray's reflection { min, max })", "[shading]") {
+  // The unpolarised Fresnel reflectance: 4% head-on for glass (((1.5 - 1) / 2.5)^2), all of it at
+  // grazing incidence, none across an index-matched interface, all under total reflection.
+  CHECK(fresnel_dielectric(1.0, 1.5) == Approx(0.04).margin(1e-12));
+  CHECK(fresnel_dielectric(0.0, 1.5) == Approx(1.0).margin(1e-12));
+  CHECK(fresnel_dielectric(0.7, 1.0) == Approx(0.0).margin(1e-12));
+  CHECK(fresnel_dielectric(0.2, 1.0 / 1.5) == 1.0);
+  CHECK(fresnel_dielectric(0.5, 1.5) > fresnel_dielectric(0.9, 1.5));
+  MaterialDesc m;
+  m.reflect = Color(0.9);
+  m.has_reflect_min = true;
+  m.reflect_min = Color(0.1);
+  // Without fresnel: (1 - cos)^falloff blends reflect_min (head-on) into reflect (grazing).
+  CHECK(variable_reflection(m, 1.0, 1.5).x == Approx(0.1));
+  CHECK(variable_reflection(m, 0.0, 1.5).x == Approx(0.9));
+  CHECK(variable_reflection(m, 0.5, 1.5).x == Approx(0.1 + 0.8 * 0.5));
+  m.reflect_falloff = 3.0;
+  CHECK(variable_reflection(m, 0.5, 1.5).x == Approx(0.1 + 0.8 * 0.125));
+  // With fresnel: F reflect + (1 - F) reflect_min.
+  m.fresnel = true;
+  CHECK(variable_reflection(m, 1.0, 1.5).x == Approx(0.04 * 0.9 + 0.96 * 0.1));
+}
+
 TEST_CASE("spot light of radius 90: full over the half-space in front, none behind", "[shading]") {
   // POV-Ray scenes write `radius 90` (with falloff 90): a hemisphere light.
   const SpotAtAngle at_angle(90, 90);
