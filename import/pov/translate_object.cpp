@@ -239,6 +239,11 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
           if (ek != Expr::Name && ek != Expr::Call && ek != Expr::Index)
             error(it.loc, "'object' reuses a declared object, a macro's or an array element: object { Name ... }");
           base = value(*it.args[0]);
+          // A name of a value that is no object (`object { z A38 }`, fuzz_pov: z is <0, 0, 1>)
+          // would be written as that value.
+          if (ek == Expr::Name && !base.empty() && !(std::isalpha(static_cast<unsigned char>(base[0])) || base[0] == '_'))
+            error(it.loc, fmt::format("'object' reuses a declared object, and '{}' is a value: object {{ Name ... }}",
+                                      it.args[0]->text));
         } else if (k == "union" || k == "merge" || k == "intersection" || k == "difference" || k == "mesh") {
           children.push_back(&it);
         } else {
