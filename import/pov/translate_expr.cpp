@@ -63,6 +63,7 @@ std::string Translator::rename(const std::string& n) const {
                                                  "break", "continue", "include", "true", "false", "none", "and",
                                                  "or", "not", "with", "translate", "rotate", "scale", "matrix",
                                                  "step"};
+  if (auto a = aliases_.find(n); a != aliases_.end()) return a->second;
   return reserved.count(n) ? n + "_" : n;
 }
 

@@ -159,14 +159,28 @@ void Translator::include(Writer& w, const Item& it) {
   }
   // The user's own include: translated to its own .rts beside the scene, once.
   std::string canonical = fs::weakly_canonical(found, ec).string();
-  std::string out_name = fs::path(name).stem().string() + ".rts";
+  // Each include file its own .rts, named after it; never the scene's own name (local.pov
+  // including local.inc would overwrite itself) nor another include's (a.inc and a.mcr).
+  std::string& out_name = include_names_[canonical];
+  if (out_name.empty()) {
+    const std::string stem = fs::path(name).stem().string();
+    const std::string ext = fs::path(name).extension().string();
+    out_name = stem + ".rts";
+    if (stem == fs::path(opt_.source_path).stem().string() || include_outputs_.count(out_name))
+      out_name = stem + "_" + (ext.size() > 1 ? ext.substr(1) : std::string("inc")) + ".rts";
+    for (int n = 2; include_outputs_.count(out_name); ++n) out_name = fmt::format("{}_{}.rts", stem, n);
+    include_outputs_.insert(out_name);
+  }
   if (!included_.count(canonical)) {
     included_.insert(canonical);
     if (++include_depth_ > 50) error(it.loc, "includes nested more than 50 deep");
     std::ifstream in(found, std::ios::binary);
     std::stringstream text;
     text << in.rdbuf();
-    std::string saved_file = file_, saved_dir = dir_;
+    std::string saved_file = file_, saved_dir = dir_, saved_stem = include_stem_;
+    const std::map<std::string, std::string> saved_aliases = aliases_;
+    include_stem_ = fs::path(name).stem().string();
+    include_shadows_.emplace_back();
     Program p;
     try {
       p = read_program(text.str(), name, reader_names_);
@@ -179,6 +193,14 @@ void Translator::include(Writer& w, const Item& it) {
     this->file(p, found.string(), iw);
     file_ = saved_file;
     dir_ = saved_dir;
+    // The file's top-level #locals end with it: the includer's symbols come back.
+    for (auto& [local, before] : include_shadows_.back()) {
+      if (before) scopes_.front()[local] = *before;
+      else scopes_.front().erase(local);
+    }
+    include_shadows_.pop_back();
+    aliases_ = saved_aliases;
+    include_stem_ = saved_stem;
     --include_depth_;
     result_.includes.push_back(PovOutputFile{out_name, iw.text()});
   }

@@ -2,6 +2,7 @@
 // Lights, the camera and global settings are in translate_view.cpp; includes, files and the
 // entry point, import_pov, in translate_files.cpp.
 #include <algorithm>
+#include <cctype>
 #include <string>
 #include <vector>
 
@@ -291,6 +292,26 @@ void Translator::item(Writer& w, const Item& it, bool top) {
 }
 
 void Translator::declare(Writer& w, const Item& it) {
+  if (it.local && !include_stem_.empty() && scopes_.size() == 1 && it.args.size() == 1 &&
+      !std::any_of(include_shadows_.back().begin(), include_shadows_.back().end(),
+                   [&](const auto& s) { return s.first == it.name; })) {
+    // A #local at an include file's top level: the file's own name (see aliases_), an alias
+    // that no symbol has, under which the file's later uses write it.
+    std::string alias = it.name + "_" + include_stem_;
+    for (auto c = alias.begin(); c != alias.end(); ++c)
+      if (!std::isalnum(static_cast<unsigned char>(*c))) *c = '_';
+    for (int k = 2; lookup(alias) || std::any_of(aliases_.begin(), aliases_.end(), [&](const auto& a) {
+                      return a.second == alias;
+                    });
+         ++k)
+      alias = fmt::format("{}_{}_{}", it.name, include_stem_, k);
+    auto& global = scopes_.front();
+    auto before = global.find(it.name);
+    include_shadows_.back().emplace_back(it.name, before == global.end() ? std::nullopt
+                                                                          : std::optional<Symbol>(before->second));
+    if (before != global.end()) global.erase(before);
+    aliases_[it.name] = alias;
+  }
   const std::string n = rename(it.name);
   if (it.args.size() >= 2) {  // #declare A[i] = v, A[i][j] = v
     // rts's lists are values: the element changes in a copy, A = with_item(A, i, v), nested

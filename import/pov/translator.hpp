@@ -8,6 +8,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -199,6 +200,8 @@ class Translator {
   std::set<std::string> helpers_;  // helper macros the output needs (pov_if, pov_int)
   int computed_cameras_ = 0;       // cameras whose vectors the scene computes (pov_camera_N)
   std::set<std::string> included_;
+  std::map<std::string, std::string> include_names_;  // an include file (canonical) → its .rts
+  std::set<std::string> include_outputs_;             // the .rts names given out
   std::set<std::string> reader_names_;  // declared names, for the reader (reader.hpp)
   std::set<std::string> library_names_;  // names the included standard library files define
   std::set<std::string> library_material_macros_;  // their macros that return a material
@@ -231,6 +234,13 @@ class Translator {
   MaterialProps default_texture_;  // #default { ... }
   Writer* pending_comment_ = nullptr;
   int include_depth_ = 0;
+  // POV-Ray's #local at an include file's top level belongs to that file; rts's include shares
+  // the includer's names, so such a local is written under an alias (Thing_local for
+  // local.inc's Thing) while the file is translated, and the includer's symbol comes back
+  // after it (translate_files.cpp, declare()).
+  std::string include_stem_;                          // the include file being translated, or ""
+  std::map<std::string, std::string> aliases_;        // POV-Ray name -> rts name, in effect now
+  std::vector<std::vector<std::pair<std::string, std::optional<Symbol>>>> include_shadows_;
   // Inside a function body: POV-Ray's x, y, z are the point's coordinates, not axis vectors.
   std::map<std::string, std::string> function_vars_;
   int functions_written_ = 0;  // macros made from isosurface and height field functions
