@@ -220,7 +220,7 @@ glm::dvec4 CompiledTexture::eval_map_entries(const Vec3& q) const {
   const double t = pattern::wave(desc_.pattern, pattern::raw_value(desc_.pattern, q));
   auto entry = [&](std::size_t i) {
     if (map[i].texture == kNoId) return glm::dvec4(map[i].color, map[i].transmit);
-    return map_entries_[i].eval_layer(q);   // the entry's own transform, then its value at q
+    return map_entries_[i]->eval_layer(q);   // the entry's own transform, then its value at q
   };
   if (!(t > map.front().value)) return entry(0);   // also NaN
   if (t >= map.back().value) return entry(map.size() - 1);
@@ -299,7 +299,8 @@ std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std:
     return it->second;
   };
   std::vector<CompiledTexture> compiled;
-  compiled.reserve(scene.textures.size());
+  compiled.reserve(scene.textures.size());   // never reallocated: map entries point into it
+  std::vector<int> nesting(scene.textures.size(), 0);   // color maps of maps, per texture
   for (std::size_t id = 0; id < scene.textures.size(); ++id) {
     const TextureDesc& desc = scene.textures[id];
     const bool has_files = desc.kind == TextureKind::Image || desc.kind == TextureKind::LatLong ||
@@ -323,16 +324,21 @@ std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std:
     if (desc.kind == TextureKind::Pattern &&
         std::any_of(map.begin(), map.end(), [](const ColorMapEntry& e) { return e.texture != kNoId; })) {
       // A pigment_map: its entries' textures were built before it (its block realised them).
-      std::vector<CompiledTexture> entries;
+      std::vector<const CompiledTexture*> entries;
       entries.reserve(map.size());
       for (const ColorMapEntry& e : map) {
-        if (e.texture == kNoId)
-          entries.emplace_back(TextureDesc{}, std::vector<std::shared_ptr<const Image>>{});   // never evaluated
-        else if (e.texture < id)
-          entries.push_back(compiled[e.texture]);
-        else
+        if (e.texture == kNoId) {
+          entries.push_back(nullptr);   // a plain colour: never evaluated as a texture
+        } else if (e.texture < id) {
+          entries.push_back(&compiled[e.texture]);
+          nesting[id] = std::max(nesting[id], nesting[e.texture] + 1);
+        } else {
           throw RenderError(desc.loc, "a color map entry is not a texture built before its pattern");
+        }
       }
+      if (nesting[id] > kMaxColorMapNesting)
+        throw RenderError(desc.loc, fmt::format("color maps whose entries are textures nest {} deep here; at most {}",
+                                                nesting[id], kMaxColorMapNesting));
       compiled.back().set_map_entries(std::move(entries));
     }
     if (desc.kind == TextureKind::SkySphere) {

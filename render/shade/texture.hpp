@@ -57,8 +57,10 @@ class CompiledTexture {
     sky_background_ = background;
   }
   // Pattern with a pigment_map: the compiled texture of each entry that holds one, in the
-  // order of the color map (entries without a texture hold an unused placeholder).
-  void set_map_entries(std::vector<CompiledTexture> entries) { map_entries_ = std::move(entries); }
+  // order of the color map (null for entries without one). They point into the vector
+  // compile_textures returns (entries are built before their map; the vector never grows),
+  // so a map of maps shares its entries instead of copying them.
+  void set_map_entries(std::vector<const CompiledTexture*> entries) { map_entries_ = std::move(entries); }
   // The size of one texel in uv units (0 for procedural textures), for bump-map differences.
   double texel_size() const;
   // Whether eval() reads TexturePoint::uv (an image with `mapping = "uv"`); every other kind
@@ -78,7 +80,7 @@ class CompiledTexture {
   Mat4 inverse_;                                       // object space → texture space
   std::vector<std::shared_ptr<const Image>> images_;   // image kinds only (linear RGB)
   std::vector<CompiledTexture> sky_layers_;            // SkySphere only, bottom first
-  std::vector<CompiledTexture> map_entries_;           // Pattern with textures in its map only
+  std::vector<const CompiledTexture*> map_entries_;    // Pattern with textures in its map only
   Color sky_background_{0.0};                          // SkySphere: behind every layer
   bool uses_uv_ = false;
 };
@@ -88,6 +90,12 @@ class CompiledTexture {
 // refers to are never opened (their CompiledTexture has no image and is never evaluated).
 // `max_memory` (--max-memory, 0: no limit): each image file is checked against it from its
 // header before its pixels are decoded.
+// Color maps whose entries are textures (pigment_map) nest at most this deep: each level is a
+// call in the evaluation (and the stack's depth), so a chain built by a loop stops with a
+// located error instead.
+inline constexpr int kMaxColorMapNesting = 32;
+// The textures hold pointers into the returned vector (color map entries): keep it, move it,
+// but do not copy it apart from its elements' owners.
 std::vector<CompiledTexture> compile_textures(const SceneDesc& scene, const std::vector<bool>* used = nullptr,
                                               std::size_t max_memory = 0);
 

@@ -106,3 +106,35 @@ TEST_CASE("an image used only in a pigment_map is loaded: a missing file is a lo
     CHECK(e.where.line == 3);
   }
 }
+
+TEST_CASE("maps of maps share their entries and nest at most kMaxColorMapNesting deep", "[pigment_map]") {
+  // Each level a map of the level below, twice: copied, level 30 would hold 2^30 textures; the
+  // entries point at the level below instead. Past the limit a located error stops it.
+  auto chain = [](int levels) {
+    SceneDesc s;
+    s.textures.push_back(gradient(1, kRed, kBlue));
+    for (int k = 1; k <= levels; ++k) {
+      TextureDesc t = gradient(k % 2, glm::dvec3(0), glm::dvec3(0));
+      t.pattern.color_map[0].texture = static_cast<TextureId>(k - 1);
+      t.pattern.color_map[1].texture = static_cast<TextureId>(k - 1);
+      t.loc = SourceRef{"maps.rts", k, 1};
+      s.textures.push_back(t);
+    }
+    return s;
+  };
+  const SceneDesc ok = chain(kMaxColorMapNesting);
+  const std::vector<CompiledTexture> compiled = compile_textures(ok);
+  TexturePoint p;
+  p.object_point = Vec3(0.3, 0.25, 0.0);
+  // Every level blends the same texture with itself: the innermost gradient's colour at y.
+  const Color c = compiled.back().eval(p);
+  CHECK(c.r == Approx(0.75).margin(1e-12));
+  CHECK(c.b == Approx(0.25).margin(1e-12));
+  try {
+    compile_textures(chain(kMaxColorMapNesting + 1));
+    FAIL("expected a RenderError");
+  } catch (const RenderError& e) {
+    CHECK(e.where.line == kMaxColorMapNesting + 1);
+    CHECK(std::string(e.what()).find("at most 32") != std::string::npos);
+  }
+}
