@@ -52,7 +52,7 @@ constexpr BuiltinDoc kBuiltins[] = {
     {"vturbulence", "vturbulence(lambda, omega, octaves, p)", "POV-Ray's vector turbulence: the displacement a turbulence warp scales."},
     {"cells", "cells(p)", "A random value per unit cell, in [0, 1)."},
     {"worley", "worley(p)", "Cellular (Worley) noise: the distance to the nearest feature point."},
-    {"random", "random(seed)", "A deterministic random stream."},
+    {"random", "random(seed[, \"povray\"])", "A deterministic random stream (\"povray\": POV-Ray 3.7's sequence for the seed)."},
     {"rand", "rand(r, [lo, hi])", "The next number of stream r, in [0, 1) or [lo, hi)."},
     {"identity", "identity()", "The identity transform."},
     {"vrotate", "vrotate(v, angles)", "v turned as `rotate angles` turns an object (degrees)."},

@@ -295,14 +295,28 @@ Value vturbulence(BuiltinCall& c) {
 }
 
 // random(seed) makes a stream; rand(r) draws from it in [0, 1), rand(r, lo, hi) in [lo, hi).
+// random(seed, "povray") draws POV-Ray 3.7's sequence for that seed instead (rts import).
 Value random(BuiltinCall& c) {
   // Seeds are whole numbers a double holds exactly, so the same text is the same seed.
   constexpr double kMaxExactWhole = 9007199254740992.0;  // 2^53
   double seed = num(c, 0);
-  if (seed < 0 || seed > kMaxExactWhole || std::floor(seed) != seed) bad_arg(c, 0, "a whole number from 0 to 2^53");
+  bool povray = false;
+  if (c.argc == 2) {
+    if (c.args[1].type != Type::String || as_string(c.args[1]) != "povray")
+      bad_arg(c, 1, "\"povray\" (POV-Ray's own sequence)");
+    povray = true;
+  }
+  if (povray) {
+    // POV-Ray takes the seed as a C int: whole numbers, negative ones wrapping.
+    if (!(std::abs(seed) <= kMaxExactWhole) || std::floor(seed) != seed) bad_arg(c, 0, "a whole number");
+    seed = std::fmod(seed, 4294967296.0);
+    if (seed < 0) seed += 4294967296.0;
+  } else if (seed < 0 || seed > kMaxExactWhole || std::floor(seed) != seed) {
+    bad_arg(c, 0, "a whole number from 0 to 2^53");
+  }
   Value v;
   v.type = Type::Random;
-  v.ref = std::make_shared<RandomValue>(static_cast<uint64_t>(seed));
+  v.ref = std::make_shared<RandomValue>(static_cast<uint64_t>(seed), povray);
   return v;
 }
 Value rand(BuiltinCall& c) {
@@ -371,7 +385,7 @@ const std::vector<Builtin>& builtin_table() {
       {"vturbulence", 4, 4, vturbulence},
       {"cells", 1, 1, cells},
       {"worley", 1, 1, worley},
-      {"random", 1, 1, random},
+      {"random", 1, 2, random},
       {"rand", 1, 3, rand},
       {"identity", 0, 0, identity},
   });

@@ -94,6 +94,12 @@ uint64_t RandomValue::next_u64() {
 }
 
 double RandomValue::next_unit() {
+  if (povray) {
+    // POV-Ray 3.7's generator: a 32-bit linear congruential step (multiplier 1812433253,
+    // increment 12345), the state over 2^32 - 1.
+    state = static_cast<uint32_t>(static_cast<uint32_t>(state) * 1812433253u + 12345u);
+    return static_cast<double>(state) / 4294967295.0;
+  }
   constexpr double kTwoToMinus53 = 1.0 / 9007199254740992.0;
   return static_cast<double>(next_u64() >> 11) * kTwoToMinus53;
 }

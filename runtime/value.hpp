@@ -146,9 +146,12 @@ struct MacroValue : HeapValue {
 // every platform and run.
 struct RandomValue : HeapValue {
   uint64_t state;
-  explicit RandomValue(uint64_t seed) : state(seed) {}
+  // random(seed, "povray"): POV-Ray 3.7's own sequence (seed(n) then rand), so an imported
+  // scene's random placements are POV-Ray's; next_unit() is then in [0, 1].
+  bool povray = false;
+  explicit RandomValue(uint64_t seed, bool pov = false) : state(seed), povray(pov) {}
   uint64_t next_u64();
-  double next_unit();  // uniform in [0, 1), 53 random bits
+  double next_unit();  // uniform in [0, 1), 53 random bits (povray: [0, 1], 32 bits)
 };
 
 inline const std::string& as_string(const Value& v) { return static_cast<const StringValue&>(*v.ref).text; }

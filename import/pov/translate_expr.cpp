@@ -458,6 +458,8 @@ Text Translator::call(const Expr& e) {
       for (std::size_t i = 0; i < a.size(); ++i) s += (i ? " + " : "") + a[i].s;
       return Text{s, Type::String, 7};
     }
+    if (f == "seed" && a.size() == 1)  // POV-Ray's own sequence for the seed (runtime/value.cpp)
+      return Text{"random(" + a[0].s + ", \"povray\")", Type::Random, 11};
     if (f == "str") {  // POV-Ray's str(x, width, decimals): rts's str takes the same three
       std::string s;
       for (const Text& t : a) s += (s.empty() ? "" : ", ") + t.s;

@@ -147,6 +147,18 @@ TEST_CASE("random streams are deterministic from their seed", "[eval][random]") 
   CHECK(a[0] != a[1]);  // a stream advances
 }
 
+TEST_CASE("random(seed, \"povray\") draws POV-Ray 3.7's own sequence", "[eval][random]") {
+  // Printed by POV-Ray 3.7 (#debug str(rand(seed(12)), 0, 9) ..., and seed(-5)).
+  auto a = probes("let r = random(12, \"povray\")  for i in 0 .. 3 { probe(rand(r)) }");
+  REQUIRE(a.size() == 3);
+  CHECK(a[0] == Approx(0.063882885).margin(1e-9));
+  CHECK(a[1] == Approx(0.713253849).margin(1e-9));
+  CHECK(a[2] == Approx(0.250982069).margin(1e-9));
+  CHECK(probe1("let r = random(-5, \"povray\")  probe(rand(r))") == Approx(0.890052870).margin(1e-9));
+  CHECK(eval_diagnostic("let r = random(1, \"pov\")").message.find("\"povray\"") != std::string::npos);
+  CHECK(eval_diagnostic("let r = random(1.5, \"povray\")").message.find("a whole number") != std::string::npos);
+}
+
 TEST_CASE("one definition placed many times is one shape and many instances", "[eval][instancing]") {
   SceneDesc s = eval_text("let s = sphere { radius = 0.1 }\nfor i in 0 .. 100 { s translate <i, 0, 0> }");
   CHECK(s.shapes.size() == 1);
