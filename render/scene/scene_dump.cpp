@@ -218,10 +218,14 @@ void SceneDesc::dump(std::ostream& out) const {
     else if (t.kind == TextureKind::CubeMap) {
       for (const std::string& f : t.face_paths) out << ' ' << base(f);
       if (t.cube_mit) out << " orientation mit";
-    } else if (t.kind == TextureKind::Pattern)
+    } else if (t.kind == TextureKind::Pattern) {
       out << fmt::format(" {} color_map {} turbulence {}{}", static_cast<int>(t.pattern.kind), t.pattern.color_map.size(),
                          vec(t.pattern.turbulence), t.pattern.function ? " function" : "");
-    else
+      std::string entries;  // a pigment_map's textures, by entry (only when it has some)
+      for (const ColorMapEntry& e : t.pattern.color_map)
+        if (e.texture != kNoId) entries += fmt::format(" {}", e.texture);
+      if (!entries.empty()) out << " entry_textures" << entries;
+    } else
       out << fmt::format(" color1 {} color2 {} scale {} axis {}", col(t.color1), col(t.color2), num(t.scale), t.axis);
     // Newer options print only when not their defaults, so older dumps stay as they were.
     if (t.linear) out << " color_space linear";
@@ -259,6 +263,8 @@ void SceneDesc::dump(std::ostream& out) const {
       if (tex != kNoId) extra += fmt::format(" {} texture {}", name, tex);
     if (m.bump != kNoId) extra += fmt::format(" bump_scale {}", num(m.bump_scale));
     if (!extra.empty()) out << "    maps" << extra << '\n';
+    if (m.has_reflect_min)
+      out << fmt::format("    reflect_min {} reflect_falloff {}\n", col(m.reflect_min), num(m.reflect_falloff));
     if (m.medium != kNoId) out << fmt::format("    medium {}\n", m.medium);
     if (!(m.ambient_color == Color(1.0))) out << fmt::format("    ambient color {}\n", col(m.ambient_color));
   }
