@@ -13,6 +13,25 @@
 
 namespace rts::import::pov {
 
+Block Translator::density_as_pigment(const Block& density) {
+  // A density is a pigment whose map gives numbers or greys: the same pattern block. Its
+  // density_map holds colours (a color_map) or, by name, other densities (a pigment_map).
+  Block as_pigment = density;
+  as_pigment.kind = "pigment";
+  for (Item& d : as_pigment.items)
+    if (d.kind == Item::Nested && d.block->kind == "density_map") {
+      auto copy = std::make_shared<Block>(*d.block);
+      bool named = false;
+      for (const Item& e : copy->items)
+        if (e.kind == Item::MapEntry && e.block->items.size() >= 2 && e.block->items[1].kind == Item::Value &&
+            e.block->items[1].args[0]->kind == Expr::Name)
+          if (Symbol* s = lookup(e.block->items[1].args[0]->text); s && s->type == Type::Pigment) named = true;
+      copy->kind = named ? "pigment_map" : "color_map";
+      d.block = copy;
+    }
+  return as_pigment;
+}
+
 namespace {
 constexpr double kPi = std::numbers::pi;
 
@@ -100,16 +119,7 @@ std::vector<std::pair<std::string, std::string>> Translator::media(const Block& 
         continue;
       }
       density_seen = true;
-      // A density is a pigment whose map gives numbers or greys: the same pattern block.
-      Block as_pigment = n;
-      as_pigment.kind = "pigment";
-      for (Item& d : as_pigment.items)
-        if (d.kind == Item::Nested && d.block->kind == "density_map") {
-          auto copy = std::make_shared<Block>(*d.block);
-          copy->kind = "color_map";
-          d.block = copy;
-        }
-      const std::string tex = pigment_value(as_pigment);
+      const std::string tex = pigment_value(density_as_pigment(n));
       if (tex.find('{') == std::string::npos)
         unsupported(n.loc, "density", "a media_density pattern (bozo, granite, ...); a constant density scales "
                                       "the coefficients instead",

@@ -157,6 +157,7 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
   MaterialProps mat;
   bool textured = false;
   std::vector<const Item*> texture_blocks, interiors;  // two textures or more: layers
+  std::size_t interior_at = std::string::npos;  // how many transforms came before the interior
   std::string base;  // object { X }
   const Expr* font = nullptr;  // text { ttf "font" ... }
   text_values_.clear();
@@ -253,7 +254,10 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
       case Item::Nested:
         if (is_texture_part(it.block->kind)) {
           if (it.block->kind == "texture") texture_blocks.push_back(&it);
-          if (it.block->kind == "interior") interiors.push_back(&it);
+          if (it.block->kind == "interior") {
+            interiors.push_back(&it);
+            if (interior_at == std::string::npos) interior_at = xforms.size();
+          }
           texture_part(it, mat);
           textured = textured || it.block->kind != "interior";
         } else if (is_object_kind(it.block->kind)) {
@@ -316,6 +320,15 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
         children.push_back(&it);  // directives inside CSG: loops, ifs, declarations
         break;
     }
+  }
+  if (interior_at != std::string::npos && interior_at < xforms.size()) {
+    // POV-Ray's media move with their object; rts evaluates a media density at the world point
+    // (docs/rendering.md#media), so the object's transforms written after its interior move the
+    // density texture as well (those before it moved only the shape, as in POV-Ray).
+    std::string after;
+    for (std::size_t i = interior_at; i < xforms.size(); ++i) after += " " + xforms[i];
+    for (auto& p : mat.props)
+      if (p.first == "media_density") p.second = "(" + p.second + ")" + after;
   }
   if (texture_blocks.size() >= 2) layered_texture(texture_blocks, interiors, mat);  // texture { A } texture { B }
   auto v = [&](std::size_t i) -> const Expr* { return i < values.size() ? values[i]->args[0].get() : nullptr; };

@@ -379,6 +379,10 @@ void Translator::declare(Writer& w, const Item& it) {
     } else if (b.kind == "pigment") {
       s.type = Type::Pigment;
       w.line(head + pigment_value(b));
+    } else if (b.kind == "density") {
+      // A declared density (a pattern of numbers): a texture, as a pigment is.
+      s.type = Type::Pigment;
+      w.line(head + pigment_value(density_as_pigment(b)));
     } else if (b.kind == "sky_sphere") {
       s.object_kind = "sky_sphere";   // used by name in a scene's sky_sphere { }
       const std::string sky = sky_sphere_value(b);

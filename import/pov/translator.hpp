@@ -147,6 +147,8 @@ class Translator {
   std::string image_map(const Block& n);
   // A pigment_map block as rts's colour map list, its entries' pigments as textures or colours.
   std::string pigment_map(const Block& n);
+  // A media density block as the pigment it reads like (translate_media.cpp).
+  Block density_as_pigment(const Block& density);
   // `layers` (texture blocks, the first at the bottom) as one layered material; `base_parts`
   // (an object's interior) go to the bottom layer.
   void layered_texture(const std::vector<const Item*>& layers, const std::vector<const Item*>& base_parts,

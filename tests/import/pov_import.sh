@@ -183,6 +183,20 @@ EOF
 expect_exit 0 "computed camera with the image's aspect" -- "$RTS" import "$TMP/cam_aspect.pov"
 expect_grep "$TMP/out" 'let pov_camera_1 = pov_look_at[(]<1, 2, -5>, <0, 1, 0>, <0, 1, 0>, <0, 0, 1> [*] Zoom, <1, 0, 0> [*] 640 / 480, <0, 1, 0>, 0[)]' "the helper takes the computed vectors"
 expect_grep "$TMP/err" "'image_width' is taken as 640" "the image size is reported"
+# A media density_map of declared densities is a colour map of their textures, and the
+# object's transforms after its interior move the density (rts reads it at the world point;
+# POV-Ray's media move with the object). media5 and this scene: 10.6 -> 2.1 and 2.6 codes
+# (the rest: rts's density is one grey per point, POV-Ray's a colour).
+cat > "$TMP/density.pov" <<'EOF'
+#declare D1 = density { spherical color_map { [0 rgb 0] [1 rgb 1] } }
+#declare D2 = density { boxed color_map { [0 rgb 0] [1 rgb 1] } }
+sphere { 0, 1.5 pigment { rgbt 1 } translate x
+  interior { media { emission 0.5 density { gradient x density_map { [0.5 D1] [0.5 D2] } } } }
+  scale 2 hollow }
+EOF
+expect_exit 0 "a density_map of declared densities" -- "$RTS" import "$TMP/density.pov"
+expect_grep "$TMP/out" 'let D1 = spherical [{]' "a declared density is a texture"
+expect_grep "$TMP/out" 'media_density = [(]gradient [{]  axis = "x"  color_map = \[\[0.5, D1\], \[0.5, D2\]\] [}][)] scale 2 [}]' "the density moves with the transforms after the interior, not before"
 # skies.inc's skies by name: `sky_sphere { S_Cloud2 }` is rts's S_Cloud2 (skies.rts, POV-Ray's
 # values, its pigment_map a colour map of cloud textures), with no warning; it renders.
 cat > "$TMP/skies.pov" <<'EOF'
