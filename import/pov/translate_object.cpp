@@ -291,10 +291,13 @@ void Translator::object(Writer& w, const Block& b, const std::string& prefix, bo
           // rts's prism is swept straight unless told
         } else if (k == "prism" && it.name == "conic_sweep") {
           props.push_back("sweep = \"conic\"");
-        } else if (it.name == "hollow" || it.name == "sturm" || it.name == "smooth" || it.name == "double_illuminate" ||
-                   it.name == "no_reflection" || it.name == "no_radiosity" || it.name == "cutaway_textures" ||
-                   it.name == "split_union") {
+        } else if (it.name == "hollow" || it.name == "sturm" || it.name == "smooth" || it.name == "no_radiosity" ||
+                   it.name == "cutaway_textures" || it.name == "split_union") {
           // no effect on the picture rts makes (or rts's behaviour already)
+        } else if (it.name == "double_illuminate") {
+          unsupported(it.loc, it.name, "a surface lit on the side facing the light only", false);
+        } else if (it.name == "no_reflection") {
+          unsupported(it.loc, it.name, "the object seen in reflections too", false);
         } else if (it.name == "no_shadow") {
           if (csg_depth_ > 0)  // rts: a CSG block casts its shadow as a whole
             unsupported(it.loc, "no_shadow", "no_shadow on the whole CSG block", true);
