@@ -238,8 +238,14 @@ void Translator::item(Writer& w, const Item& it, bool top) {
       Text v = expr(*it.args[0]);
       std::string sel = "pov_switch";
       w.line(fmt::format("let {} = {}  // #switch", sel, v.s));
-      bool first = true;
+      bool first = true, had_else = false;
       for (const Item& c : it.body) {
+        if (had_else) {
+          // After the #else nothing is reached (fuzz_pov: a second #else wrote a second else).
+          warn(c.loc, "a #switch clause after its #else is never reached: left out");
+          continue;
+        }
+        had_else = c.name == "else";
         std::string cond;
         if (c.name == "case") cond = fmt::format("{} == {}", sel, value(*c.args[0]));
         else if (c.name == "range")
