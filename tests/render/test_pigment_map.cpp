@@ -117,7 +117,7 @@ TEST_CASE("maps of maps share their entries and nest at most kMaxColorMapNesting
       TextureDesc t = gradient(k % 2, glm::dvec3(0), glm::dvec3(0));
       t.pattern.color_map[0].texture = static_cast<TextureId>(k - 1);
       t.pattern.color_map[1].texture = static_cast<TextureId>(k - 1);
-      t.loc = SourceRef{"maps.rts", k, 1};
+      t.loc = SourceRef{"maps.rts", static_cast<uint32_t>(k), 1};
       s.textures.push_back(t);
     }
     return s;
