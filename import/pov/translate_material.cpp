@@ -327,12 +327,17 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
         MaterialProps inner;
         pigment(n, inner);
         if (pattern == "checker") {
-          // `checker pigment { A } pigment { B }`: the two pigments' colours (a pattern in one
-          // of them becomes its colour: rts's checker takes colours).
+          // `checker pigment { A } pigment { B }`: the two pigments' colours. rts's checker takes
+          // colours: a patterned pigment (a pattern block, or a declared one such as Jade, an
+          // rts texture) is reported and stands as grey.
           std::string c = "rgb(0)";
           for (const auto& p : inner.props)
             if (p.first == "color") c = p.second;
-          if (inner.has("texture")) unsupported(n.loc, "checker of patterned pigments", "a checker of two colours", false);
+          Symbol* named = lookup(c);
+          if (inner.has("texture") || (named && named->type == Type::Pigment)) {
+            unsupported(n.loc, "checker of patterned pigments", "a checker of two colours", false);
+            c = "rgb(0.5)";
+          }
           colors.push_back(c);
           continue;
         }
@@ -453,9 +458,16 @@ std::string Translator::image_map(const Block& n) {
   // texture is turned a quarter about x. No interpolate is POV-Ray's nearest texel.
   std::string file;
   double map_type = 0, interpolate = 0;
+  // The file: a string, or a declared string's name (`png TestMap`, as POV-Ray's samples write).
+  auto file_name = [&](const Expr& e) {
+    if (e.kind == Expr::String) return value(e);
+    if (e.kind == Expr::Name)
+      if (Symbol* s = lookup(e.text); s && s->type == Type::String) return rename(e.text);
+    return std::string();
+  };
   for (const Item& v : n.items) {
-    if (v.kind == Item::Value && v.args[0]->kind == Expr::String) file = value(*v.args[0]);
-    if (v.kind == Item::Keyword && !v.args.empty() && v.args[0]->kind == Expr::String) file = value(*v.args[0]);
+    if (v.kind == Item::Value && !file_name(*v.args[0]).empty()) file = file_name(*v.args[0]);
+    if (v.kind == Item::Keyword && !v.args.empty() && !file_name(*v.args[0]).empty()) file = file_name(*v.args[0]);
     if (v.kind == Item::Keyword && v.name == "map_type" && !v.args.empty()) literal_number(*v.args[0], map_type);
     if (v.kind == Item::Keyword && v.name == "interpolate" && !v.args.empty()) literal_number(*v.args[0], interpolate);
     if (v.kind == Item::Keyword && (v.name == "once" || v.name == "filter" || v.name == "transmit" ||
@@ -463,10 +475,12 @@ std::string Translator::image_map(const Block& n) {
       unsupported(v.loc, "image_map " + v.name, "the image's own colours, repeating", false);
   }
   if (file.empty()) {
+    // Nothing to write as a texture: the pigment keeps its colour (a texture of a colour is
+    // not one: interp.pov stopped at `texture = rgb(0.5)`).
     unsupported(n.loc, "image_map", "image_texture { file = \"...\" }", false);
-    return "rgb(0.5)";
+    return "";
   }
-  if (file.size() > 2 && file.find('.') == std::string::npos) {
+  if (file.size() > 2 && file.front() == '"' && file.find('.') == std::string::npos) {
     // No extension: POV-Ray tries its image types; the first found beside the scene.
     const std::string bare = file.substr(1, file.size() - 2);
     for (const char* ext : {".png", ".jpg", ".jpeg", ".tga", ".bmp", ".hdr"})

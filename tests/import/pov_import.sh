@@ -197,6 +197,21 @@ EOF
 expect_exit 0 "a density_map of declared densities" -- "$RTS" import "$TMP/density.pov"
 expect_grep "$TMP/out" 'let D1 = spherical [{]' "a declared density is a texture"
 expect_grep "$TMP/out" 'media_density = [(]gradient [{]  axis = "x"  color_map = \[\[0.5, D1\], \[0.5, D2\]\] [}][)] scale 2 [}]' "the density moves with the transforms after the interior, not before"
+# image_map of a declared string's name (POV-Ray's samples: `png TestMap`); an image_map with no
+# file keeps the pigment's colour (it had been written as a texture of a colour, which rts
+# refuses); a checker of a patterned pigment (Jade, an rts texture) is reported, grey.
+cat > "$TMP/imgname.pov" <<'EOF'
+#include "textures.inc"
+#declare Tex = "tex.png"
+sphere { 0, 1 pigment { image_map { png Tex map_type 1 } } }
+box { 0, 1 pigment { checker pigment { Jade } pigment { rgb 1 } } }
+box { 0, 1 pigment { image_map { png 3 } } }
+EOF
+expect_exit 0 "image_map names and a checker of pigments" -- "$RTS" import "$TMP/imgname.pov" -o "$TMP/imgname.rts"
+expect_grep "$TMP/imgname.rts" 'texture = image_texture [{] file = Tex  mapping = "spherical"' "a declared file name"
+expect_grep "$TMP/imgname.rts" 'color = checker[(]rgb[(]0.5[)], rgb[(]1[)], 1[)]' "a patterned pigment in a checker is grey"
+expect_grep "$TMP/err" "imgname.pov:4:30: warning: POV-Ray's 'checker of patterned pigments'" "the checker is reported"
+expect_exit 0 "the translation evaluates" -- "$RTS" check "$TMP/imgname.rts"
 # skies.inc's skies by name: `sky_sphere { S_Cloud2 }` is rts's S_Cloud2 (skies.rts, POV-Ray's
 # values, its pigment_map a colour map of cloud textures), with no warning; it renders.
 cat > "$TMP/skies.pov" <<'EOF'
