@@ -117,6 +117,12 @@ int run_pov_import(const ImportCommandOptions& o) {
     if (!why.empty()) std::cerr << "rts: " << why << "\n";
     return why.empty() ? kExitLanguageError : kExitUsage;
   }
+  if (!o.output.empty()) {
+    // An image the scene names beside itself is then named from where the .rts goes.
+    std::error_code ec;
+    fs::path dir = fs::path(o.output).parent_path();
+    opt.output_dir = fs::absolute(dir.empty() ? fs::path(".") : dir, ec).string();
+  }
   if (!import_pov_file(o.file, opt, result, why)) {
     if (!why.empty()) {
       std::cerr << "rts: " << why << "\n";

@@ -28,6 +28,9 @@ struct PovOptions {
   // rts's standard library folder (runtime/stdlib_path.hpp), read for the names a standard
   // include gives the scene; "" when unknown (every undeclared name is then taken on trust).
   std::string stdlib_dir;
+  // Where the translation is written ("": beside the scene). Files the scene names relative to
+  // itself (image maps) are then written relative to this folder, so they are still found.
+  std::string output_dir;
   // POV-Ray's render options (render_options.hpp), written into the scene's settings.
   int width = 0, height = 0;          // 0: not given
   double antialias_threshold = -1;    // < 0: no antialiasing asked for

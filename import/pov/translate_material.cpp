@@ -489,6 +489,21 @@ std::string Translator::image_map(const Block& n) {
         break;
       }
   }
+  if (file.size() > 2 && file.front() == '"' && !opt_.output_dir.empty()) {
+    // The translation written elsewhere: the image found beside the scene is named from there.
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path beside = fs::path(dir_) / file.substr(1, file.size() - 2);
+    const fs::path out = fs::weakly_canonical(opt_.output_dir, ec);
+    if (!ec && fs::exists(beside) && fs::weakly_canonical(dir_, ec) != out) {
+      const fs::path rel = fs::relative(fs::weakly_canonical(beside, ec), out, ec);
+      if (!ec && !rel.empty()) {
+        file = "\"";
+        for (char c : rel.generic_string()) file += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+        file += "\"";
+      }
+    }
+  }
   const std::string filter = interpolate > 0 ? "" : "  filter = \"nearest\"";
   if (map_type == 1) return "image_texture { file = " + file + "  mapping = \"spherical\"" + filter + " }";
   if (map_type != 0)

@@ -212,6 +212,14 @@ expect_grep "$TMP/imgname.rts" 'texture = image_texture [{] file = Tex  mapping 
 expect_grep "$TMP/imgname.rts" 'color = checker[(]rgb[(]0.5[)], rgb[(]1[)], 1[)]' "a patterned pigment in a checker is grey"
 expect_grep "$TMP/err" "imgname.pov:4:30: warning: POV-Ray's 'checker of patterned pigments'" "the checker is reported"
 expect_exit 0 "the translation evaluates" -- "$RTS" check "$TMP/imgname.rts"
+# Written elsewhere (-o into another folder), a translation names the images found beside the
+# scene from its own folder; reading them there needs --allow-read, which the error says.
+mkdir -p "$TMP/elsewhere"
+expect_exit 0 "import into another folder" -- "$RTS" import "$TMP/work/image_map.pov" -o "$TMP/elsewhere/im.rts"
+expect_grep "$TMP/elsewhere/im.rts" 'file = "../work/image_map_tex.png"' "the image named from the output's folder"
+expect_exit 1 "reading it needs --allow-read" -- "$RTS" render "$TMP/elsewhere/im.rts" -o "$TMP/elsewhere/im.png" --width 8 --height 6 --no-progress
+expect_grep "$TMP/err" "allow it with --allow-read" "the error says how"
+expect_exit 0 "rendered with --allow-read" -- "$RTS" render "$TMP/elsewhere/im.rts" -o "$TMP/elsewhere/im.png" --width 8 --height 6 --no-progress --allow-read "$TMP/work"
 # skies.inc's skies by name: `sky_sphere { S_Cloud2 }` is rts's S_Cloud2 (skies.rts, POV-Ray's
 # values, its pigment_map a colour map of cloud textures), with no warning; it renders.
 cat > "$TMP/skies.pov" <<'EOF'
