@@ -59,10 +59,10 @@ find -L "$scenes" -name '*.pov' | sort | grep -E -- "$filter" | while read -r sc
     grep -qE "$noise" "$dir"/*.rts && is_noise=yes   # the scene's own includes, translated beside it
     missing="$(grep -m1 -oE "warning: .*" "$dir/import.log" | sed 's/^warning: //' | cut -c1-110)"
     [[ -z "$missing" ]] && missing=-
-    # The translation lives in its own folder: images beside the POV-Ray scene are read from
-    # there (rts reads outside a scene's folder only where allowed).
+    # The translation lives in its own folder: images beside the POV-Ray scene, or in its
+    # library folder, are read from there (rts reads outside a scene's folder only where allowed).
     if (cd "$dir" && timeout "$timeout_s" nice "$rts" render scene.rts -o rts.png --width 320 --height 240 --threads 1 \
-          --no-progress --allow-read "$scenes") 2> "$dir/render.log" < /dev/null; then
+          --no-progress --allow-read "$(dirname "$scenes")") 2> "$dir/render.log" < /dev/null; then
       rendered=yes
     else
       missing="rts: $(grep -m1 -E "error" "$dir/render.log" | sed 's/^[^ ]*: error: //' | cut -c1-110)"

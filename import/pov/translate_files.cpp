@@ -118,17 +118,23 @@ void Translator::declare_library_file(const std::string& file) {
   }
 }
 
+std::vector<std::string> Translator::search_dirs() const {
+  std::error_code ec;
+  std::vector<std::string> dirs = {dir_.empty() ? std::string(".") : dir_};
+  dirs.insert(dirs.end(), opt_.include_dirs.begin(), opt_.include_dirs.end());
+  // Last, POV-Ray's own library folder where it is installed (its Library_Path): include files
+  // that are not standard includes rts maps, such as the woods' and stones' `.map` files, and
+  // the images its samples map (test.png, plasma3.png).
+  for (const char* lib : {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"})
+    if (fs::is_directory(lib, ec)) dirs.emplace_back(lib);
+  return dirs;
+}
+
 void Translator::include(Writer& w, const Item& it) {
   const std::string& name = it.name;
   fs::path found;
   std::error_code ec;
-  std::vector<std::string> dirs = {dir_};
-  dirs.insert(dirs.end(), opt_.include_dirs.begin(), opt_.include_dirs.end());
-  // Last, POV-Ray's own library folder where it is installed (its Library_Path): include files
-  // that are not standard includes rts maps, such as the woods' and stones' `.map` files.
-  for (const char* lib : {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"})
-    if (fs::is_directory(lib, ec)) dirs.emplace_back(lib);
-  for (const std::string& d : dirs) {
+  for (const std::string& d : search_dirs()) {
     fs::path p = fs::path(d.empty() ? "." : d) / name;
     if (fs::is_regular_file(p, ec)) {
       found = p;

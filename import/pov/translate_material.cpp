@@ -480,23 +480,33 @@ std::string Translator::image_map(const Block& n) {
     unsupported(n.loc, "image_map", "image_texture { file = \"...\" }", false);
     return "";
   }
-  if (file.size() > 2 && file.front() == '"' && file.find('.') == std::string::npos) {
-    // No extension: POV-Ray tries its image types; the first found beside the scene.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path found_dir;  // where POV-Ray finds the file: beside the scene, -I, its library folder
+  if (file.size() > 2 && file.front() == '"') {
+    // No extension: POV-Ray tries its image types, the first found.
     const std::string bare = file.substr(1, file.size() - 2);
-    for (const char* ext : {".png", ".jpg", ".jpeg", ".tga", ".bmp", ".hdr"})
-      if (std::filesystem::exists(std::filesystem::path(dir_) / (bare + ext))) {
-        file = "\"" + bare + ext + "\"";
-        break;
-      }
+    std::vector<std::string> names = {bare};
+    if (bare.find('.') == std::string::npos)
+      for (const char* ext : {".png", ".jpg", ".jpeg", ".tga", ".bmp", ".hdr"}) names.push_back(bare + ext);
+    for (const std::string& d : search_dirs()) {
+      for (const std::string& nm : names)
+        if (fs::is_regular_file(fs::path(d) / nm, ec)) {
+          file = "\"" + nm + "\"";
+          found_dir = d;
+          break;
+        }
+      if (!found_dir.empty()) break;
+    }
   }
-  if (file.size() > 2 && file.front() == '"' && !opt_.output_dir.empty()) {
-    // The translation written elsewhere: the image found beside the scene is named from there.
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path beside = fs::path(dir_) / file.substr(1, file.size() - 2);
-    const fs::path out = fs::weakly_canonical(opt_.output_dir, ec);
-    if (!ec && fs::exists(beside) && fs::weakly_canonical(dir_, ec) != out) {
-      const fs::path rel = fs::relative(fs::weakly_canonical(beside, ec), out, ec);
+  // Written where the translation does not find it by the same name (elsewhere with -o, or
+  // found in another folder): named from the translation's folder instead.
+  const fs::path out =
+      fs::weakly_canonical(!opt_.output_dir.empty() ? opt_.output_dir : dir_.empty() ? std::string(".") : dir_, ec);
+  if (!found_dir.empty() && fs::weakly_canonical(found_dir, ec) != out) {
+    const fs::path image = found_dir / file.substr(1, file.size() - 2);
+    {
+      const fs::path rel = fs::relative(fs::weakly_canonical(image, ec), out, ec);
       if (!ec && !rel.empty()) {
         file = "\"";
         for (char c : rel.generic_string()) file += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);

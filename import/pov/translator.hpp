@@ -145,6 +145,9 @@ class Translator {
   void texture_part(const Item& it, MaterialProps& m);
   // An image_map block as rts's image texture (translate_material.cpp).
   std::string image_map(const Block& n);
+  // Where POV-Ray looks for a file the scene names: the scene's folder, the -I folders, then its
+  // own library folder where it is installed (translate_files.cpp).
+  std::vector<std::string> search_dirs() const;
   // A pigment_map block as rts's colour map list, its entries' pigments as textures or colours.
   std::string pigment_map(const Block& n);
   // A media density block as the pigment it reads like (translate_media.cpp).
