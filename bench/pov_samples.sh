@@ -60,9 +60,10 @@ find -L "$scenes" -name '*.pov' | sort | grep -E -- "$filter" | while read -r sc
     missing="$(grep -m1 -oE "warning: .*" "$dir/import.log" | sed 's/^warning: //' | cut -c1-110)"
     [[ -z "$missing" ]] && missing=-
     # The translation lives in its own folder: images beside the POV-Ray scene, or in its
-    # library folder, are read from there (rts reads outside a scene's folder only where allowed).
+    # library folder, are read from there (rts reads outside a scene's folder only where allowed;
+    # Debian's scenes folder is a link to /usr/share/doc/povray/examples, the path rts checks).
     if (cd "$dir" && timeout "$timeout_s" nice "$rts" render scene.rts -o rts.png --width 320 --height 240 --threads 1 \
-          --no-progress --allow-read "$(dirname "$scenes")") 2> "$dir/render.log" < /dev/null; then
+          --no-progress --allow-read "$(dirname "$scenes")" --allow-read "$(readlink -f "$scenes")") 2> "$dir/render.log" < /dev/null; then
       rendered=yes
     else
       missing="rts: $(grep -m1 -E "error" "$dir/render.log" | sed 's/^[^ ]*: error: //' | cut -c1-110)"

@@ -247,9 +247,15 @@ void Translator::item(Writer& w, const Item& it, bool top) {
         }
         had_else = c.name == "else";
         std::string cond;
-        if (c.name == "case") cond = fmt::format("{} == {}", sel, value(*c.args[0]));
+        // A case value with operators goes in parentheses (fuzz_pov: `#case (a & b)` wrote
+        // `pov_switch == a != 0 and b != 0`, a chained comparison).
+        auto operand = [&](const Expr& e) {
+          const std::string v = value(e);
+          return v.find(' ') == std::string::npos ? v : "(" + v + ")";
+        };
+        if (c.name == "case") cond = fmt::format("{} == {}", sel, operand(*c.args[0]));
         else if (c.name == "range")
-          cond = fmt::format("{0} >= {1} and {0} <= {2}", sel, value(*c.args[0]), value(*c.args[1]));
+          cond = fmt::format("{0} >= {1} and {0} <= {2}", sel, operand(*c.args[0]), operand(*c.args[1]));
         if (c.name == "else") {
           if (first) w.open("if true");
           else w.middle("else");
