@@ -222,14 +222,9 @@ glm::dvec4 CompiledTexture::eval_map_entries(const Vec3& q) const {
     if (map[i].texture == kNoId) return glm::dvec4(map[i].color, map[i].transmit);
     return map_entries_[i]->eval_layer(q);   // the entry's own transform, then its value at q
   };
-  if (!(t > map.front().value)) return entry(0);   // also NaN
-  if (t >= map.back().value) return entry(map.size() - 1);
-  std::size_t i = 1;
-  while (map[i].value < t) ++i;   // map[i-1].value < t <= map[i].value
-  const double span = map[i].value - map[i - 1].value;
-  if (!(span > 0.0)) return entry(i);
-  const double w = (t - map[i - 1].value) / span;
-  return entry(i - 1) * (1.0 - w) + entry(i) * w;
+  const pattern::MapSpan s = pattern::map_span(map, t);
+  if (s.a == s.b) return entry(s.a);
+  return entry(s.a) * (1.0 - s.w) + entry(s.b) * s.w;
 }
 
 glm::dvec4 CompiledTexture::eval_with_transmit(const TexturePoint& p) const {

@@ -185,30 +185,28 @@ double wave(const PatternDesc& d, double value, bool height) {
   return 0.0;
 }
 
-glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t) {
-  if (map.empty()) return glm::dvec3(t);
-  if (!(t > map.front().value)) return map.front().color;   // also NaN
-  if (t >= map.back().value) return map.back().color;
+MapSpan map_span(const std::vector<ColorMapEntry>& map, double t) {
+  if (!(t > map.front().value)) return {};   // also NaN
+  if (t >= map.back().value) return {map.size() - 1, map.size() - 1, 0.0};
   std::size_t i = 1;
   while (map[i].value < t) ++i;   // map[i-1].value < t <= map[i].value
-  const ColorMapEntry& a = map[i - 1];
-  const ColorMapEntry& b = map[i];
-  const double span = b.value - a.value;
-  if (!(span > 0.0)) return b.color;
-  return a.color + (b.color - a.color) * ((t - a.value) / span);
+  const double span = map[i].value - map[i - 1].value;
+  if (!(span > 0.0)) return {i, i, 0.0};
+  return {i - 1, i, (t - map[i - 1].value) / span};
+}
+
+glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t) {
+  if (map.empty()) return glm::dvec3(t);
+  const MapSpan s = map_span(map, t);
+  if (s.a == s.b) return map[s.a].color;
+  return map[s.a].color + (map[s.b].color - map[s.a].color) * s.w;
 }
 
 double transmit_lookup(const std::vector<ColorMapEntry>& map, double t) {
   if (map.empty()) return 0.0;
-  if (!(t > map.front().value)) return map.front().transmit;   // also NaN
-  if (t >= map.back().value) return map.back().transmit;
-  std::size_t i = 1;
-  while (map[i].value < t) ++i;
-  const ColorMapEntry& a = map[i - 1];
-  const ColorMapEntry& b = map[i];
-  const double span = b.value - a.value;
-  if (!(span > 0.0)) return b.transmit;
-  return a.transmit + (b.transmit - a.transmit) * ((t - a.value) / span);
+  const MapSpan s = map_span(map, t);
+  if (s.a == s.b) return map[s.a].transmit;
+  return map[s.a].transmit + (map[s.b].transmit - map[s.a].transmit) * s.w;
 }
 
 glm::dvec3 pattern_color(const PatternDesc& d, const glm::dvec3& q, bool height) {

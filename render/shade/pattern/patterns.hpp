@@ -33,6 +33,13 @@ double raw_value(const PatternDesc& d, const glm::dvec3& q, bool height = false)
 // The wave function applied to value * frequency + phase (for a height from ripples or waves,
 // which take frequency and phase inside the pattern, to the value itself).
 double wave(const PatternDesc& d, double value, bool height = false);
+// Where index t falls in a non-empty colour map (entries ascending): entries a and b and b's
+// weight w; a == b at or beyond an end (NaN: the first), or between two entries at one value.
+struct MapSpan {
+  std::size_t a = 0, b = 0;
+  double w = 0.0;
+};
+MapSpan map_span(const std::vector<ColorMapEntry>& map, double t);
 // The color map's color at index t (entries ascending; clamped outside).
 glm::dvec3 color_map_lookup(const std::vector<ColorMapEntry>& map, double t);
 // All three: the color of the pattern at q (height: as a bump's height).
