@@ -376,14 +376,9 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
                        "property 'attenuation' must have non-negative components, not all zero");
     l.attenuation_clamp = ps.boolean("attenuation_clamp", l.attenuation_clamp);
   };
-  if (kind == "point_light") {
-    l.kind = LightKind::Point;
-    l.position = ps.require_vec3("position");
-    attenuation();
-    ps.check_unused(kPointLightNames);
-  } else if (kind == "spot_light") {
-    l.kind = LightKind::Spot;
-    l.position = ps.require_vec3("position");
+  // A spot's cone: its axis towards point_at, full within radius, none past falloff (spot_light,
+  // and an area_light with point_at).
+  auto spot_cone = [&] {
     l.point_at = ps.require_vec3("point_at");
     direction(ps, "point_at", l.point_at - l.position);
     l.radius = ps.number("radius", l.radius);
@@ -392,6 +387,16 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     require(ps, "radius", l.radius >= 0 && l.radius <= 90, "from 0 to 90 degrees", l.radius);
     l.falloff = ps.number("falloff", std::max(l.falloff, l.radius));
     require(ps, "falloff", l.falloff >= l.radius && l.falloff <= 90, ">= radius and <= 90 degrees", l.falloff);
+  };
+  if (kind == "point_light") {
+    l.kind = LightKind::Point;
+    l.position = ps.require_vec3("position");
+    attenuation();
+    ps.check_unused(kPointLightNames);
+  } else if (kind == "spot_light") {
+    l.kind = LightKind::Spot;
+    l.position = ps.require_vec3("position");
+    spot_cone();
     attenuation();
     ps.check_unused(kSpotLightNames);
   } else if (kind == "directional_light") {
@@ -416,12 +421,7 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     if (ps.has("point_at")) {
       // A spot's cone on an area light (POV-Ray's spotlight with area_light), from its centre.
       l.area_spot = true;
-      l.point_at = ps.require_vec3("point_at");
-      direction(ps, "point_at", l.point_at - l.position);
-      l.radius = ps.number("radius", l.radius);
-      require(ps, "radius", l.radius >= 0 && l.radius <= 90, "from 0 to 90 degrees", l.radius);
-      l.falloff = ps.number("falloff", std::max(l.falloff, l.radius));
-      require(ps, "falloff", l.falloff >= l.radius && l.falloff <= 90, ">= radius and <= 90 degrees", l.falloff);
+      spot_cone();
     } else if (ps.has("radius") || ps.has("falloff")) {
       const char* name = ps.has("radius") ? "radius" : "falloff";
       throw SceneError(loc_of(ps, name), fmt::format("property '{}' of area_light needs 'point_at' (the spot's axis)", name));
