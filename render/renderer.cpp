@@ -356,12 +356,15 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
       std::vector<RayCounters> row_counters(static_cast<std::size_t>(r.y1 - r.y0));
       arena.execute([&] {
         tbb::parallel_for(r.y0, r.y1, [&](int y) {
-          RayCounters& counters = row_counters[static_cast<std::size_t>(y - r.y0)];
+          // Counted on this thread's stack, stored once per row: rows side by side in one
+          // vector, incremented per ray by different threads, would share cache lines.
+          RayCounters counters;
           for (int x = r.x0; x < r.x1; ++x) {
             PixelAccum acc;
             pixels.add_samples(x, y, spp, acc, counters);
             pixels.store(x, y, acc, frame, counters);
           }
+          row_counters[static_cast<std::size_t>(y - r.y0)] = counters;
         });
       });
       RayCounters total;
@@ -417,12 +420,13 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
       std::vector<RayCounters> row_counters(static_cast<std::size_t>(r.y1 - r.y0));
       arena.execute([&] {
         tbb::parallel_for(r.y0, r.y1, [&](int y) {
-          RayCounters& counters = row_counters[static_cast<std::size_t>(y - r.y0)];
+          RayCounters counters;  // on this thread's stack, as above
           for (int x = r.x0; x < r.x1; ++x) {
             const std::size_t k = static_cast<std::size_t>(y - r.y0) * static_cast<std::size_t>(w) +
                                   static_cast<std::size_t>(x - r.x0);
             if (tile_add[k] > 0) pixels.add_samples(x, y, tile_add[k], tile_accs[k], counters);
           }
+          row_counters[static_cast<std::size_t>(y - r.y0)] = counters;
         });
       });
       RayCounters total;
