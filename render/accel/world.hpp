@@ -244,6 +244,8 @@ class World {
   };
 
   ShapeArrays shapes_;
+  // Beside shapes_' quads, index for index: what their test derives from the vectors.
+  std::vector<QuadFrame> quad_frames_;
   std::vector<Csg> csgs_;
   // An instanced group's contents: parts instances_[first, first + count), in the group's
   // space, under one BVH shared by every placement.

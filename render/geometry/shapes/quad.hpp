@@ -47,9 +47,28 @@ inline AABB bounds(const Quad& q) {
   return b;
 }
 
-inline bool intersect(const Quad& q, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
-  const Vec3 n = glm::cross(q.edge_u, q.edge_v);
-  const double n2 = glm::dot(n, n);
+// What the test derives from the three vectors, computed once per quad when the world is
+// built instead of per ray (profile finding, path-traced Cornell box: the quad test was the
+// largest share of the render, three cross products per test). The values are the ones the
+// per-ray test computed, so hits are the same bit for bit.
+struct QuadFrame {
+  Vec3 corner, edge_u, edge_v;
+  Vec3 n;        // cross(edge_u, edge_v), not unit length
+  Vec3 dual_u;   // cross(edge_v, n): s = dot(p - corner, dual_u) / n2
+  Vec3 dual_v;   // cross(n, edge_u): t = dot(p - corner, dual_v) / n2
+  Vec3 unit_n;   // n / |n|
+  double n2 = 0.0, len_n = 0.0;
+  explicit QuadFrame(const Quad& q)
+      : corner(q.corner), edge_u(q.edge_u), edge_v(q.edge_v), n(glm::cross(q.edge_u, q.edge_v)),
+        dual_u(glm::cross(q.edge_v, n)), dual_v(glm::cross(n, q.edge_u)), n2(glm::dot(n, n)),
+        len_n(std::sqrt(n2)) {
+    unit_n = n / len_n;
+  }
+};
+
+inline bool intersect(const QuadFrame& q, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  const Vec3& n = q.n;
+  const double n2 = q.n2;
   if (!(n2 > 0.0)) return false;   // degenerate (parallel or zero edges): never hit
   const double denom = glm::dot(n, ray.direction);
   // |denom| <= kParallelCosine |n| |d| means parallel. Compared squared first: the two square
@@ -58,7 +77,7 @@ inline bool intersect(const Quad& q, const Ray& ray, Interval ray_t, SurfaceHit&
   // say parallel, or overflow or underflow, does the exact form decide.
   constexpr double kParallel2 = tol::kParallelCosine * tol::kParallelCosine;
   if (!(denom * denom > kParallel2 * n2 * glm::dot(ray.direction, ray.direction)) &&
-      std::abs(denom) <= tol::kParallelCosine * std::sqrt(n2) * glm::length(ray.direction))
+      std::abs(denom) <= tol::kParallelCosine * q.len_n * glm::length(ray.direction))
     return false;
   const double t = glm::dot(q.corner - ray.origin, n) / denom;
   if (!ray_t.surrounds(t)) return false;
@@ -66,21 +85,25 @@ inline bool intersect(const Quad& q, const Ray& ray, Interval ray_t, SurfaceHit&
   const Vec3 d = p - q.corner;
   // Coordinates along the (not necessarily orthogonal) edges: solve d = s*eu + t*ev with the
   // dual basis cross(ev, n) / n2 and cross(n, eu) / n2.
-  const double s = glm::dot(d, glm::cross(q.edge_v, n)) / n2;
-  const double tv = glm::dot(d, glm::cross(n, q.edge_u)) / n2;
+  const double s = glm::dot(d, q.dual_u) / n2;
+  const double tv = glm::dot(d, q.dual_v) / n2;
   if (!(s >= 0.0 && s <= 1.0 && tv >= 0.0 && tv <= 1.0)) return false;
   hit.t = t;
   hit.point = p;
   // Without it a spawned ray starts at the minimum offset, which at a few units' distance is
   // inside the rounding of p: the quad shadowed itself (ambient-only walls).
   hit.error = ray_point_error(ray, t);
-  hit.normal = n / std::sqrt(n2);
+  hit.normal = q.unit_n;
   hit.shading_normal = hit.normal;
   hit.uv = {s, tv};
   hit.has_uv = true;
   hit.dpdu = q.edge_u;
   hit.dpdv = q.edge_v;
   return true;
+}
+
+inline bool intersect(const Quad& q, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  return intersect(QuadFrame(q), ray, ray_t, hit);
 }
 
 }  // namespace rts::render
