@@ -484,51 +484,34 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
     place(s, add_shape(s, Sphere{Vec3(0, 3, 0), 0.5}, add_material(s, lamp)));
     check_within_noise(render_path(s, 8, 16), a * 5.0 * (0.5 / 3) * (0.5 / 3));
   }
-  SECTION("an emissive cylinder: a capped one lights by its bottom disc, an open tube by its inner wall") {
-    // From a point on the axis below the cylinder, directions through the bottom opening (radius
-    // R at height h1) meet the bottom cap; without caps they meet the inner wall, except those
-    // that leave through the top opening (at h2): irradiance pi Le (R^2 / (R^2 + h1^2) -
-    // R^2 / (R^2 + h2^2)). NEE samples the whole surface by area (most samples are hidden by
-    // the cylinder itself), so this checks its density as well as its units.
-    const double r = 0.6, h1 = 1.0, h2 = 1.8;
-    const double through_bottom = r * r / (r * r + h1 * h1), through_top = r * r / (r * r + h2 * h2);
-    for (bool capped : {true, false}) {
-      INFO((capped ? "capped" : "open tube"));
-      SceneDesc s = floor_scene();
-      MaterialDesc lamp = lambert(0.0);
-      lamp.diffuse = 0;
-      lamp.emission = Color(4.0);
-      place(s, add_shape(s, Cylinder{Vec3(0, h1, 0), Vec3(0, h2, 0), r, capped}, add_material(s, lamp)));
-      Measured m = render_path(s, 8, 16);
-      check_within_noise(m, a * 4.0 * (capped ? through_bottom : through_bottom - through_top));
-      CHECK(m.standard_error < 0.05 * m.mean);   // sampled by NEE, not left to bounced rays
-    }
-    // The same tube rotated and uniformly scaled about the point: still sampled, same light.
+  // A cylinder or cone of emission 4 standing on the axis above the floor's point, from h1 to
+  // h2 with radii r0 and r1, placed by `xf`: directions through its bottom opening meet the
+  // bottom cap; without caps they meet the inner wall, except those that leave through the top
+  // opening: irradiance pi Le (r0^2 / (r0^2 + h1^2) - r1^2 / (r1^2 + h2^2)). NEE samples the
+  // whole surface by area (most samples are hidden by the shape itself), so this checks its
+  // density as well as its units.
+  auto check_axis_lamp = [&](const ShapeGeometry& shape, double r0, double r1, double h1, double h2, bool capped,
+                             const Mat4& xf = Mat4(1.0)) {
+    INFO((capped ? "capped" : "open"));
     SceneDesc s = floor_scene();
-    MaterialDesc lamp = lambert(0.0);
-    lamp.diffuse = 0;
-    lamp.emission = Color(4.0);
-    const uint32_t shape = add_shape(s, Cylinder{Vec3(0, h1 / 2, 0), Vec3(0, h2 / 2, 0), r / 2, true},
-                                     add_material(s, lamp));
-    place(s, shape, scale(Vec3(2.0)) * rotate_deg(90, Vec3(0, 1, 0)));
+    place(s, add_shape(s, shape, add_material(s, emissive(Color(4.0)))), xf);
+    const double through_bottom = r0 * r0 / (r0 * r0 + h1 * h1), through_top = r1 * r1 / (r1 * r1 + h2 * h2);
     Measured m = render_path(s, 8, 16);
-    check_within_noise(m, a * 4.0 * through_bottom);
-    CHECK(m.standard_error < 0.05 * m.mean);
+    check_within_noise(m, a * 4.0 * (capped ? through_bottom : through_bottom - through_top));
+    CHECK(m.standard_error < 0.05 * m.mean);   // sampled by NEE, not left to bounced rays
+  };
+  SECTION("an emissive cylinder: a capped one lights by its bottom disc, an open tube by its inner wall") {
+    const double r = 0.6, h1 = 1.0, h2 = 1.8;
+    for (bool capped : {true, false})
+      check_axis_lamp(Cylinder{Vec3(0, h1, 0), Vec3(0, h2, 0), r, capped}, r, r, h1, h2, capped);
+    // Half the size, scaled by 2 and turned about the axis: still sampled, the same light.
+    check_axis_lamp(Cylinder{Vec3(0, h1 / 2, 0), Vec3(0, h2 / 2, 0), r / 2, true}, r, r, h1, h2, true,
+                    scale(Vec3(2.0)) * rotate_deg(90, Vec3(0, 1, 0)));
   }
   SECTION("an emissive cone (a frustum narrowing upwards): its bottom disc, or its inner wall") {
     const double r0 = 0.8, r1 = 0.3, h1 = 1.0, h2 = 2.0;
-    const double through_bottom = r0 * r0 / (r0 * r0 + h1 * h1), through_top = r1 * r1 / (r1 * r1 + h2 * h2);
-    for (bool capped : {true, false}) {
-      INFO((capped ? "capped" : "open"));
-      SceneDesc s = floor_scene();
-      MaterialDesc lamp = lambert(0.0);
-      lamp.diffuse = 0;
-      lamp.emission = Color(3.0);
-      place(s, add_shape(s, Cone{Vec3(0, h1, 0), Vec3(0, h2, 0), r0, r1, capped}, add_material(s, lamp)));
-      Measured m = render_path(s, 8, 16);
-      check_within_noise(m, a * 3.0 * (capped ? through_bottom : through_bottom - through_top));
-      CHECK(m.standard_error < 0.05 * m.mean);
-    }
+    for (bool capped : {true, false})
+      check_axis_lamp(Cone{Vec3(0, h1, 0), Vec3(0, h2, 0), r0, r1, capped}, r0, r1, h1, h2, capped);
   }
   SECTION("an emissive triangle mesh lights like the quad it tiles") {
     SceneDesc s = floor_scene();

@@ -161,7 +161,6 @@ void LightSet::set_pick_probabilities() {
     switch (e.type) {
       case Type::Sphere:
       case Type::Box: p = kPi * e.area * luminance(e.radiance); break;
-      case Type::Cylinder:
       case Type::Cone: p = (e.capped ? 1.0 : 2.0) * kPi * e.area * luminance(e.radiance); break;
       case Type::Quad:
       case Type::Triangle:
@@ -265,43 +264,35 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
     e.e3 = vector_to_world(xf, Vec3(0.0, 0.0, size.z));
     e.area = 2.0 * (glm::length(glm::cross(e.e1, e.e2)) + glm::length(glm::cross(e.e2, e.e3)) +
                     glm::length(glm::cross(e.e3, e.e1)));
-  } else if (inst.kind == kPrimKind<Cylinder>) {
-    // The side and, when capped, the two end discs, uniform by area. Only under a transform
-    // that keeps it a circular cylinder (as spheres): a stretched one is not sampled.
-    const Cylinder& c = world.shape<Cylinder>(inst.index);
-    const double s = uniform_scale(xf);
-    const Vec3 axis = c.to - c.from;
-    const double height = glm::length(axis);
-    if (s > 0.0 && height > 0.0) {
-      Frame f(axis / height);
-      e.type = Type::Cylinder;
-      e.p0 = point_to_world(xf, c.from);
-      e.e1 = vector_to_world(xf, axis);
-      e.e2 = vector_to_world(xf, c.radius * f.t);
-      e.e3 = vector_to_world(xf, c.radius * f.b);
-      e.capped = c.capped;
-      const double r = s * c.radius, h = s * height;
-      e.area = 2.0 * kPi * r * h + (c.capped ? 2.0 * kPi * r * r : 0.0);
+  } else if (inst.kind == kPrimKind<Cylinder> || inst.kind == kPrimKind<Cone>) {
+    // The side and, when capped, the two end discs, uniform by area; a cylinder is a cone of
+    // equal radii. Only under a transform that keeps it circular (as spheres): a stretched one
+    // is not sampled.
+    Vec3 from, to;
+    double r0, r1;
+    bool capped;
+    if (inst.kind == kPrimKind<Cylinder>) {
+      const Cylinder& c = world.shape<Cylinder>(inst.index);
+      from = c.from, to = c.to, r0 = r1 = std::abs(c.radius), capped = c.capped;
+    } else {
+      const Cone& c = world.shape<Cone>(inst.index);
+      from = c.from, to = c.to, r0 = std::abs(c.radius_from), r1 = std::abs(c.radius_to), capped = c.capped;
     }
-  } else if (inst.kind == kPrimKind<Cone>) {
-    // The same for a cone (a frustum): its side, by area, and its end discs when capped.
-    const Cone& c = world.shape<Cone>(inst.index);
     const double s = uniform_scale(xf);
-    const Vec3 axis = c.to - c.from;
+    const Vec3 axis = to - from;
     const double height = glm::length(axis);
-    const double r0 = std::abs(c.radius_from), r1 = std::abs(c.radius_to);
     if (s > 0.0 && height > 0.0 && r0 + r1 > 0.0) {
       Frame f(axis / height);
       e.type = Type::Cone;
-      e.p0 = point_to_world(xf, c.from);
+      e.p0 = point_to_world(xf, from);
       e.e1 = vector_to_world(xf, axis);
       e.e2 = vector_to_world(xf, f.t);
       e.e3 = vector_to_world(xf, f.b);
       e.radius = r0;
       e.radius_end = r1;
-      e.capped = c.capped;
+      e.capped = capped;
       const double side = kPi * (r0 + r1) * std::sqrt(height * height + (r1 - r0) * (r1 - r0));
-      e.area = s * s * (side + (c.capped ? kPi * (r0 * r0 + r1 * r1) : 0.0));
+      e.area = s * s * (side + (capped ? kPi * (r0 * r0 + r1 * r1) : 0.0));
     }
   }
   // Planes, tori...: their emission is found by BSDF rays only.
@@ -479,39 +470,11 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
       out.radiance = e.radiance;
       return true;
     }
-    case Type::Cylinder: {
-      // The side (around e2, e3 at a height along e1) or an end disc, by area; u.x is reused
-      // within the chosen part's share so the pair stays uniform.
-      const double r = glm::length(e.e2), h = glm::length(e.e1);
-      const double side = 2.0 * kPi * r * h;
-      double t = u.x * e.area;
-      Vec3 on, n;
-      if (!e.capped || t < side) {
-        const double phi = 2.0 * kPi * std::clamp(t / side, 0.0, 1.0);
-        const Vec3 radial = std::cos(phi) * e.e2 + std::sin(phi) * e.e3;
-        on = e.p0 + u.y * e.e1 + radial;
-        n = radial;
-      } else {
-        const double cap = kPi * r * r;
-        t -= side;
-        Vec3 base = e.p0;
-        if (t >= cap) {  // the end at `to`
-          base += e.e1;
-          t -= cap;
-        }
-        const double rho = std::sqrt(std::clamp(t / cap, 0.0, 1.0));
-        const double phi = 2.0 * kPi * u.y;
-        on = base + rho * (std::cos(phi) * e.e2 + std::sin(phi) * e.e3);
-        n = e.e1;
-      }
-      if (!to_solid_angle(point, on, glm::normalize(n), e.pick / e.area, out)) return false;
-      out.radiance = e.radiance;
-      return true;
-    }
     case Type::Cone: {
-      // Side: the height fraction t has density in proportion to the radius there, r0 + t (r1 -
-      // r0) (the inverse of its CDF, rationalised so r0 = r1 and r0 = 0 stay exact), the angle
-      // uniform; caps: the end discs as a cylinder's. Lengths in units of |e2| (the scale).
+      // Cones and cylinders (r0 = r1). Side: the height fraction has density in proportion to
+      // the radius there, r0 + t (r1 - r0) (the inverse of its CDF, rationalised so r0 = r1
+      // and r0 = 0 stay exact), the angle uniform; then an end disc, uniform by area; u.x is
+      // reused within the chosen part's share. Lengths in units of |e2| (the scale).
       const double scale = glm::length(e.e2), r0 = e.radius, r1 = e.radius_end;
       const double h = glm::length(e.e1) / scale;
       const double side = kPi * (r0 + r1) * std::sqrt(h * h + (r1 - r0) * (r1 - r0));

@@ -72,18 +72,18 @@ class LightSet {
   std::vector<double> pick_probabilities() const;
 
  private:
-  enum class Type : uint8_t { Sphere, Quad, Triangle, Mesh, Disc, Box, Cylinder, Cone, Point, Spot, Directional, AreaLight, Sky };
+  enum class Type : uint8_t { Sphere, Quad, Triangle, Mesh, Disc, Box, Cone, Point, Spot, Directional, AreaLight, Sky };
   struct Entry {
     Type type = Type::Point;
     Rgb radiance{0.0};   // emitters: Le; point/spot: intensity; directional: irradiance
     Vec3 p0{0.0}, e1{0.0}, e2{0.0};  // corner (centre for spheres, discs and area lights) and edges
-    Vec3 e3{0.0};                    // boxes: the third edge; cylinders, cones: with e2 the radius' frame
+    Vec3 e3{0.0};                    // boxes: the third edge; cones (cylinders too): with e2 the radius' frame
     double radius = 0.0;             // spheres; discs: inner radius / outer radius; cones: at p0
     double radius_end = 0.0;         // cones: the radius at p0 + e1 (both in units of |e2|)
     double area = 0.0;
     bool disc = false;               // area_light: the ellipse inscribed in e1, e2
     bool rect = false;               // quad: e1 and e2 orthogonal, sampled by solid angle
-    bool capped = false;             // cylinders, cones: the two end discs emit too
+    bool capped = false;             // cones: the two end discs emit too
     uint32_t first = 0, count = 0;   // meshes: their triangles in tris_
     CompiledLight light;             // point, spot
     const CompiledTexture* texture = nullptr;   // textured emission: read at the sampled point
