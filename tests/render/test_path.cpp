@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include <catch2/catch.hpp>
 
 #include "render/image/float_image_io.hpp"
+#include "render/image/image.hpp"
 #include "render/renderer.hpp"
 #include "render/sample/camera.hpp"
 #include "render/sample/sampler.hpp"
@@ -438,6 +440,38 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
     path::LightSet set(world, s, {}, textures);
     CHECK(set.unsampled_emitters() == 0);   // sampled by NEE, not left to bounced rays
     CHECK(set.has_shape_emitters());
+  }
+  SECTION("an image mapped by uv on an emissive quad and sphere: NEE reads it at the sampled point's uv") {
+    // Two texels, radiance 1 where u < 1/2 and 0.2 beyond (nearest filtering): the quad's
+    // halves, and the sphere's two halves in longitude, lie symmetrically about the lit point,
+    // so L = a 0.6 (the plain emitter's factor).
+    const std::string path = (std::filesystem::temp_directory_path() / "rts_test_uv_emission.png").string();
+    Image img(2, 1);
+    img.at(0, 0)[0] = img.at(0, 0)[1] = img.at(0, 0)[2] = 1.0f;
+    img.at(1, 0)[0] = img.at(1, 0)[1] = img.at(1, 0)[2] = 0.2f;
+    write_png(path, img, 16, Encoding::Linear);
+    TextureDesc image;
+    image.kind = TextureKind::Image;
+    image.image_path = path;
+    image.linear = true;
+    image.mapping = "uv";
+    image.filter = TextureFilter::Nearest;
+    for (bool sphere : {false, true}) {
+      INFO((sphere ? "sphere" : "quad"));
+      SceneDesc s = floor_scene();
+      s.textures.push_back(image);
+      MaterialDesc lamp = emissive(Color(0.0));
+      lamp.emission_texture = 0;
+      const MaterialId mat = add_material(s, lamp);
+      if (sphere)
+        place(s, add_shape(s, Sphere{Vec3(0, 3, 0), 0.5}, mat));
+      else
+        place(s, add_shape(s, Quad{Vec3(-0.5, 1, -0.3), Vec3(1.0, 0, 0), Vec3(0, 0, 0.6)}, mat));
+      Measured m = render_path(s, 8, 16);
+      check_within_noise(m, a * 0.6 * (sphere ? (0.5 / 3) * (0.5 / 3) : rect_form_factor(0.5, 0.3, 1.0)));
+      CHECK(m.standard_error < 0.05 * m.mean);   // sampled by NEE, not left to bounced rays
+    }
+    std::filesystem::remove(path);
   }
   SECTION("a skewed emissive quad (sampled by area) lights like the rectangle it shears") {
     SceneDesc s = floor_scene();

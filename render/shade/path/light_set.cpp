@@ -70,10 +70,14 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
     if (id >= scene.materials.size()) continue;
     const MaterialDesc& m = scene.materials[id];
     if (m.emission_texture != kNoId) {
-      // Varies over the surface: sampled when the texture reads the object point only (a uv
-      // texture is found by BSDF rays alone), and never on a CSG part.
-      const bool by_point = m.emission_texture < textures.size() && !textures[m.emission_texture].uses_uv();
-      if (!by_point || i >= world.instance_count() - world.csg_part_count()) {
+      // Varies over the surface: sampled when the texture reads the object point, or reads uv
+      // on a quad or a sphere (whose uv a sampled point gives back); other uv-mapped emitters
+      // are found by BSDF rays alone, and so is any CSG part.
+      const bool known = m.emission_texture < textures.size();
+      const bool by_uv = known && textures[m.emission_texture].uses_uv();
+      const uint8_t kind = world.instance(i).kind;
+      const bool uv_known = kind == kPrimKind<Quad> || kind == kPrimKind<Sphere>;
+      if (!known || (by_uv && !uv_known) || i >= world.instance_count() - world.csg_part_count()) {
         ++unsampled_emitters_;
         continue;
       }
@@ -82,12 +86,15 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
       if (entries_.size() == before) continue;
       Entry& e = entries_.back();
       e.texture = &textures[m.emission_texture];
+      e.texture_uv = by_uv;
       const InstanceTransform* xf = world.transform(i);
       e.to_object = xf ? &xf->to_object : nullptr;
       // For picking by power: the texture at the emitter's reference point (a corner or its
-      // centre), a rough guess; any guess keeps the estimate unbiased.
+      // centre; uv's centre), a rough guess; any guess keeps the estimate unbiased.
       TexturePoint p;
       p.object_point = e.to_object ? Vec3(*e.to_object * glm::dvec4(e.p0, 1.0)) : e.p0;
+      p.uv = glm::dvec2(0.5);
+      p.has_uv = by_uv;
       e.radiance = glm::max(to_rgb(e.texture->eval(p)), Rgb(0.0));
       continue;
     }
@@ -330,14 +337,31 @@ bool LightSet::sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSampl
   const Entry& e = it == entries_.end() ? entries_.back() : *it;
   if (!sample_entry(e, point, u, out)) return false;
   if (e.texture) {
-    // Textured emission: the texture at the sampled point, in the object's space, as a ray
-    // that hits the point reads it (only textures of the object point are sampled).
+    // Textured emission: the texture at the sampled point, in the object's space and with its
+    // uv, as a ray that hits the point reads it.
     const Vec3 on = point + out.distance * out.wi;
     TexturePoint p;
     p.object_point = e.to_object ? Vec3(*e.to_object * glm::dvec4(on, 1.0)) : on;
+    if (e.texture_uv) {
+      p.uv = emitter_uv(e, on, p.object_point);
+      p.has_uv = true;
+    }
     out.radiance = glm::min(to_rgb(e.texture->eval(p)), Rgb(tol::kMaxRadiance));
   }
   return true;
+}
+
+glm::dvec2 LightSet::emitter_uv(const Entry& e, const Vec3& on, const Vec3& object_point) {
+  if (e.type == Type::Sphere) {
+    // As World::surface_uv: the direction from the centre, in the object's space.
+    const Vec3 centre = e.to_object ? Vec3(*e.to_object * glm::dvec4(e.p0, 1.0)) : e.p0;
+    return sphere_uv(glm::normalize(object_point - centre));
+  }
+  // A quad: (s, t) of on = p0 + s e1 + t e2, by the dual basis, as the quad's own test finds it.
+  const Vec3 n = glm::cross(e.e1, e.e2);
+  const double n2 = glm::dot(n, n);
+  const Vec3 d = on - e.p0;
+  return {glm::dot(d, glm::cross(e.e2, n)) / n2, glm::dot(d, glm::cross(n, e.e1)) / n2};
 }
 
 bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, LightSample& out) const {

@@ -87,6 +87,7 @@ class LightSet {
     uint32_t first = 0, count = 0;   // meshes: their triangles in tris_
     CompiledLight light;             // point, spot
     const CompiledTexture* texture = nullptr;   // textured emission: read at the sampled point
+    bool texture_uv = false;                    // ... by its uv (quads and spheres)
     const Mat4* to_object = nullptr;            // its instance's world -> object (null: identity)
     double pick = 0.0;               // probability that sample() picks this light
     double pick_cdf = 0.0;           // sum of pick up to and including this light
@@ -98,6 +99,8 @@ class LightSet {
   static constexpr uint32_t kNoEntry = 0xffffffffu;
 
   void add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le);
+  // The uv of a quad's or a sphere's point `on` (world) / `object_point`, as its hit gives it.
+  static glm::dvec2 emitter_uv(const Entry& e, const Vec3& on, const Vec3& object_point);
   // A point of entry `e` seen from `point` (its radiance untextured).
   bool sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, LightSample& out) const;
   // Sets each entry's pick probability: distant lights 1/n, the others by power.
