@@ -697,6 +697,13 @@ TEST_CASE("path mode stays finite: grazing views, albedo 1, tiny and huge scales
     place(s, add_shape(s, Sphere{Vec3(0, 1, 0), 0.0}, id));
     place(s, add_shape(s, Quad{Vec3(0, 1, 0), Vec3(0, 0, 0), Vec3(0, 0, 1)}, id));
     place(s, add_shape(s, Sphere{Vec3(0, 1.5, 0), 1e-200}, id));
+    // Cylinders and cones with no height, no radius, a point for an end, or a tiny size.
+    place(s, add_shape(s, Cylinder{Vec3(0, 1, 0), Vec3(0, 1, 0), 0.2, true}, id));
+    place(s, add_shape(s, Cylinder{Vec3(0, 1, 0), Vec3(0, 1.2, 0), 0.0, true}, id));
+    place(s, add_shape(s, Cylinder{Vec3(0.1, 1, 0), Vec3(0.1, 1 + 1e-150, 0), 1e-150, true}, id));
+    place(s, add_shape(s, Cone{Vec3(0, 1, 0), Vec3(0, 1.3, 0), 0.0, 0.0, true}, id));
+    place(s, add_shape(s, Cone{Vec3(-0.1, 1, 0), Vec3(-0.1, 1.3, 0), 0.2, 0.0, true}, id));
+    place(s, add_shape(s, Cone{Vec3(0.2, 1, 0), Vec3(0.2, 1.3, 0), 0.0, 0.1, false}, id));
     CHECK(finite_image(render_path(s, 8, 4).result));
   }
 }
