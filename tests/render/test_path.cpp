@@ -441,7 +441,7 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
     CHECK(set.unsampled_emitters() == 0);   // sampled by NEE, not left to bounced rays
     CHECK(set.has_shape_emitters());
   }
-  SECTION("an image mapped by uv on an emissive quad and sphere: NEE reads it at the sampled point's uv") {
+  SECTION("an image mapped by uv on an emissive quad, sphere and mesh: NEE reads it at the sampled point's uv") {
     // Two texels, radiance 1 where u < 1/2 and 0.2 beyond (nearest filtering): the quad's
     // halves, and the sphere's two halves in longitude, lie symmetrically about the lit point,
     // so L = a 0.6 (the plain emitter's factor).
@@ -456,17 +456,27 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
     image.linear = true;
     image.mapping = "uv";
     image.filter = TextureFilter::Nearest;
-    for (bool sphere : {false, true}) {
-      INFO((sphere ? "sphere" : "quad"));
+    for (const char* shape : {"quad", "sphere", "mesh"}) {
+      INFO(shape);
       SceneDesc s = floor_scene();
       s.textures.push_back(image);
       MaterialDesc lamp = emissive(Color(0.0));
       lamp.emission_texture = 0;
       const MaterialId mat = add_material(s, lamp);
-      if (sphere)
+      const bool sphere = std::string(shape) == "sphere";
+      if (sphere) {
         place(s, add_shape(s, Sphere{Vec3(0, 3, 0), 0.5}, mat));
-      else
+      } else if (std::string(shape) == "quad") {
         place(s, add_shape(s, Quad{Vec3(-0.5, 1, -0.3), Vec3(1.0, 0, 0), Vec3(0, 0, 0.6)}, mat));
+      } else {
+        // The quad as two triangles whose vertices carry its uvs.
+        auto mesh = std::make_shared<MeshData>();
+        mesh->positions = {{-0.5f, 1, -0.3f}, {0.5f, 1, -0.3f}, {0.5f, 1, 0.3f}, {-0.5f, 1, 0.3f}};
+        mesh->uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        mesh->indices = {0, 1, 2, 0, 2, 3};
+        s.meshes.push_back(mesh);
+        place(s, add_shape(s, MeshRef{0, false}, mat));
+      }
       Measured m = render_path(s, 8, 16);
       check_within_noise(m, a * 0.6 * (sphere ? (0.5 / 3) * (0.5 / 3) : rect_form_factor(0.5, 0.3, 1.0)));
       CHECK(m.standard_error < 0.05 * m.mean);   // sampled by NEE, not left to bounced rays

@@ -71,12 +71,15 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
     const MaterialDesc& m = scene.materials[id];
     if (m.emission_texture != kNoId) {
       // Varies over the surface: sampled when the texture reads the object point, or reads uv
-      // on a quad or a sphere (whose uv a sampled point gives back); other uv-mapped emitters
-      // are found by BSDF rays alone, and so is any CSG part.
+      // on a quad, a sphere or a mesh with uvs (whose uv a sampled point gives back); other
+      // uv-mapped emitters are found by BSDF rays alone, and so is any CSG part.
       const bool known = m.emission_texture < textures.size();
       const bool by_uv = known && textures[m.emission_texture].uses_uv();
-      const uint8_t kind = world.instance(i).kind;
-      const bool uv_known = kind == kPrimKind<Quad> || kind == kPrimKind<Sphere>;
+      const Instance& inst = world.instance(i);
+      const bool mesh_uvs = inst.kind == kPrimKind<MeshRef> && inst.index < scene.meshes.size() &&
+                            scene.meshes[inst.index] && !scene.meshes[inst.index]->uvs.empty() &&
+                            scene.meshes[inst.index]->uvs.size() == scene.meshes[inst.index]->positions.size();
+      const bool uv_known = inst.kind == kPrimKind<Quad> || inst.kind == kPrimKind<Sphere> || mesh_uvs;
       if (!known || (by_uv && !uv_known) || i >= world.instance_count() - world.csg_part_count()) {
         ++unsampled_emitters_;
         continue;
@@ -243,6 +246,11 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
       Vec3 v[3];
       for (int j = 0; j < 3; ++j) v[j] = point_to_world(xf, mesh.origin + Vec3(mesh.positions[mesh.indices[k + j]]));
       Tri t{v[0], v[1] - v[0], v[2] - v[0], 0.0};
+      if (mesh.uvs.size() == mesh.positions.size() && !mesh.uvs.empty()) {
+        t.uv0 = mesh.uvs[mesh.indices[k]];
+        t.uv1 = mesh.uvs[mesh.indices[k + 1]];
+        t.uv2 = mesh.uvs[mesh.indices[k + 2]];
+      }
       double a = 0.5 * glm::length(glm::cross(t.e1, t.e2));
       if (std::isfinite(a)) total += a;
       t.cdf = total;
@@ -335,7 +343,8 @@ bool LightSet::sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSampl
                 : std::upper_bound(entries_.begin(), entries_.end(), u_pick,
                                    [](double v, const Entry& x) { return v < x.pick_cdf; });
   const Entry& e = it == entries_.end() ? entries_.back() : *it;
-  if (!sample_entry(e, point, u, out)) return false;
+  glm::dvec2 mesh_uv(0.0);
+  if (!sample_entry(e, point, u, out, &mesh_uv)) return false;
   if (e.texture) {
     // Textured emission: the texture at the sampled point, in the object's space and with its
     // uv, as a ray that hits the point reads it.
@@ -343,7 +352,7 @@ bool LightSet::sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSampl
     TexturePoint p;
     p.object_point = e.to_object ? Vec3(*e.to_object * glm::dvec4(on, 1.0)) : on;
     if (e.texture_uv) {
-      p.uv = emitter_uv(e, on, p.object_point);
+      p.uv = e.type == Type::Mesh ? mesh_uv : emitter_uv(e, on, p.object_point);
       p.has_uv = true;
     }
     out.radiance = glm::min(to_rgb(e.texture->eval(p)), Rgb(tol::kMaxRadiance));
@@ -364,7 +373,8 @@ glm::dvec2 LightSet::emitter_uv(const Entry& e, const Vec3& on, const Vec3& obje
   return {glm::dot(d, glm::cross(e.e2, n)) / n2, glm::dot(d, glm::cross(n, e.e1)) / n2};
 }
 
-bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, LightSample& out) const {
+bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, LightSample& out,
+                            glm::dvec2* uv) const {
   out.delta = false;
   switch (e.type) {
     case Type::Point:
@@ -453,6 +463,8 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
       if (!(share > 0.0)) return false;
       glm::dvec2 b = uniform_triangle({std::clamp((target - lo) / share, 0.0, 1.0), u.y});
       Vec3 on = it->p0 + b.x * it->e1 + b.y * it->e2;
+      // The vertices' uvs at (b0, b.x, b.y), as the mesh's hit interpolates them.
+      if (uv) *uv = (1.0 - b.x - b.y) * glm::dvec2(it->uv0) + b.x * glm::dvec2(it->uv1) + b.y * glm::dvec2(it->uv2);
       Vec3 n = glm::cross(it->e1, it->e2);
       if (!to_solid_angle(point, on, glm::normalize(n), e.pick / e.area, out)) return false;
       out.radiance = e.radiance;

@@ -87,7 +87,7 @@ class LightSet {
     uint32_t first = 0, count = 0;   // meshes: their triangles in tris_
     CompiledLight light;             // point, spot
     const CompiledTexture* texture = nullptr;   // textured emission: read at the sampled point
-    bool texture_uv = false;                    // ... by its uv (quads and spheres)
+    bool texture_uv = false;                    // ... by its uv (quads, spheres, meshes with uvs)
     const Mat4* to_object = nullptr;            // its instance's world -> object (null: identity)
     double pick = 0.0;               // probability that sample() picks this light
     double pick_cdf = 0.0;           // sum of pick up to and including this light
@@ -95,14 +95,17 @@ class LightSet {
   struct Tri {
     Vec3 p0, e1, e2;
     double cdf;   // cumulative area within its mesh, up to and including this triangle
+    glm::vec2 uv0{0.0f}, uv1{0.0f}, uv2{0.0f};   // its vertices' uvs (uv-textured emission only)
   };
   static constexpr uint32_t kNoEntry = 0xffffffffu;
 
   void add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le);
   // The uv of a quad's or a sphere's point `on` (world) / `object_point`, as its hit gives it.
   static glm::dvec2 emitter_uv(const Entry& e, const Vec3& on, const Vec3& object_point);
-  // A point of entry `e` seen from `point` (its radiance untextured).
-  bool sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, LightSample& out) const;
+  // A point of entry `e` seen from `point` (its radiance untextured); `uv`, when given and the
+  // entry is a mesh, gets the point's uv.
+  bool sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, LightSample& out,
+                    glm::dvec2* uv = nullptr) const;
   // Sets each entry's pick probability: distant lights 1/n, the others by power.
   void set_pick_probabilities();
   // Area-sampled point and normal to a solid-angle sample seen from `point`.
