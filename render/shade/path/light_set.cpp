@@ -85,7 +85,7 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
         continue;
       }
       const std::size_t before = entries_.size();
-      add_emitter(world, scene, i, Rgb(1.0));
+      add_emitter(world, scene, i, Rgb(1.0), by_uv);
       if (entries_.size() == before) continue;
       Entry& e = entries_.back();
       e.texture = &textures[m.emission_texture];
@@ -209,7 +209,8 @@ std::vector<double> LightSet::pick_probabilities() const {
   return out;
 }
 
-void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le) {
+void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le,
+                           bool uvs) {
   const Instance& inst = world.instance(instance);
   const InstanceTransform* xf = world.transform(instance);
   Entry e;
@@ -241,16 +242,14 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
     const MeshData& mesh = *scene.meshes[inst.index];
     e.type = Type::Mesh;
     e.first = static_cast<uint32_t>(tris_.size());
+    e.uv_first = static_cast<uint32_t>(tri_uvs_.size());
+    uvs = uvs && !mesh.uvs.empty() && mesh.uvs.size() == mesh.positions.size();
     double total = 0.0;
     for (std::size_t k = 0; k + 2 < mesh.indices.size(); k += 3) {
       Vec3 v[3];
       for (int j = 0; j < 3; ++j) v[j] = point_to_world(xf, mesh.origin + Vec3(mesh.positions[mesh.indices[k + j]]));
       Tri t{v[0], v[1] - v[0], v[2] - v[0], 0.0};
-      if (mesh.uvs.size() == mesh.positions.size() && !mesh.uvs.empty()) {
-        t.uv0 = mesh.uvs[mesh.indices[k]];
-        t.uv1 = mesh.uvs[mesh.indices[k + 1]];
-        t.uv2 = mesh.uvs[mesh.indices[k + 2]];
-      }
+      if (uvs) tri_uvs_.push_back({mesh.uvs[mesh.indices[k]], mesh.uvs[mesh.indices[k + 1]], mesh.uvs[mesh.indices[k + 2]]});
       double a = 0.5 * glm::length(glm::cross(t.e1, t.e2));
       if (std::isfinite(a)) total += a;
       t.cdf = total;
@@ -464,7 +463,10 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
       glm::dvec2 b = uniform_triangle({std::clamp((target - lo) / share, 0.0, 1.0), u.y});
       Vec3 on = it->p0 + b.x * it->e1 + b.y * it->e2;
       // The vertices' uvs at (b0, b.x, b.y), as the mesh's hit interpolates them.
-      if (uv) *uv = (1.0 - b.x - b.y) * glm::dvec2(it->uv0) + b.x * glm::dvec2(it->uv1) + b.y * glm::dvec2(it->uv2);
+      if (uv && e.texture_uv) {
+        const TriUv& w = tri_uvs_[e.uv_first + static_cast<uint32_t>(it - begin)];
+        *uv = (1.0 - b.x - b.y) * glm::dvec2(w.uv0) + b.x * glm::dvec2(w.uv1) + b.y * glm::dvec2(w.uv2);
+      }
       Vec3 n = glm::cross(it->e1, it->e2);
       if (!to_solid_angle(point, on, glm::normalize(n), e.pick / e.area, out)) return false;
       out.radiance = e.radiance;

@@ -85,6 +85,7 @@ class LightSet {
     bool rect = false;               // quad: e1 and e2 orthogonal, sampled by solid angle
     bool capped = false;             // cones: the two end discs emit too
     uint32_t first = 0, count = 0;   // meshes: their triangles in tris_
+    uint32_t uv_first = 0;           // uv-textured meshes: their triangles' uvs in tri_uvs_
     CompiledLight light;             // point, spot
     const CompiledTexture* texture = nullptr;   // textured emission: read at the sampled point
     bool texture_uv = false;                    // ... by its uv (quads, spheres, meshes with uvs)
@@ -95,11 +96,15 @@ class LightSet {
   struct Tri {
     Vec3 p0, e1, e2;
     double cdf;   // cumulative area within its mesh, up to and including this triangle
-    glm::vec2 uv0{0.0f}, uv1{0.0f}, uv2{0.0f};   // its vertices' uvs (uv-textured emission only)
+  };
+  struct TriUv {
+    glm::vec2 uv0, uv1, uv2;   // a triangle's vertices' uvs, kept for uv-textured emission only
   };
   static constexpr uint32_t kNoEntry = 0xffffffffu;
 
-  void add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le);
+  // `uvs`: a mesh keeps its triangles' uvs (its emission is an image mapped by uv).
+  void add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le,
+                   bool uvs = false);
   // The uv of a quad's or a sphere's point `on` (world) / `object_point`, as its hit gives it.
   static glm::dvec2 emitter_uv(const Entry& e, const Vec3& on, const Vec3& object_point);
   // A point of entry `e` seen from `point` (its radiance untextured); `uv`, when given and the
@@ -114,6 +119,7 @@ class LightSet {
 
   std::vector<Entry> entries_;
   std::vector<Tri> tris_;
+  std::vector<TriUv> tri_uvs_;         // beside tris_ from a uv-textured mesh's uv_first
   std::vector<uint32_t> emitter_of_;   // by instance: its entry, or kNoEntry
   uint32_t sky_ = kNoEntry;
   const CompiledTexture* environment_ = nullptr;
