@@ -13,7 +13,7 @@ Value Interpreter::trace_object(const Value& object, const glm::dvec3& origin, c
                                 SourceLoc loc) {
   if (!(glm::length(direction) > 0.0)) fail(loc, "trace: the direction must not be the zero vector");
   render::Child key{realize_object(object), object_transform(object), ref(loc)};
-  if (!probe_ || probe_key_.node != key.node || probe_key_.transform != key.transform ||
+  if (!probe_ || probe_key_.node != key.node || probe_key_.transform.matrix() != key.transform.matrix() ||
       probe_shapes_ != builder_.object_count()) {
     probe_.reset();
     try {

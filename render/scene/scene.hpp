@@ -527,9 +527,34 @@ struct Node {
   SourceRef loc;
 };
 
+// A child's placement, child space → parent space. The identity costs no matrix: shapes placed
+// by loops mostly carry their position in their own parameters, and a 128-byte matrix per
+// such child was a third of the scene description of a million spheres (issue 24's memory
+// per object). Any other transform is one immutable matrix, shared by the copies of the child.
+class ChildTransform {
+ public:
+  ChildTransform() = default;
+  ChildTransform(const Mat4& m) {  // NOLINT: implicit, a child is placed by a matrix
+    if (m != Mat4(1.0)) matrix_ = std::make_shared<const Mat4>(m);
+  }
+  const Mat4& matrix() const { return matrix_ ? *matrix_ : identity(); }
+  operator const Mat4&() const { return matrix(); }  // NOLINT: reads as the matrix it is
+  const glm::dvec4& operator[](int column) const { return matrix()[column]; }
+  bool is_identity() const { return !matrix_; }
+
+ private:
+  static const Mat4& identity() {
+    static const Mat4 kIdentity(1.0);
+    return kIdentity;
+  }
+  std::shared_ptr<const Mat4> matrix_;
+};
+inline Mat4 operator*(const Mat4& a, const ChildTransform& b) { return a * b.matrix(); }
+inline glm::dvec4 operator*(const ChildTransform& a, const glm::dvec4& v) { return a.matrix() * v; }
+
 struct Child {
   NodeId node = kNoId;
-  Mat4 transform{1.0};             // child space → parent space
+  ChildTransform transform;        // child space → parent space
   SourceRef loc;                   // where this instance was placed
 };
 
