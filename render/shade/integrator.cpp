@@ -162,7 +162,7 @@ Rgb Integrator::trace_tree(const Ray& ray, Path& path) const {
   // the worker threads' stacks. Popping the reflected ray before the refracted one visits the
   // nodes in the recursive order, so the sampler hands out the same numbers. The stack is
   // per thread and reused: no allocation per ray once it has grown.
-  thread_local std::vector<PendingRay> pending;
+  thread_local PendingStack pending;
   pending.clear();
   if constexpr (!(F & trace_flags::kSecondary)) {
     // Nothing reflects or transmits: the tree is the camera ray's hit alone.
@@ -318,7 +318,7 @@ Integrator::Interface Integrator::interface(const MediumStack& media, uint32_t i
 }
 
 template <unsigned F>
-Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const {
+Rgb Integrator::shade(const PendingRay& pr, Path& path, PendingStack& pending) const {
   const Ray& ray = pr.ray;
   // One hit record per thread, reused: a fresh WorldHit's default member initialisers are a
   // 216-byte `rep stos` on every shaded ray (profile finding: see MaterialScratch). Safe because
@@ -386,7 +386,7 @@ Rgb Integrator::shade(const PendingRay& pr, Path& path, std::vector<PendingRay>&
 
 template <unsigned F>
 Rgb Integrator::layers(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& layered, double fog_t,
-                       const Rgb& medium_t, Path& path, std::vector<PendingRay>& pending) const {
+                       const Rgb& medium_t, Path& path, PendingStack& pending) const {
   // From the top coat down, each layer lit as a material of its own and weighted by what the
   // coats above it let through (POV-Ray's layered textures); its reflected rays carry the same
   // weight. The base is an ordinary material: what it transmits enters the object.
@@ -411,7 +411,7 @@ Rgb Integrator::layers(const PendingRay& pr, const WorldHit& hit, const Material
 
 template <unsigned F, bool kLayer>
 Rgb Integrator::surface(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& m, double fog_t,
-                        const Rgb& medium_t, const Rgb& layer, Path& path, std::vector<PendingRay>& pending) const {
+                        const Rgb& medium_t, const Rgb& layer, Path& path, PendingStack& pending) const {
   const Ray& ray = pr.ray;
   constexpr bool kMedia = (F & trace_flags::kGeneric) != 0;
   Vec3 incident = glm::normalize(ray.direction);

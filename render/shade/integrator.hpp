@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "render/shade/cache_line_allocator.hpp"
 #include "render/shade/features.hpp"
 #include "render/shade/fog.hpp"
 #include "render/shade/lights.hpp"
@@ -66,19 +67,22 @@ class Integrator {
     RayCounters& counters;
   };
   // A ray still to trace, with the product of the reflect/transmit weights that lead to it
-  // and the media it is inside. Cache-line aligned (so its size is a multiple of 64): each
-  // thread's stack of pending rays is a heap block written per ray, and without the alignment
-  // its ends shared cache lines with whatever the allocator put beside it. Profile finding
-  // (glossy race scene, 2 threads, in some runs): 1.46 s of CPU against 0.97 s on one thread,
-  // 90% of World::occluded's samples on one load from the instance array, whose line the
-  // other thread's pending rays shared; aligned, 0.96 s in every run.
-  struct alignas(64) PendingRay {
+  // and the media it is inside.
+  struct PendingRay {
     Ray ray;
     Rgb weight;
     int depth;
     MediumStack media;
     int passes = 0;  // pass-through surfaces crossed on the way (tol::kMaxPassThrough)
   };
+  // Each thread's stack of pending rays: a heap block written per reflected ray, allocated on
+  // cache-line boundaries in whole lines, so it shares no line with whatever the allocator puts
+  // beside it. Profile finding (glossy race scene, 2 threads, in some runs): 1.46 s of CPU
+  // against 0.97 s on one thread, 90% of World::occluded's samples on one load from the
+  // instance array, whose line the other thread's pending rays shared; with the block aligned,
+  // 0.96 s in every run. (Aligning PendingRay itself did the same but cost the stack copies in
+  // trace_tree a realigned frame: +0.7% instructions on the leave-out scene.)
+  using PendingStack = std::vector<PendingRay, CacheLineAllocator<PendingRay>>;
   // The indices on the two sides of a transmissive surface, from the side the ray comes from.
   struct Interface {
     double n_from = 1.0, n_to = 1.0;
@@ -94,19 +98,19 @@ class Integrator {
   // The light a pending ray's hit sends back along it (emission, ambient, direct light); its
   // reflected and refracted rays go onto `pending`.
   template <unsigned F>
-  Rgb shade(const PendingRay& pr, Path& path, std::vector<PendingRay>& pending) const;
+  Rgb shade(const PendingRay& pr, Path& path, PendingStack& pending) const;
   // The light a surface of material `m` at `hit` sends back along the pending ray (emission,
   // ambient, direct light), pushing its reflected and refracted rays with the pending ray's
   // weight past the fog (fog_t) and media (medium_t), times `layer` for a layer (kLayer).
   template <unsigned F, bool kLayer>
   [[gnu::always_inline]] inline Rgb surface(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& m,
                                             double fog_t, const Rgb& medium_t, const Rgb& layer, Path& path,
-                                            std::vector<PendingRay>& pending) const;
+                                            PendingStack& pending) const;
   // A layered material's layers, each lit by surface() and weighted by what the coats above
   // it let through (render/shade/layers.hpp).
   template <unsigned F>
   Rgb layers(const PendingRay& pr, const WorldHit& hit, const MaterialDesc& layered, double fog_t,
-             const Rgb& medium_t, Path& path, std::vector<PendingRay>& pending) const;
+             const Rgb& medium_t, Path& path, PendingStack& pending) const;
   template <unsigned F>
   Rgb direct_light(const WorldHit& hit, const MaterialDesc& m, const Rgb& albedo, const Vec3& n,
                    const Vec3& shadow_origin, const Vec3& view, const MediumStack& media, Path& path) const;
