@@ -50,6 +50,7 @@ void World::add_geometry(const SceneDesc& scene, const ShapeDesc& shape, Instanc
           inst.index = static_cast<uint32_t>(array.size());
           array.push_back(g);
           if constexpr (std::is_same_v<T, Quad>) quad_frames_.emplace_back(g);
+          if constexpr (std::is_same_v<T, Plane>) plane_frames_.emplace_back(g);
           if constexpr (ShapeTraits<T>::kInfo.bounded)
             object_bounds = bounds(g);
           else
@@ -216,6 +217,8 @@ bool World::intersect_kind(std::index_sequence<I...>, const Instance& inst, cons
               return meshes_[inst.index]->intersect(ray, ray_t, hit, inst.smooth);
             else if constexpr (std::is_same_v<T, Quad>)
               return render::intersect(quad_frames_[inst.index], ray, ray_t, hit);
+            else if constexpr (std::is_same_v<T, Plane>)
+              return render::intersect(plane_frames_[inst.index], ray, ray_t, hit);
             else
               return render::intersect(std::get<I>(shapes_)[inst.index], ray, ray_t, hit);
           }(), true)) || ...);
@@ -473,7 +476,7 @@ WorldMemory World::memory() const {
                  group_transforms_.capacity() * sizeof(GroupTransform);
   for (const Group& g : groups_) w.bvh += g.bvh.nodes.capacity() * sizeof(BVHNode) + g.bvh.order.capacity() * sizeof(uint32_t);
   std::apply([&](const auto&... array) { ((w.shapes += array.capacity() * sizeof(array[0])), ...); }, shapes_);
-  w.shapes += quad_frames_.capacity() * sizeof(QuadFrame);
+  w.shapes += quad_frames_.capacity() * sizeof(QuadFrame) + plane_frames_.capacity() * sizeof(PlaneFrame);
   for (const Csg& c : csgs_)
     w.shapes += c.tree.nodes.capacity() * sizeof(CsgNode) + c.tree.children.capacity() * sizeof(uint32_t) +
                 c.leaf_instance.capacity() * sizeof(uint32_t) + c.leaf_bounds.capacity() * sizeof(AABB);

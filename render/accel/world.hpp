@@ -244,8 +244,9 @@ class World {
   };
 
   ShapeArrays shapes_;
-  // Beside shapes_' quads, index for index: what their test derives from the vectors.
+  // Beside shapes_' quads and planes, index for index: what their tests derive from them.
   std::vector<QuadFrame> quad_frames_;
+  std::vector<PlaneFrame> plane_frames_;
   std::vector<Csg> csgs_;
   // An instanced group's contents: parts instances_[first, first + count), in the group's
   // space, under one BVH shared by every placement.

@@ -39,24 +39,49 @@ inline void plane_tangents(const Vec3& n, Vec3& t1, Vec3& t2) {
   t2 = glm::cross(t1, n);
 }
 
-inline bool intersect(const Plane& p, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
-  double len = glm::length(p.normal);
-  if (!(len > tol::kTinyLength)) return false;
-  Vec3 n = p.normal / len;
+// What the test derives from the plane, computed once when the world is built instead of per
+// ray (profile finding, leave-out scene: the tangents' normalisation per plane hit, and a
+// plane is tested by every ray). The values are the ones the per-ray test computed, so hits
+// are the same bit for bit.
+struct PlaneFrame {
+  bool valid = false;      // a normal of usable length
+  Vec3 n{0.0};             // the unit normal
+  double offset = 0.0;     // offset / |normal|: dot(n, p) = offset on the plane
+  Vec3 t1{0.0}, t2{0.0};   // the tangents of the uv (plane_tangents)
+  explicit PlaneFrame(const Plane& p) {
+    const double len = glm::length(p.normal);
+    if (!(len > tol::kTinyLength)) return;
+    valid = true;
+    n = p.normal / len;
+    offset = p.offset / len;
+    plane_tangents(n, t1, t2);
+  }
+};
+
+inline bool intersect(const PlaneFrame& p, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  if (!p.valid) return false;
+  const Vec3& n = p.n;
   double denom = glm::dot(n, ray.direction);
-  if (std::abs(denom) <= tol::kParallelCosine * glm::length(ray.direction)) return false;
-  double t = (p.offset / len - glm::dot(n, ray.origin)) / denom;
+  // |denom| <= kParallelCosine |d|, compared squared first (no square root per test), the
+  // exact form deciding where the squares say parallel, overflow or underflow (as quads).
+  constexpr double kParallel2 = tol::kParallelCosine * tol::kParallelCosine;
+  if (!(denom * denom > kParallel2 * glm::dot(ray.direction, ray.direction)) &&
+      std::abs(denom) <= tol::kParallelCosine * glm::length(ray.direction))
+    return false;
+  double t = (p.offset - glm::dot(n, ray.origin)) / denom;
   if (!ray_t.surrounds(t)) return false;
   hit.t = t;
   hit.point = ray.at(t);
   hit.error = ray_point_error(ray, t);
   hit.normal = n;
   hit.shading_normal = n;
-  Vec3 t1, t2;
-  plane_tangents(n, t1, t2);
-  hit.uv = {glm::dot(hit.point, t1), glm::dot(hit.point, t2)};
+  hit.uv = {glm::dot(hit.point, p.t1), glm::dot(hit.point, p.t2)};
   hit.has_uv = true;
   return true;
+}
+
+inline bool intersect(const Plane& p, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  return intersect(PlaneFrame(p), ray, ray_t, hit);
 }
 
 }  // namespace rts::render
