@@ -20,7 +20,8 @@ struct CacheLineAllocator {
   T* allocate(std::size_t n) {
     return static_cast<T*>(::operator new(bytes(n), std::align_val_t(kCacheLine)));
   }
-  void deallocate(T* p, std::size_t n) noexcept { ::operator delete(p, bytes(n), std::align_val_t(kCacheLine)); }
+  // Unsized: clang 14 does not enable sized deallocation by default.
+  void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, std::align_val_t(kCacheLine)); }
   template <class U>
   bool operator==(const CacheLineAllocator<U>&) const noexcept { return true; }
 };
