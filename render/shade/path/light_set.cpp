@@ -23,6 +23,9 @@ Vec3 point_to_world(const InstanceTransform* xf, const Vec3& p) {
 }
 Vec3 vector_to_world(const InstanceTransform* xf, const Vec3& v) { return xf ? xf->vector_to_world * v : v; }
 
+// A mesh whose vertices carry uvs (one per position), as its hits read them.
+bool has_vertex_uvs(const MeshData& m) { return !m.uvs.empty() && m.uvs.size() == m.positions.size(); }
+
 // A transform that keeps spheres spheres (rotation, mirror, uniform scale, translation):
 // its scale factor, or 0 when it stretches some axis more than another.
 double uniform_scale(const InstanceTransform* xf) {
@@ -77,8 +80,7 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
       const bool by_uv = known && textures[m.emission_texture].uses_uv();
       const Instance& inst = world.instance(i);
       const bool mesh_uvs = inst.kind == kPrimKind<MeshRef> && inst.index < scene.meshes.size() &&
-                            scene.meshes[inst.index] && !scene.meshes[inst.index]->uvs.empty() &&
-                            scene.meshes[inst.index]->uvs.size() == scene.meshes[inst.index]->positions.size();
+                            scene.meshes[inst.index] && has_vertex_uvs(*scene.meshes[inst.index]);
       const bool uv_known = inst.kind == kPrimKind<Quad> || inst.kind == kPrimKind<Sphere> || mesh_uvs;
       if (!known || (by_uv && !uv_known) || i >= world.instance_count() - world.csg_part_count()) {
         ++unsampled_emitters_;
@@ -243,7 +245,7 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
     e.type = Type::Mesh;
     e.first = static_cast<uint32_t>(tris_.size());
     e.uv_first = static_cast<uint32_t>(tri_uvs_.size());
-    uvs = uvs && !mesh.uvs.empty() && mesh.uvs.size() == mesh.positions.size();
+    uvs = uvs && has_vertex_uvs(mesh);
     double total = 0.0;
     for (std::size_t k = 0; k + 2 < mesh.indices.size(); k += 3) {
       Vec3 v[3];
