@@ -174,6 +174,21 @@ std::string Translator::vector_value(const Expr& e) {
   return t.s;
 }
 
+// As value() and vector_value(), as an operand of an arithmetic operator of precedence `prec`
+// (7: + and -, 8: * and /): parenthesised when weaker. POV-Ray's `!x` translates to the
+// condition `not x != 0`, which `5 * not ...` cannot parse (fuzzer, CI of 2026-11-29), and a
+// sum after `-` would change its meaning.
+std::string Translator::operand(const Expr& e, int prec) { return paren(expr(e), prec); }
+
+std::string Translator::vector_operand(const Expr& e, int prec) {
+  std::vector<double> v;
+  double k;
+  if ((literal_vector(e, v) && v.size() == 3) || literal_number(e, k)) return vector_value(e);
+  Text t = expr(e);
+  if (t.type == Type::Float) return paren(Text{"<1, 1, 1> * " + paren(t, 8), Type::Vector, 8}, prec);
+  return paren(t, prec);
+}
+
 // POV-Ray's library colours declared rgbf (colors.inc's Clear, glass.inc's Col_Glass_*): their
 // filter, which rts's library colours (rgb) leave out; null for the others.
 static const double* library_filter(const std::string& name) {

@@ -64,6 +64,7 @@ bool camera_transform(const Item& it, glm::dmat4& out) {
 
 void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
   std::string position, color = "rgb(1)", point_at = "<0, 0, 0>", radius, falloff, kind = "point_light";
+  std::string position_operand, point_at_operand = point_at;   // as `point_at - position`'s operands
   bool area = false;                    // area_light given: its u, v, samples and disc in area_props
   std::vector<std::string> area_props;
   std::vector<std::string> extra, xforms;
@@ -76,7 +77,10 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
   for (const Item& it : b.items) {
     if (it.kind == Item::Value) {
       if (values == 0) location = &it;
-      if (values == 0) position = vector_value(*it.args[0]);
+      if (values == 0) {
+        position = vector_value(*it.args[0]);
+        position_operand = vector_operand(*it.args[0], 8);
+      }
       else if (values == 1) color = color_value(*it.args[0]);
       ++values;
       continue;
@@ -107,6 +111,7 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
       kind = "directional_light";
     } else if (k == "point_at" && !it.args.empty()) {
       point_at = vector_value(*it.args[0]);
+      point_at_operand = vector_operand(*it.args[0], 7);
     } else if (k == "radius" && !it.args.empty()) {
       double r;
       // POV-Ray takes the angles' cosines, so a negative angle is its opposite (`falloff -90`
@@ -123,7 +128,7 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
       area = true;
       area_props.push_back("u = " + vector_value(*it.args[0]));
       area_props.push_back("v = " + vector_value(*it.args[1]));
-      area_props.push_back(fmt::format("samples = {} * {}", value(*it.args[2]), value(*it.args[3])));
+      area_props.push_back(fmt::format("samples = {} * {}", operand(*it.args[2], 8), operand(*it.args[3], 8)));
     } else if (k == "circular") {
       area_props.push_back("disc = true");
     } else if (k == "adaptive" || k == "jitter" || k == "orient" || k == "media_attenuation" ||
@@ -155,7 +160,7 @@ void Translator::light(Writer& w, const Block& b, const std::string& prefix) {
   }
   std::vector<std::string> props;
   if (kind == "directional_light") {
-    props.push_back(fmt::format("direction = {} - {}", point_at, position));
+    props.push_back(fmt::format("direction = {} - {}", point_at_operand, position_operand));
   } else {
     props.push_back("position = " + position);
   }
@@ -246,8 +251,8 @@ void Translator::camera(Writer& w, const Block& b) {
     else if (k == "perspective") ortho = false, projection.clear();
     else if (k == "aperture" && a) extra.push_back("aperture = " + value(*a));
     else if (k == "focal_point" && a) {
-      extra.push_back(fmt::format("focus_distance = length({} - {})", vector_value(*a),
-                                  location ? vector_value(*location) : "<0, 0, 0>"));
+      extra.push_back(fmt::format("focus_distance = length({} - {})", vector_operand(*a, 7),
+                                  location ? vector_operand(*location, 8) : "<0, 0, 0>"));
     } else if (k == "blur_samples" || k == "confidence" || k == "variance") {
       // rts's samples per pixel carry the blur: settings { samples }
     } else if (k == "translate" || k == "rotate" || k == "scale" || k == "matrix" || k == "transform") {
@@ -365,7 +370,9 @@ void Translator::camera(Writer& w, const Block& b) {
   } else {
     for (const Item* it : moves) unsupported(it->loc, "camera " + it->name, "location and look_at written moved", false);
     if (look_at) props.push_back("look_at = " + vector_value(*look_at));
-    else props.push_back(fmt::format("look_at = {} + {}", pos, direction ? vector_value(*direction) : "<0, 0, 1>"));
+    else
+      props.push_back(fmt::format("look_at = {} + {}", location ? vector_operand(*location, 7) : pos,
+                                  direction ? vector_operand(*direction, 7) : "<0, 0, 1>"));
     if (sky) props.push_back("up = " + vector_value(*sky));
     if (lr && lu && ld) {
       // POV-Ray's look_at keeps the vectors' handedness, (up x direction) . right, and takes a

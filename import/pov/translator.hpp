@@ -84,6 +84,9 @@ class Translator {
   Text call(const Expr& e);
   std::string value(const Expr& e) { return expr(e).s; }
   std::string vector_value(const Expr& e);
+  // The same as an operand of an operator of precedence `prec` (7: + and -, 8: * and /).
+  std::string operand(const Expr& e, int prec);
+  std::string vector_operand(const Expr& e, int prec);
   // An array initialiser's element: a value, or a texture, material or pigment block.
   std::string array_element(const Expr& e);  // promotes a float to <f, f, f>
   std::string color_value(const Expr& e, double* filter = nullptr, double* transmit = nullptr,
