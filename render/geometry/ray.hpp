@@ -29,6 +29,17 @@ constexpr double error_gamma(int n) {
   return n * u / (1.0 - n * u);
 }
 
+// Whether `ray` runs parallel to a plane of normal n within tol::kParallelCosine: |denom| <=
+// kParallelCosine |n| |d|, with denom = dot(n, d), |n| = n_len and n_len2 = |n|^2. Compared
+// squared first, without a square root per test (profile finding, path-traced Cornell box: the
+// quad test's two square roots were its hottest instructions); only where the squares say
+// parallel, or overflow or underflow, does the exact form decide. Quads, planes and discs.
+inline bool nearly_parallel(double denom, double n_len2, double n_len, const Ray& ray) {
+  constexpr double kParallel2 = tol::kParallelCosine * tol::kParallelCosine;
+  return !(denom * denom > kParallel2 * n_len2 * glm::dot(ray.direction, ray.direction)) &&
+         std::abs(denom) <= tol::kParallelCosine * n_len * glm::length(ray.direction);
+}
+
 // The absolute error bound (per component) of p = o + t d computed in doubles, for shapes
 // that do not re-derive the hit point from their own parameters; t's own rounding counts as
 // a few more operations.

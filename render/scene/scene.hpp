@@ -540,7 +540,6 @@ class ChildTransform {
   const Mat4& matrix() const { return matrix_ ? *matrix_ : identity(); }
   operator const Mat4&() const { return matrix(); }  // NOLINT: reads as the matrix it is
   const glm::dvec4& operator[](int column) const { return matrix()[column]; }
-  bool is_identity() const { return !matrix_; }
 
  private:
   static const Mat4& identity() {

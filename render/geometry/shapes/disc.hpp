@@ -55,7 +55,7 @@ inline AABB bounds(const Disc& d) {
 inline bool intersect_disc(const Vec3& center, const Vec3& n, double inner, double outer,
                            const Ray& ray, const Interval& ray_t, double& t_out) {
   double denom = glm::dot(n, ray.direction);
-  if (std::abs(denom) <= tol::kParallelCosine * glm::length(ray.direction)) return false;
+  if (nearly_parallel(denom, 1.0, 1.0, ray)) return false;   // n is unit length
   double t = glm::dot(center - ray.origin, n) / denom;
   if (!ray_t.surrounds(t)) return false;
   Vec3 r = ray.at(t) - center;

@@ -62,12 +62,7 @@ inline bool intersect(const PlaneFrame& p, const Ray& ray, Interval ray_t, Surfa
   if (!p.valid) return false;
   const Vec3& n = p.n;
   double denom = glm::dot(n, ray.direction);
-  // |denom| <= kParallelCosine |d|, compared squared first (no square root per test), the
-  // exact form deciding where the squares say parallel, overflow or underflow (as quads).
-  constexpr double kParallel2 = tol::kParallelCosine * tol::kParallelCosine;
-  if (!(denom * denom > kParallel2 * glm::dot(ray.direction, ray.direction)) &&
-      std::abs(denom) <= tol::kParallelCosine * glm::length(ray.direction))
-    return false;
+  if (nearly_parallel(denom, 1.0, 1.0, ray)) return false;   // n is unit length
   double t = (p.offset - glm::dot(n, ray.origin)) / denom;
   if (!ray_t.surrounds(t)) return false;
   hit.t = t;

@@ -71,14 +71,7 @@ inline bool intersect(const QuadFrame& q, const Ray& ray, Interval ray_t, Surfac
   const double n2 = q.n2;
   if (!(n2 > 0.0)) return false;   // degenerate (parallel or zero edges): never hit
   const double denom = glm::dot(n, ray.direction);
-  // |denom| <= kParallelCosine |n| |d| means parallel. Compared squared first: the two square
-  // roots were the test's largest cost (profile finding, Cornell box: intersect_kind 31% of the
-  // path-traced render, its hottest instructions waiting on sqrtsd). Only where the squares
-  // say parallel, or overflow or underflow, does the exact form decide.
-  constexpr double kParallel2 = tol::kParallelCosine * tol::kParallelCosine;
-  if (!(denom * denom > kParallel2 * n2 * glm::dot(ray.direction, ray.direction)) &&
-      std::abs(denom) <= tol::kParallelCosine * q.len_n * glm::length(ray.direction))
-    return false;
+  if (nearly_parallel(denom, n2, q.len_n, ray)) return false;
   const double t = glm::dot(q.corner - ray.origin, n) / denom;
   if (!ray_t.surrounds(t)) return false;
   const Vec3 p = ray.at(t);

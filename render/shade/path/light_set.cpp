@@ -516,7 +516,7 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
       // and r0 = 0 stay exact), the angle uniform; then an end disc, uniform by area; u.x is
       // reused within the chosen part's share. Lengths in units of |e2| (the scale).
       const double scale = glm::length(e.e2), r0 = e.radius, r1 = e.radius_end;
-      const double h = glm::length(e.e1) / scale;
+      const double axis_len = glm::length(e.e1), h = axis_len / scale;
       const double side = kPi * (r0 + r1) * std::sqrt(h * h + (r1 - r0) * (r1 - r0));
       double t = u.x * e.area / (scale * scale);
       Vec3 on, n;
@@ -529,7 +529,7 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
         on = e.p0 + height * e.e1 + radius * radial;
         // Outward normal: the radial direction tilted by the slope, h along it, (r1 - r0) back
         // along the axis (both scaled alike, so the direction is the object's).
-        n = (h * scale) * radial - (r1 - r0) * scale * scale * e.e1 / glm::length(e.e1);
+        n = (h * scale) * radial - (r1 - r0) * scale * scale * e.e1 / axis_len;
       } else {
         const double cap0 = kPi * r0 * r0;
         t -= side;
