@@ -250,21 +250,19 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
     int normals = ps.has("n0") + ps.has("n1") + ps.has("n2");
     if (normals != 0 && normals != 3) ps.fail_block("triangle needs all of n0, n1, n2 or none of them");
     if (normals == 3) {
-      g.has_normals = true;
-      g.n0 = ps.vec3("n0", Vec3(0.0));
-      g.n1 = ps.vec3("n1", Vec3(0.0));
-      g.n2 = ps.vec3("n2", Vec3(0.0));
+      g.normals = Boxed<TriangleNormals>(
+          TriangleNormals{ps.vec3("n0", Vec3(0.0)), ps.vec3("n1", Vec3(0.0)), ps.vec3("n2", Vec3(0.0))});
     }
     auto mesh = std::make_shared<MeshData>();
     if (vertex_material(ps, 3, *mesh)) {
       // A triangle whose vertices carry material values is traced as a one-triangle mesh,
       // which knows how to interpolate them.
       for (const Vec3& v : {g.v0, g.v1, g.v2}) mesh->positions.emplace_back(v);
-      if (g.has_normals)
-        for (const Vec3& n : {g.n0, g.n1, g.n2}) mesh->normals.emplace_back(glm::normalize(n));
+      if (g.normals)
+        for (const Vec3& n : {g.normals->n0, g.normals->n1, g.normals->n2}) mesh->normals.emplace_back(glm::normalize(n));
       mesh->indices = {0, 1, 2};
       scene_.meshes.push_back(std::move(mesh));
-      s.geometry = MeshRef{static_cast<MeshId>(scene_.meshes.size() - 1), g.has_normals};
+      s.geometry = MeshRef{static_cast<MeshId>(scene_.meshes.size() - 1), static_cast<bool>(g.normals)};
     } else {
       if (degenerate_triangle(g.v0, g.v1, g.v2))
         scene_.warnings.push_back({ps.loc(), "triangle has zero area (collinear or repeated vertices): it is skipped"});
@@ -491,7 +489,7 @@ std::string csg_refusal(const SceneDesc& scene, NodeId id, std::string_view op, 
   if (const auto* c = std::get_if<Cone>(&s.geometry)) open = !c->capped;
   if (const auto* c = std::get_if<Sor>(&s.geometry)) open = c->open;
   if (const auto* c = std::get_if<Lathe>(&s.geometry)) open = !c->closed;
-  if (const auto* c = std::get_if<Prism>(&s.geometry)) open = c->open;
+  if (const auto* c = std::get_if<Prism>(&s.geometry)) open = (*c)->open;
   if (open) {
     bool capped_kind = info.closure == Closure::WhenCapped;
     std::string what = fmt::format("{} {}", capped_kind ? "an uncapped" : "a", info.name);

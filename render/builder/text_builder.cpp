@@ -208,17 +208,17 @@ NodeId SceneBuilder::text(ParamSet& ps, const ShapeDesc& base) {
       FT_Outline_Decompose(&slot->outline, &funcs, &sink);
       if (sink.points.size() >= 4 && sink.points.size() <= static_cast<std::size_t>(kMaxPrismPoints)) {
         ShapeDesc s = base;
-        Prism g;
+        PrismData g;
         g.points = std::move(sink.points);
         g.spline = SplineKind::Bezier;
         // Swept along y from -thickness to 0; turned by -90 degrees about x below, the outline's
         // second coordinate is the text's y and the sweep runs from z = 0 to z = thickness.
         g.height1 = -thickness;
         g.height2 = 0.0;
-        Prism probe = g;
+        PrismData probe = g;
         if (detail::prism_spline_curves(probe).empty()) {  // a contour that does not close is left out
           prism_setup(g);
-          s.geometry = std::move(g);
+          s.geometry = Prism(std::move(g));
           scene_.shapes.push_back(std::move(s));
           const NodeId node = add_node(scene_, NodeKind::Shape, scene_.shapes.size() - 1, ps.loc());
           const Mat4 place = glm::translate(Mat4(1.0), pen) *

@@ -22,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/scene/boxed.hpp"
 #include "render/scene/pattern_desc.hpp"
 #include "render/scene/sampler_kind.hpp"
 #include "render/scene/source_ref.hpp"
@@ -242,7 +243,10 @@ struct MeshData {
 // ---- shapes (each in its own object space) ------------------------------------------------
 struct Sphere   { Vec3 center{0.0}; double radius = 1.0; };
 struct Plane    { Vec3 normal{0, 1, 0}; double offset = 0.0; };          // dot(normal, p) = offset
-struct Triangle { Vec3 v0, v1, v2; bool has_normals = false; Vec3 n0, n1, n2; };
+// smooth_triangle's vertex normals, boxed: most triangles have none (72 bytes kept out of
+// every shape's description).
+struct TriangleNormals { Vec3 n0, n1, n2; };
+struct Triangle { Vec3 v0, v1, v2; Boxed<TriangleNormals> normals; };
 struct Box      { Vec3 min{-1.0}, max{1.0}; };
 struct Cylinder { Vec3 from{0, 0, 0}, to{0, 1, 0}; double radius = 1.0; bool capped = true; };
 struct Cone     { Vec3 from{0, 0, 0}, to{0, 1, 0}; double radius_from = 1.0, radius_to = 0.0; bool capped = true; };
@@ -258,7 +262,7 @@ struct Torus    { double major = 1.0, minor = 0.25; };
 struct Superellipsoid { double e = 1.0, n = 1.0; };
 // f(p) < threshold inside a box or sphere, POV-Ray's isosurface (render/geometry/shapes/isosurface.hpp).
 struct IsoGradientMonitor;
-struct Isosurface {
+struct IsosurfaceData {
   std::shared_ptr<const CompiledFunction> function;
   double threshold = 0.0, max_gradient = 1.1, accuracy = 0.001;
   int max_trace = 1;
@@ -266,6 +270,16 @@ struct Isosurface {
   Vec3 box_min{-1.0}, box_max{1.0}, center{0.0};
   double radius = 1.0;
   std::shared_ptr<IsoGradientMonitor> monitor;  // the largest slope seen while tracing (shared by copies)
+};
+
+// The shape holds its data boxed (144 bytes; boxed.hpp says why); `->` reaches it.
+struct Isosurface {
+  Boxed<IsosurfaceData> data{IsosurfaceData{}};
+  Isosurface() = default;
+  Isosurface(IsosurfaceData d) : data(std::move(d)) {}  // NOLINT: a shape from its data
+  IsosurfaceData* operator->() { return data.operator->(); }
+  const IsosurfaceData* operator->() const { return data.operator->(); }
+  const IsosurfaceData& operator*() const { return *data; }
 };
 
 // POV-Ray's blob: components adding s (1 - d^2/r^2)^2 within r of a centre or of an axis
@@ -333,7 +347,7 @@ struct PrismEdge {
   double x0, z0, x1, z1;
   double outward;                    // +1 when (dz, -dx) points out of the polygon, else -1
 };
-struct Prism {
+struct PrismData {
   std::vector<Vec3> points;          // <x, z, 0> as given
   std::vector<PrismEdge> edges;      // the closed sub-polygons' edges (the last one closed if it was not)
   double height1 = 0.0, height2 = 1.0;
@@ -343,6 +357,16 @@ struct Prism {
   std::vector<SplineSegment> curves;  // the outline's spline pieces (x, z as x, y); empty for linear
   std::vector<double> curve_outward;  // per curve: +1 when (dz, -dx) along it points out, else -1
   bool conic = false;                // conic_sweep: the outline scaled by y from the apex at the origin
+};
+
+// The shape holds its data boxed (176 bytes; boxed.hpp says why); `->` reaches it.
+struct Prism {
+  Boxed<PrismData> data{PrismData{}};
+  Prism() = default;
+  Prism(PrismData d) : data(std::move(d)) {}  // NOLINT: a shape from its data
+  PrismData* operator->() { return data.operator->(); }
+  const PrismData* operator->() const { return data.operator->(); }
+  const PrismData& operator*() const { return *data; }
 };
 
 // POV-Ray's poly (quartic, cubic): the surface sum c x^i y^j z^k = 0 over i + j + k <= order,
@@ -356,14 +380,17 @@ struct Poly {
 using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,
                                    Isosurface, Blob, HeightField, Sor, Lathe, Prism, Poly>;
 
+// 128 bytes: the flags sit beside the material in one word (ShapeGeometry is 104 since the
+// large shapes keep their bulk boxed).
 struct ShapeDesc {
   ShapeGeometry geometry;
   MaterialId material = kNoId;   // kNoId: the default material (inside CSG: the block's)
-  SourceRef loc;
   bool inverse = false;          // closed shapes in CSG: the solid is everything outside the surface
   // false: shadow rays pass it (POV-Ray's no_shadow); camera and bounced rays still see it.
   bool casts_shadow = true;
+  SourceRef loc;
 };
+static_assert(sizeof(void*) != 8 || sizeof(ShapeDesc) <= 128, "a shape's description grew: box its bulk (boxed.hpp)");
 
 // ---- constructive solid geometry (POV-Ray's semantics) ------------------------------------
 // union: every child's surface (inner ones too); merge: the union's outer surface only;

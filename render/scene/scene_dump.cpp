@@ -79,7 +79,7 @@ std::string shape_text(const ShapeDesc& s) {
     }
     std::string operator()(const Triangle& g) {
       std::string s = fmt::format("triangle v0 {} v1 {} v2 {}", vec(g.v0), vec(g.v1), vec(g.v2));
-      if (g.has_normals) s += fmt::format(" n0 {} n1 {} n2 {}", vec(g.n0), vec(g.n1), vec(g.n2));
+      if (g.normals) s += fmt::format(" n0 {} n1 {} n2 {}", vec(g.normals->n0), vec(g.normals->n1), vec(g.normals->n2));
       return s;
     }
     std::string operator()(const Box& g) { return fmt::format("box min {} max {}", vec(g.min), vec(g.max)); }
@@ -120,7 +120,8 @@ std::string shape_text(const ShapeDesc& s) {
       for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
       return out + (g.spline != SplineKind::Linear ? fmt::format(" spline {}", spline_name(g.spline)) : "");
     }
-    std::string operator()(const Prism& g) {
+    std::string operator()(const Prism& shape) {
+      const PrismData& g = *shape;
       std::string out = fmt::format("prism height1 {} height2 {} points", num(g.height1), num(g.height2));
       for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
       if (g.spline != SplineKind::Linear) out += fmt::format(" spline {}", spline_name(g.spline));
@@ -138,7 +139,8 @@ std::string shape_text(const ShapeDesc& s) {
                          num(g.data->min_height), num(g.data->max_height), g.smooth ? "true" : "false",
                          num(g.water_level));
     }
-    std::string operator()(const Isosurface& g) {
+    std::string operator()(const Isosurface& shape) {
+      const IsosurfaceData& g = *shape;
       std::string box = g.container_sphere ? fmt::format("sphere {} {}", vec(g.center), num(g.radius))
                                            : fmt::format("box {} {}", vec(g.box_min), vec(g.box_max));
       return fmt::format("isosurface function {} threshold {} max_gradient {} accuracy {} max_trace {} "

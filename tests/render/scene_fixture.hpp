@@ -16,7 +16,10 @@ inline MaterialId add_material(SceneDesc& s, const MaterialDesc& m) {
 }
 
 inline NodeId add_shape(SceneDesc& s, ShapeGeometry g, MaterialId material = kNoId) {
-  s.shapes.push_back(ShapeDesc{std::move(g), material, {}});
+  ShapeDesc shape;
+  shape.geometry = std::move(g);
+  shape.material = material;
+  s.shapes.push_back(std::move(shape));
   s.nodes.push_back(Node{NodeKind::Shape, static_cast<uint32_t>(s.shapes.size() - 1), {}});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }

@@ -248,8 +248,7 @@ TEST_CASE("smooth normals opposite to the winding shade like consistent ones", "
     SECTION("triangle") {
       SceneDesc s;
       Triangle t = triangle(a, b, c);
-      t.has_normals = true;
-      t.n0 = t.n1 = t.n2 = given;
+      t.normals = Boxed<TriangleNormals>(TriangleNormals{given, given, given});
       place(s, add_shape(s, t, add_material(s, m)));
       place(s, add_light(s, l));
       Rgb got = Tracer(s).trace(ray);

@@ -256,7 +256,7 @@ TEST_CASE("csg: a prism crossed more than a sweep lists is swept again, as a mes
   pts.push_back(Vec3(21, 1, 0));
   pts.push_back(Vec3(21, 0, 0));
   pts.push_back(Vec3(0, 0, 0));
-  Prism comb;
+  PrismData comb;
   comb.points = pts;
   comb.height1 = -0.5;
   comb.height2 = 0.5;

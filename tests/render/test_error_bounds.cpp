@@ -77,7 +77,7 @@ T sample(SceneDesc& s) {
     f->emit(Op::Mul, {sn, k}, w);
     f->emit(Op::Add, {s2, w}, r);
     f->set_result(r);
-    Isosurface g;
+    IsosurfaceData g;
     g.function = f;
     g.threshold = 0.64;
     g.max_gradient = 3.0;
@@ -111,7 +111,7 @@ T sample(SceneDesc& s) {
     return g;
   } else if constexpr (std::is_same_v<T, Prism>) {
     // Two sub-polygons: a concave outline with a square hole (even-odd), closed by caps.
-    Prism g;
+    PrismData g;
     g.points = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(0, 0.3, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0),
                 Vec3(-0.4, -0.6, 0), Vec3(0.4, -0.6, 0), Vec3(0.4, -0.2, 0), Vec3(-0.4, -0.2, 0), Vec3(-0.4, -0.6, 0)};
     g.height1 = -0.5;

@@ -114,7 +114,7 @@ TEST_CASE("degenerate shapes render without NaN", "[extremes]") {
   MaterialId m = shiny(s);
   place(s, add_shape(s, triangle(Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(1, 2, 0)), m));   // zero area (collinear)
   Triangle smooth = triangle(Vec3(0.3), Vec3(0.3), Vec3(0.3));                        // a point, with normals
-  smooth.has_normals = true;
+  smooth.normals = Boxed<TriangleNormals>(TriangleNormals{Vec3(0.0), Vec3(0.0), Vec3(0.0)});
   place(s, add_shape(s, smooth, m));
   place(s, add_shape(s, Cylinder{Vec3(0, 0.5, 0), Vec3(0, 0.5, 0), 1.0, true}, m));    // from == to
   place(s, add_shape(s, Cylinder{Vec3(0, 0.5, 0), Vec3(0, 0.5, 0), 1.0, false}, m));

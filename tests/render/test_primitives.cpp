@@ -126,8 +126,8 @@ TEST_CASE("triangle: inside, outside, edge-on and degenerate", "[primitives]") {
 }
 
 TEST_CASE("triangle: vertex normals are interpolated", "[primitives]") {
-  Triangle tri{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), true,
-               Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 0, 1)};
+  Triangle tri{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+               Boxed<TriangleNormals>(TriangleNormals{Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 0, 1)})};
   SurfaceHit h;
   REQUIRE(intersect(tri, ray(Vec3(0.5, 0.0, -1), Vec3(0, 0, 1)), kAll, h));
   check_vec(h.shading_normal, glm::normalize(Vec3(0.5, 0, 0.5)), 1e-6);

@@ -11,8 +11,8 @@ using namespace rts::render;
 
 namespace {
 
-Prism make(std::vector<Vec3> pts, double h1 = 0.0, double h2 = 2.0, bool open = false) {
-  Prism p;
+PrismData make(std::vector<Vec3> pts, double h1 = 0.0, double h2 = 2.0, bool open = false) {
+  PrismData p;
   p.points = std::move(pts);
   p.height1 = h1;
   p.height2 = h2;
@@ -22,15 +22,15 @@ Prism make(std::vector<Vec3> pts, double h1 = 0.0, double h2 = 2.0, bool open = 
 }
 
 // [-1, 1] x [0, 2] x [-1, 1], counter-clockwise seen from +y... either way: normals are tested.
-Prism block() { return make({Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)}); }
+PrismData block() { return make({Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)}); }
 
 // [-2, 2]^2 with the hole [-1, 1]^2: two sub-polygons, the second clockwise like the first.
-Prism framed() {
+PrismData framed() {
   return make({Vec3(-2, -2, 0), Vec3(2, -2, 0), Vec3(2, 2, 0), Vec3(-2, 2, 0), Vec3(-2, -2, 0),
                Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)});
 }
 
-int crossings(const Prism& p, const Ray& r, PrismCrossing* c) { return prism_crossings(p, r, c, 8); }
+int crossings(const PrismData& p, const Ray& r, PrismCrossing* c) { return prism_crossings(p, r, c, 8); }
 
 }  // namespace
 
@@ -38,7 +38,7 @@ TEST_CASE("prism: POV-Ray's sub-polygons, the last closed, and tight bounds", "[
   CHECK(block().edges.size() == 4);
   CHECK(framed().edges.size() == 8);
   // Not closed: closed by an edge back to the first point, as POV-Ray does (with a warning).
-  Prism open_list = make({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, 1.0, -1.0);
+  PrismData open_list = make({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, 1.0, -1.0);
   REQUIRE(open_list.edges.size() == 3);
   CHECK(open_list.edges[2].x0 == 0.0);
   CHECK(open_list.edges[2].z0 == 1.0);
@@ -53,7 +53,7 @@ TEST_CASE("prism: POV-Ray's sub-polygons, the last closed, and tight bounds", "[
 }
 
 TEST_CASE("prism: walls and caps where the closed form says, normals out", "[prism]") {
-  Prism p = block();
+  PrismData p = block();
   PrismCrossing c[8];
   Ray side{Vec3(-5, 1.25, 0.3), Vec3(1, 0, 0)};
   REQUIRE(crossings(p, side, c) == 2);
@@ -93,13 +93,13 @@ TEST_CASE("prism: walls and caps where the closed form says, normals out", "[pri
   CHECK(c[1].part == PrismPart::Wall);
 
   // Open: only the walls.
-  Prism o = make({Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)}, 0.0, 2.0, true);
+  PrismData o = make({Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)}, 0.0, 2.0, true);
   CHECK(crossings(o, down, c) == 0);
   CHECK(crossings(o, side, c) == 2);
 }
 
 TEST_CASE("prism: even-odd with a hole, normals facing out of the solid into the hole", "[prism]") {
-  Prism p = framed();
+  PrismData p = framed();
   PrismCrossing c[8];
   Ray r{Vec3(-5, 1, 0.25), Vec3(1, 0, 0)};
   REQUIRE(crossings(p, r, c) == 4);
@@ -124,14 +124,14 @@ TEST_CASE("prism: even-odd with a hole, normals facing out of the solid into the
 }
 
 TEST_CASE("prism: rays through a vertex, touching one, along a wall and in a cap's plane pair up", "[prism]") {
-  Prism sq = block();
+  PrismData sq = block();
   PrismCrossing c[8];
   // Diagonally through two corners.
   REQUIRE(crossings(sq, Ray{Vec3(-3, 1, -3), Vec3(1, 0, 1)}, c) == 2);
   CHECK(c[0].t == 2.0);
   CHECK(c[1].t == 4.0);
   // A diamond touched at its tip: no crossing or two, never one.
-  Prism diamond = make({Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(1, 0, 0)});
+  PrismData diamond = make({Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(1, 0, 0)});
   for (double dir : {1.0, -1.0}) {
     CHECK(crossings(diamond, Ray{Vec3(-3 * dir, 1, 1), Vec3(dir, 0, 0)}, c) % 2 == 0);
     CHECK(crossings(diamond, Ray{Vec3(-3 * dir, 1, -1), Vec3(dir, 0, 0)}, c) % 2 == 0);
@@ -155,7 +155,7 @@ TEST_CASE("prism: rays through a vertex, touching one, along a wall and in a cap
 }
 
 TEST_CASE("prism: slanted rays from near and far cross where the closed form says", "[prism]") {
-  Prism p = framed();
+  PrismData p = framed();
   for (double dist : {6.0, 1e3, 1e6}) {
     for (int i = 0; i < 60; ++i) {
       Vec3 target(1.5 * std::sin(i), 0.1 + 1.8 * (i % 7) / 6.0, 1.5 * std::cos(3 * i));
@@ -189,8 +189,8 @@ TEST_CASE("prism: slanted rays from near and far cross where the closed form say
 // Spline outlines (POV-Ray's quadratic_spline, cubic_spline, bezier_spline).
 namespace {
 
-Prism make_spline(SplineKind k, std::vector<Vec3> pts, double h1 = 0.0, double h2 = 2.0) {
-  Prism p;
+PrismData make_spline(SplineKind k, std::vector<Vec3> pts, double h1 = 0.0, double h2 = 2.0) {
+  PrismData p;
   p.spline = k;
   p.points = std::move(pts);
   p.height1 = h1;
@@ -200,7 +200,7 @@ Prism make_spline(SplineKind k, std::vector<Vec3> pts, double h1 = 0.0, double h
 }
 
 // The block's square as bezier segments whose control points lie on its sides.
-Prism block_bezier() {
+PrismData block_bezier() {
   std::vector<Vec3> c = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)};
   std::vector<Vec3> pts;
   for (int i = 0; i < 4; ++i) {
@@ -212,7 +212,7 @@ Prism block_bezier() {
 
 // A rounded blob with a round hole, as a cubic spline: each sub-outline a control point, the
 // loop, its first point again and a control point (POV-Ray's rule).
-Prism blob_with_hole(bool reverse_hole) {
+PrismData blob_with_hole(bool reverse_hole) {
   std::vector<Vec3> outer = {Vec3(1.5, 0.2, 0), Vec3(0.8, -1.1, 0), Vec3(-1.2, -1, 0), Vec3(-1.4, 0.9, 0),
                              Vec3(0.3, 1.3, 0)};
   std::vector<Vec3> hole = {Vec3(0.4, 0, 0), Vec3(0, 0.4, 0), Vec3(-0.4, 0, 0), Vec3(0, -0.4, 0)};
@@ -232,7 +232,7 @@ Prism blob_with_hole(bool reverse_hole) {
 }  // namespace
 
 TEST_CASE("prism splines: a bezier outline along straight sides is the linear prism", "[prism]") {
-  Prism lin = block(), bez = block_bezier();
+  PrismData lin = block(), bez = block_bezier();
   REQUIRE(bez.curves.size() == 4);
   CHECK(bez.x_min == Approx(-1.0).epsilon(1e-8));
   CHECK(bez.z_max == Approx(1.0).epsilon(1e-8));
@@ -260,7 +260,7 @@ TEST_CASE("prism splines: a bezier outline along straight sides is the linear pr
 
 TEST_CASE("prism splines: walls on the curve, normals unit and outward, caps by even-odd", "[prism]") {
   for (bool reverse_hole : {false, true}) {
-    Prism p = blob_with_hole(reverse_hole);
+    PrismData p = blob_with_hole(reverse_hole);
     REQUIRE(p.curves.size() == 9);  // 5 round the outside, 4 round the hole
     // Down the hole: nothing; down the body: the two caps.
     PrismCrossing c[8];
@@ -301,16 +301,16 @@ TEST_CASE("prism splines: walls on the curve, normals unit and outward, caps by 
 
 TEST_CASE("prism splines: POV-Ray's closing rule; an unclosed outline has no curves", "[prism]") {
   // Quadratic: a control point, then the loop back to its first point.
-  Prism q = make_spline(SplineKind::Quadratic,
+  PrismData q = make_spline(SplineKind::Quadratic,
                         {Vec3(-1, 1, 0), Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)});
   CHECK(q.curves.size() == 4);
   PrismCrossing c[8];
   CHECK(crossings(q, Ray{Vec3(0, 5, 0), Vec3(0, -1, 0)}, c) == 2);
-  Prism open = make_spline(SplineKind::Quadratic,
+  PrismData open = make_spline(SplineKind::Quadratic,
                            {Vec3(-1, 1, 0), Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(0, 0, 0)});
   CHECK(open.curves.empty());
   CHECK(crossings(open, Ray{Vec3(0, 5, 0), Vec3(0, -1, 0)}, c) == 0);
-  Prism probe;
+  PrismData probe;
   probe.spline = SplineKind::Cubic;
   probe.points = {Vec3(-1, 1, 0), Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(-1, -1, 0)};
   // The loop closes at the last point, but a cubic needs a control point after it.
@@ -323,7 +323,7 @@ TEST_CASE("prism splines: POV-Ray's closing rule; an unclosed outline has no cur
 
 TEST_CASE("prism conic_sweep: a square outline swept from the apex is a pyramid's frustum", "[prism]") {
   auto square = [](bool bezier, double h1, double h2) {
-    Prism p = bezier ? block_bezier() : block();
+    PrismData p = bezier ? block_bezier() : block();
     p.height1 = h1;
     p.height2 = h2;
     p.conic = true;
@@ -332,7 +332,7 @@ TEST_CASE("prism conic_sweep: a square outline swept from the apex is a pyramid'
   };
   for (bool bezier : {false, true}) {
     INFO("bezier " << bezier);
-    Prism p = square(bezier, 0.5, 1.0);
+    PrismData p = square(bezier, 0.5, 1.0);
     CHECK(p.x_min == Approx(-1.0).epsilon(1e-8));
     CHECK(p.x_max == Approx(1.0).epsilon(1e-8));
     // Across at y = 0.75: the walls |x| = y.

@@ -190,9 +190,9 @@ TEST_CASE("noise in an isosurface function: rays stop where f crosses the thresh
       "macro lumpy(p) { return length(p) - 1 + 0.3 * noise(p * 3) }\n"
       "isosurface { function = lumpy  threshold = 0  max_gradient = 3  accuracy = 1e-6\n"
       "             contained_by = sphere { center = <0, 0, 0>  radius = 2 } }\n");
-  const render::Isosurface* iso = nullptr;
+  const render::IsosurfaceData* iso = nullptr;
   for (const render::ShapeDesc& d : s.shapes)
-    if (const auto* g = std::get_if<render::Isosurface>(&d.geometry)) iso = g;
+    if (const auto* g = std::get_if<render::Isosurface>(&d.geometry)) iso = &**g;
   REQUIRE(iso != nullptr);
   auto f = [](const glm::dvec3& p) { return glm::length(p) - 1 + 0.3 * pat::noise01(p * 3.0); };
   double r_lo = 10, r_hi = 0;

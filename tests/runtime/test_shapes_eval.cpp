@@ -14,9 +14,9 @@ using rts::test::eval_diagnostic;
 using rts::test::eval_text;
 
 namespace {
-const render::Isosurface& only_isosurface(const render::SceneDesc& s) {
+const render::IsosurfaceData& only_isosurface(const render::SceneDesc& s) {
   for (const render::ShapeDesc& d : s.shapes)
-    if (const auto* g = std::get_if<render::Isosurface>(&d.geometry)) return *g;
+    if (const auto* g = std::get_if<render::Isosurface>(&d.geometry)) return **g;
   FAIL("no isosurface in the scene");
   throw 0;
 }
@@ -27,7 +27,7 @@ TEST_CASE("an isosurface traces its compiled macro inside a sphere container", "
       "macro ball(p, r = 0.5) { return length(p) - r }\n"
       "isosurface { function = ball  threshold = 0.25  max_gradient = 1.1  accuracy = 1e-4\n"
       "             contained_by = sphere { center = <0, 0, 0>  radius = 2 } }\n");
-  const render::Isosurface& iso = only_isosurface(s);
+  const render::IsosurfaceData& iso = only_isosurface(s);
   CHECK(iso.container_sphere);
   CHECK(iso.radius == 2.0);
   render::SurfaceHit h;
@@ -43,7 +43,7 @@ TEST_CASE("an isosurface's box container closes the solid where the function is 
   render::SceneDesc s = eval_text(
       "macro slab(p) { return p.y }\n"
       "isosurface { function = slab  contained_by = box { min = <-1, -1, -1>  max = <1, 1, 1> } }\n");
-  const render::Isosurface& iso = only_isosurface(s);
+  const render::IsosurfaceData& iso = only_isosurface(s);
   render::SurfaceHit h;
   // From below, the box's bottom face (y < 0 is inside); from above, the plane y = 0.
   REQUIRE(intersect(iso, render::Ray{render::Vec3(0.2, -5, 0.1), render::Vec3(0, 1, 0)}, render::Interval::positive(), h));
@@ -68,7 +68,7 @@ TEST_CASE("an isosurface warns when max_gradient is below the slopes it met", "[
   render::SceneDesc s = eval_text(
       "macro steep(p) { return 4 * (length(p) - 0.5) }\n"
       "isosurface { function = steep  max_gradient = 1 }\n");
-  const render::Isosurface& iso = only_isosurface(s);
+  const render::IsosurfaceData& iso = only_isosurface(s);
   CHECK_FALSE(render::after_render_warning(iso));
   render::SurfaceHit h;
   for (int i = 0; i < 20; ++i)
@@ -90,7 +90,7 @@ TEST_CASE("an isosurface of a distance function does not warn: rounding over a l
       "macro ring(p) { return sqrt(pow(sqrt(p.x * p.x + p.z * p.z) - 0.8, 2) + p.y * p.y) - 0.3 }\n"
       "isosurface { function = ring  max_gradient = 1.1\n"
       "             contained_by = box { min = <-1.2, -0.4, -1.2>  max = <1.2, 0.4, 1.2> } }\n");
-  const render::Isosurface& iso = only_isosurface(s);
+  const render::IsosurfaceData& iso = only_isosurface(s);
   render::SurfaceHit h;
   int hits = 0;
   for (int i = 0; i < 40; ++i)
@@ -280,8 +280,9 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
   render::SceneDesc s = eval_text(
       "prism { points = [[-2, -2], [2, -2], [2, 2], [-2, 2], [-2, -2], [-1, -1], [1, -1], [1, 1], [-1, 1]]\n"
       "        height1 = 1  height2 = -1 }\n");
-  const render::Prism* g = nullptr;
-  for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Prism>(&d.geometry);
+  const render::PrismData* g = nullptr;
+  for (const render::ShapeDesc& d : s.shapes)
+    if (const auto* p = std::get_if<render::Prism>(&d.geometry); p && !g) g = &**p;
   REQUIRE(g);
   CHECK(!g->open);
   CHECK(g->edges.size() == 8);  // the hole closed by its missing last edge
@@ -295,7 +296,7 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
   CHECK(h.normal == render::Vec3(-1, 0, 0));
   eval_text("difference { prism { points = [[0, 0], [1, 0], [0, 1]] } sphere { radius = 0.5 } }\n");
   s = eval_text("prism { points = [[0, 0], [1, 0], [0, 1]]  open = true  sweep = \"linear\"  spline = \"linear\" }\n");
-  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry).open);
+  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry)->open);
 
   Diagnostic d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0]] }");
   CHECK(d.message == "prism needs at least 3 points, got 2");
@@ -320,12 +321,12 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
   CHECK(d.message == "prism: the quadratic outline from point 2 does not close (a later point must repeat point 2)");
   CHECK(d.loc.line == 2);
   s = eval_text("prism { spline = \"quadratic\"  points = [[0, 1], [0, 0], [1, 0], [0, 1], [0, 0]] }\n");
-  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry).curves.size() == 3);
+  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry)->curves.size() == 3);
   d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  sweep = \"radial\" }");
   CHECK(d.message == "prism sweep \"radial\" is not one of \"linear\" or \"conic\"");
   CHECK(d.loc.line == 3);
   s = eval_text("prism { points = [[0, 0], [1, 0], [0, 1]]  sweep = \"conic\"  height1 = 0.5 }\n");
-  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry).conic);
+  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry)->conic);
   d = eval_diagnostic("prism { height1 = 0 }");
   CHECK(d.message == "prism needs property 'points'");
   d = eval_diagnostic("difference { prism { points = [[0, 0], [1, 0], [0, 1]]  open = true } sphere { radius = 1 } }");

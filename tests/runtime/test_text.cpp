@@ -28,11 +28,11 @@ TEST_CASE("text: a prism per glyph, advanced by its width and the offset", "[tex
     REQUIRE(n.kind == render::NodeKind::Shape);
     const auto* p = std::get_if<render::Prism>(&s.shapes[n.index].geometry);
     REQUIRE(p);
-    CHECK(p->spline == render::SplineKind::Bezier);
-    CHECK(p->height1 == -0.5);
-    CHECK(p->height2 == 0.0);
-    lo[i] = p->x_min;
-    hi[i] = p->x_max;
+    CHECK((*p)->spline == render::SplineKind::Bezier);
+    CHECK((*p)->height1 == -0.5);
+    CHECK((*p)->height2 == 0.0);
+    lo[i] = (*p)->x_min;
+    hi[i] = (*p)->x_max;
     x[i] = g.children[i].transform[3][0];
   }
   // The line starts at the first glyph's left edge, and the two I's are the same glyph.
@@ -67,11 +67,11 @@ TEST_CASE("text: holes by the even-odd rule, kerning between pairs", "[text]") {
   render::World world(o, flat);
   const auto* p = std::get_if<render::Prism>(&o.shapes[0].geometry);
   REQUIRE(p);
-  const double cx = o.groups[0].children[0].transform[3][0] + 0.5 * (p->x_min + p->x_max);
-  const double cy = 0.5 * (p->z_min + p->z_max);  // the outline's second coordinate is the text's y
+  const double cx = o.groups[0].children[0].transform[3][0] + 0.5 * ((*p)->x_min + (*p)->x_max);
+  const double cy = 0.5 * ((*p)->z_min + (*p)->z_max);  // the outline's second coordinate is the text's y
   render::WorldHit h;
   CHECK_FALSE(world.intersect(render::Ray{render::Vec3(cx, cy, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
-  CHECK(world.intersect(render::Ray{render::Vec3(p->x_min + o.groups[0].children[0].transform[3][0] + 0.02, cy, -5),
+  CHECK(world.intersect(render::Ray{render::Vec3((*p)->x_min + o.groups[0].children[0].transform[3][0] + 0.02, cy, -5),
                                     render::Vec3(0, 0, 1)},
                         render::Interval::positive(), h));
   // "AV" is kerned tighter than "A" then "V" laid out by advance alone.

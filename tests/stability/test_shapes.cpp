@@ -54,7 +54,7 @@ Isosurface rippled_ball() {
   f->emit(Op::Mul, {p, k}, w);
   f->emit(Op::Add, {s2, w}, r);
   f->set_result(r);
-  Isosurface g;
+  IsosurfaceData g;
   g.function = f;
   g.threshold = 0.64;
   g.max_gradient = 3.0;
@@ -100,7 +100,7 @@ Lathe cup() {
 
 // A five-pointed star with a pentagonal hole (two sub-polygons, even-odd), closed by its caps.
 Prism star() {
-  Prism p;
+  PrismData p;
   const double pi = 3.14159265358979323846;
   for (int i = 0; i <= 10; ++i) {
     double a = 2 * pi * (i % 10) / 10.0 + pi / 2, r = i % 2 == 0 ? 1.2 : 0.5;

@@ -227,17 +227,18 @@ inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings& c, 
 
 [[gnu::noinline]] inline bool leaf_crossings_from(const Prism& p, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
-  return walked_leaf_crossings_from<PrismCrossing>(p, ray, from, out, [](auto&&... a) { return prism_crossings(a...); });
+  return walked_leaf_crossings_from<PrismCrossing>(*p, ray, from, out, [](auto&&... a) { return prism_crossings(a...); });
 }
 inline bool leaf_hit(const Prism& p, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
-  return walked_leaf_hit<PrismCrossing>(p, ray, c.t[k], hit, [](auto&&... a) { return prism_crossings(a...); },
+  return walked_leaf_hit<PrismCrossing>(*p, ray, c.t[k], hit, [](auto&&... a) { return prism_crossings(a...); },
                                         [](auto&&... a) { prism_hit_at(a...); });
 }
 
 // The whole span inside the container; the crossing kinds (function or container) are found
 // again at the chosen one (a container crossing is exactly t0 or t1).
-[[gnu::noinline]] inline bool leaf_crossings_from(const Isosurface& s, const Ray& ray, double from,
+[[gnu::noinline]] inline bool leaf_crossings_from(const Isosurface& shape, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
+  const IsosurfaceData& s = *shape;
   out.inside_at_start = false;
   out.count = 0;
   double t0, t1;
@@ -248,7 +249,8 @@ inline bool leaf_hit(const Prism& p, const Ray& ray, const CsgLeafCrossings& c, 
   return keep_crossings_from(t, raw - raw % 2, false, raw == kMaxLineCrossings, from, out);
 }
 
-inline bool leaf_hit(const Isosurface& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+inline bool leaf_hit(const Isosurface& shape, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
+  const IsosurfaceData& s = *shape;
   double t0, t1;
   bool on_container = iso_container_span(s, ray, t0, t1) && (c.t[k] == t0 || c.t[k] == t1);
   iso_hit_at(s, ray, c.t[k], on_container, hit);

@@ -57,7 +57,7 @@ struct ShapeTraits<Isosurface> {
   static constexpr ShapeInfo kInfo{
       .name = "isosurface", .properties = kProperties, .closure = Closure::Closed, .has_uv = true};
   static Isosurface build(ParamSet& ps) {
-    Isosurface g;
+    IsosurfaceData g;
     const ParamValue* f = ps.value("function");
     if (!f)
       ps.fail_block("isosurface needs property 'function' (a macro of one point, e.g. macro f(p) { return length(p) - 1 })");
@@ -91,19 +91,19 @@ struct ShapeTraits<Isosurface> {
                        "the isosurface's container is empty: a box needs max > min in every component, a sphere a "
                        "radius > 0");
     g.monitor = std::make_shared<IsoGradientMonitor>();
-    return g;
+    return Isosurface(std::move(g));
   }
 };
 
-inline AABB iso_container_box(const Isosurface& s) {
+inline AABB iso_container_box(const IsosurfaceData& s) {
   if (s.container_sphere) return AABB{s.center - Vec3(s.radius), s.center + Vec3(s.radius)};
   return AABB{s.box_min, s.box_max};
 }
 
-inline AABB bounds(const Isosurface& s) { return iso_container_box(s); }
+inline AABB bounds(const IsosurfaceData& s) { return iso_container_box(s); }
 
 // The segment of the line inside the container, [t0, t1]; false when it misses.
-inline bool iso_container_span(const Isosurface& s, const Ray& ray, double& t0, double& t1) {
+inline bool iso_container_span(const IsosurfaceData& s, const Ray& ray, double& t0, double& t1) {
   if (s.container_sphere) {
     Vec3 oc = ray.origin - s.center;
     double a = glm::dot(ray.direction, ray.direction), b = glm::dot(oc, ray.direction);
@@ -133,7 +133,7 @@ inline bool iso_container_span(const Isosurface& s, const Ray& ray, double& t0, 
 }
 
 // f(p) - threshold: negative inside. A NaN counts as outside (eval maps it to 0).
-inline double iso_value(const Isosurface& s, const Vec3& p) { return s.function->eval(p) - s.threshold; }
+inline double iso_value(const IsosurfaceData& s, const Vec3& p) { return s.function->eval(p) - s.threshold; }
 
 // Samples at least this many per container span (see iso_crossings).
 inline constexpr double kIsoMinSamples = 16.0;
@@ -142,7 +142,7 @@ inline constexpr double kIsoMinSamples = 16.0;
 // span [t0, t1]), ascending, at most `max_out`. The container's faces count where the solid
 // touches them (only at t0 and t1 themselves). `first_only` stops at the first crossing.
 // `on_container[i]` says crossing i is on the container.
-inline int iso_crossings(const Isosurface& s, const Ray& ray, double t0, double t1, double a, double b,
+inline int iso_crossings(const IsosurfaceData& s, const Ray& ray, double t0, double t1, double a, double b,
                          double* t_out, bool* on_container, int max_out) {
   const double dl = glm::length(ray.direction);
   if (!(dl > 0.0) || !(a < b) || !s.function) return 0;
@@ -204,7 +204,7 @@ inline int iso_crossings(const Isosurface& s, const Ray& ray, double t0, double 
 }
 
 // The outward normal of the container at p (on its surface).
-inline Vec3 iso_container_normal(const Isosurface& s, const Vec3& p) {
+inline Vec3 iso_container_normal(const IsosurfaceData& s, const Vec3& p) {
   if (s.container_sphere) {
     Vec3 n = p - s.center;
     double len = glm::length(n);
@@ -220,7 +220,7 @@ inline Vec3 iso_container_normal(const Isosurface& s, const Vec3& p) {
 
 // The hit at crossing t: on the function's surface the normal is grad f by central
 // differences (steps of kIsoNormalStep of the container's size); on the container, its own.
-inline void iso_hit_at(const Isosurface& s, const Ray& ray, double t, bool on_container, SurfaceHit& hit) {
+inline void iso_hit_at(const IsosurfaceData& s, const Ray& ray, double t, bool on_container, SurfaceHit& hit) {
   Vec3 p = ray.at(t);
   AABB box = iso_container_box(s);
   Vec3 size = box.hi - box.lo;
@@ -249,7 +249,7 @@ inline void iso_hit_at(const Isosurface& s, const Ray& ray, double t, bool on_co
   hit.has_uv = true;
 }
 
-inline bool intersect(const Isosurface& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+inline bool intersect(const IsosurfaceData& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
   double t0, t1;
   if (!iso_container_span(s, ray, t0, t1)) return false;
   double a = std::max(t0, ray_t.min), b = std::min(t1, ray_t.max);
@@ -264,14 +264,21 @@ inline bool intersect(const Isosurface& s, const Ray& ray, Interval ray_t, Surfa
   return true;
 }
 
+// The shape as the scene and the world hold it (its data boxed: scene.hpp).
+inline AABB bounds(const Isosurface& s) { return bounds(*s); }
+inline bool intersect(const Isosurface& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  return intersect(*s, ray, ray_t, hit);
+}
+
 // After rendering: when the slopes seen between samples exceeded max_gradient, the ray could
 // have stepped over thin parts of the surface (POV-Ray warns the same way).
-inline std::optional<std::string> after_render_warning(const Isosurface& s) {
+inline std::optional<std::string> after_render_warning(const IsosurfaceData& s) {
   double seen = s.monitor ? s.monitor->max_seen.load() : 0.0;
   if (!(seen > s.max_gradient)) return std::nullopt;
   return fmt::format("isosurface: the function's gradient reached {:.3g} along the rays traced, above max_gradient "
                      "{:g}; parts of the surface may be missing (set max_gradient = {:.2g} or more)",
                      seen, s.max_gradient, seen * 1.1);
 }
+inline std::optional<std::string> after_render_warning(const Isosurface& s) { return after_render_warning(*s); }
 
 }  // namespace rts::render

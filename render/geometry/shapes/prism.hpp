@@ -86,7 +86,7 @@ inline bool prism_curves_inside(const std::vector<SplineSegment>& curves, double
 // 4 points a segment; a segment whose first point differs from the previous one's last starts
 // a new sub-outline, and the previous one must end where it started. POV-Ray ignores an
 // unclosed spline prism (with a warning); rts says so.
-inline std::string prism_spline_curves(Prism& p) {
+inline std::string prism_spline_curves(PrismData& p) {
   const std::vector<Vec3>& q = p.points;
   const int n = static_cast<int>(q.size());
   auto same = [](const Vec3& a, const Vec3& b) {
@@ -142,7 +142,7 @@ namespace detail {
 
 // Edges (POV-Ray's sub-polygon rule), their outward sides, heights and bounds from p.points;
 // for a spline outline its curves instead (an unclosed one has none).
-inline void prism_outline_setup(Prism& p) {
+inline void prism_outline_setup(PrismData& p) {
   p.y_min = std::min(p.height1, p.height2);
   p.y_max = std::max(p.height1, p.height2);
   if (p.spline != SplineKind::Linear) {
@@ -209,7 +209,7 @@ inline void prism_outline_setup(Prism& p) {
 
 // conic_sweep: the walls are walked as curves whatever the spline (straight edges as straight
 // curves), and the bounds are the outline's scaled by both heights.
-inline void prism_conic_setup(Prism& p) {
+inline void prism_conic_setup(PrismData& p) {
   if (p.spline == SplineKind::Linear) {
     p.curves.clear();
     p.curve_outward.clear();
@@ -232,13 +232,13 @@ inline void prism_conic_setup(Prism& p) {
 }  // namespace detail
 
 // The outline's edges or curves and the bounds: see prism_outline_setup, prism_conic_setup.
-inline void prism_setup(Prism& p) {
+inline void prism_setup(PrismData& p) {
   detail::prism_outline_setup(p);
   if (p.conic) detail::prism_conic_setup(p);
 }
 
 // Even-odd inside the solid (caps included whether open or not).
-inline bool prism_inside(const Prism& p, const Vec3& pt) {
+inline bool prism_inside(const PrismData& p, const Vec3& pt) {
   if (!(pt.y >= p.y_min && pt.y <= p.y_max)) return false;
   if (p.conic) return pt.y != 0.0 && detail::prism_curves_inside(p.curves, pt.x / pt.y, pt.z / pt.y);
   return p.spline != SplineKind::Linear ? detail::prism_curves_inside(p.curves, pt.x, pt.z)
@@ -264,7 +264,7 @@ struct ShapeTraits<Prism> {
   };
   static constexpr ShapeInfo kInfo{.name = "prism", .properties = kProperties, .closure = Closure::WhenCapped};
   static Prism build(ParamSet& ps) {
-    Prism g;
+    PrismData g;
     const ParamValue* v = ps.value("points");
     if (!v) ps.fail_block("prism needs property 'points'");
     if (const auto* rows = std::get_if<RowsParam>(v)) {
@@ -318,16 +318,16 @@ struct ShapeTraits<Prism> {
                        fmt::format("prism sweep \"{}\" is not one of \"linear\" or \"conic\"", sweep));
     g.conic = sweep == "conic";
     if (g.spline != SplineKind::Linear) {
-      Prism probe = g;
+      PrismData probe = g;
       if (std::string problem = detail::prism_spline_curves(probe); !problem.empty())
         throw SceneError(loc_of(ps, "points"), "prism: " + problem);
     }
     prism_setup(g);
-    return g;
+    return Prism(std::move(g));
   }
 };
 
-inline AABB bounds(const Prism& p) {
+inline AABB bounds(const PrismData& p) {
   return AABB{Vec3(p.x_min, p.y_min, p.z_min), Vec3(p.x_max, p.y_max, p.z_max)};
 }
 
@@ -348,7 +348,7 @@ namespace detail {
 // follows from the x (or z) component and counts when its height is between the caps. A cap at
 // height h is crossed where the ray's point there, scaled by 1/h, is inside the outline (a cap
 // at height 0 is the apex alone).
-inline int prism_conic_walk(const Prism& p, const Vec3& d, const Vec3& p0, double sc, double len, PrismCrossing* out,
+inline int prism_conic_walk(const PrismData& p, const Vec3& d, const Vec3& p0, double sc, double len, PrismCrossing* out,
                             int max_out, double t_after) {
   int count = 0;
   auto emit = [&](double s, PrismPart part, int edge, double w) {
@@ -394,7 +394,7 @@ inline int prism_conic_walk(const Prism& p, const Vec3& d, const Vec3& p0, doubl
 
 // The crossings of the prism's surfaces along the whole line beyond t_after: the first max_out,
 // ascending; returns how many. A closed prism, whole line: in and out alternately.
-inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, int max_out,
+inline int prism_crossings(const PrismData& p, const Ray& ray, PrismCrossing* out, int max_out,
                            double t_after = -Interval::kInfinity) {
   if (p.edges.empty() && p.curves.empty()) return 0;
   const double len = glm::length(ray.direction);
@@ -487,7 +487,7 @@ inline int prism_crossings(const Prism& p, const Ray& ray, PrismCrossing* out, i
   return count;
 }
 
-inline void prism_hit_at(const Prism& p, const Ray& ray, const PrismCrossing& c, SurfaceHit& hit) {
+inline void prism_hit_at(const PrismData& p, const Ray& ray, const PrismCrossing& c, SurfaceHit& hit) {
   Vec3 pt = ray.at(c.t);
   double err = 4.0 * ray_point_error(ray, c.t);
   Vec3 n;
@@ -535,12 +535,18 @@ inline void prism_hit_at(const Prism& p, const Ray& ray, const PrismCrossing& c,
   hit.shading_normal = n;
 }
 
-inline bool intersect(const Prism& p, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+inline bool intersect(const PrismData& p, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
   PrismCrossing c[1];
   int n = prism_crossings(p, ray, c, 1, ray_t.min);
   if (n == 0 || !ray_t.surrounds(c[0].t)) return false;
   prism_hit_at(p, ray, c[0], hit);
   return true;
+}
+
+// The shape as the scene and the world hold it (its data boxed: scene.hpp).
+inline AABB bounds(const Prism& p) { return bounds(*p); }
+inline bool intersect(const Prism& p, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  return intersect(*p, ray, ray_t, hit);
 }
 
 }  // namespace rts::render

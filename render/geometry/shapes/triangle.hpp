@@ -139,8 +139,9 @@ inline bool intersect(const Triangle& tri, const Ray& ray, Interval ray_t, Surfa
   hit.point = triangle_point(tri.v0, tri.v1, tri.v2, b1, b2, hit.error);
   hit.normal = glm::normalize(glm::cross(tri.v1 - tri.v0, tri.v2 - tri.v0));
   hit.shading_normal = hit.normal;
-  if (tri.has_normals) {
-    Vec3 n = (1.0 - b1 - b2) * tri.n0 + b1 * tri.n1 + b2 * tri.n2;
+  if (tri.normals) {
+    const TriangleNormals& tn = *tri.normals;
+    Vec3 n = (1.0 - b1 - b2) * tn.n0 + b1 * tn.n1 + b2 * tn.n2;
     double len = glm::length(n);
     if (len > tol::kTinyLength) hit.shading_normal = n / len;
   }
