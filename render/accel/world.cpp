@@ -146,6 +146,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     }
   }
   bounded_count_ = bounded.size();
+  group_linear_index_ = {};  // every placement is made: free the index before the BVH build
   use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
   if (use_bvh_) bvh_ = build_bvh(boxes);
   instances_ = std::move(bounded);
@@ -320,7 +321,10 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   if (!kShapeInfos[inst.kind].has_tangents) best.dpdu = best.dpdv = Vec3(0.0);   // not set by the others
   // The world point is the shape's own (refined) object point carried to world space, not
   // ray.at(t): its error bound then stays relative to the shape, whatever the ray travelled.
-  if (grouped && placed.transform != kNoId) group_to_parent(group_transforms_[placed.transform], best);
+  if (grouped && placed.transform != kNoId) {
+    const GroupTransform& xf = group_transforms_[placed.transform];
+    group_to_parent(group_to_world(xf), group_to_object(xf), best);
+  }
   if (grouped || inst.transform == kNoId) {
     hit.point = best.point;
     hit.error = best.error;
@@ -473,7 +477,7 @@ WorldMemory World::memory() const {
   WorldMemory w;
   w.instances = instances_.capacity() * sizeof(Instance) + planes_.capacity() * sizeof(uint32_t);
   w.transforms = transforms_.capacity() * sizeof(InstanceTransform) +
-                 group_transforms_.capacity() * sizeof(GroupTransform);
+                 group_transforms_.capacity() * sizeof(GroupTransform) + group_linears_.capacity() * sizeof(GroupLinear);
   for (const Group& g : groups_) w.bvh += g.bvh.nodes.capacity() * sizeof(BVHNode) + g.bvh.order.capacity() * sizeof(uint32_t);
   std::apply([&](const auto&... array) { ((w.shapes += array.capacity() * sizeof(array[0])), ...); }, shapes_);
   w.shapes += quad_frames_.capacity() * sizeof(QuadFrame) + plane_frames_.capacity() * sizeof(PlaneFrame);

@@ -6,6 +6,8 @@
 
 #include <memory>
 #include <tuple>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "render/accel/bvh.hpp"
@@ -62,9 +64,20 @@ struct InstanceTransform {
 
 // A group placement's transform: the affine rows only (the bottom row is 0 0 0 1), 192 bytes
 // instead of InstanceTransform's 400; the normal and tangent matrices are read off these.
+// A placement's affine map (group space → parent space) and its inverse. Their 3×3 linear
+// parts are kept once per distinct pair (GroupLinear, World::group_linears_): placements made
+// by a loop mostly repeat a few rotations and scales and differ in translation, and the two
+// 4×3 double matrices per placement were 192 of its ~244 bytes (issue 24). A placement holds
+// the pair's index and its own two translation columns; the matrices it is multiplied by
+// are rebuilt from those columns exactly, so every product is the one it was.
+struct GroupLinear {
+  glm::dmat3 to_world{1.0};
+  glm::dmat3 to_object{1.0};
+};
 struct GroupTransform {
-  glm::dmat4x3 to_world{1.0};
-  glm::dmat4x3 to_object{1.0};
+  uint32_t linear = 0;           // into World::group_linears_
+  Vec3 to_world_t{0.0};          // the translation column of each map
+  Vec3 to_object_t{0.0};
 };
 
 // A hit in world space, plus what shading needs from object space.
@@ -178,6 +191,7 @@ class World {
   // Shapes inside instanced groups: instances after the planes, before the CSG parts.
   std::size_t group_part_count() const { return group_parts_; }
   std::size_t group_count() const { return groups_.size(); }  // distinct instanced groups built
+  std::size_t group_linear_count() const { return group_linears_.size(); }  // distinct placement rotations/scales
   std::size_t mesh_bvh_count() const;  // distinct mesh BVHs built
   const BVH& top_level() const { return bvh_; }
   // CSG rays compute only the leaves whose state can matter inside the ray's interval
@@ -258,6 +272,17 @@ class World {
   };
   std::vector<Group> groups_;
   std::vector<GroupTransform> group_transforms_;
+  std::vector<GroupLinear> group_linears_;
+  // While building: each distinct linear pair's index in group_linears_, by its 18 doubles' bits.
+  std::unordered_map<std::string, uint32_t> group_linear_index_;
+  glm::dmat4x3 group_to_world(const GroupTransform& xf) const {
+    const glm::dmat3& l = group_linears_[xf.linear].to_world;
+    return glm::dmat4x3(l[0], l[1], l[2], xf.to_world_t);
+  }
+  glm::dmat4x3 group_to_object(const GroupTransform& xf) const {
+    const glm::dmat3& l = group_linears_[xf.linear].to_object;
+    return glm::dmat4x3(l[0], l[1], l[2], xf.to_object_t);
+  }
   std::size_t group_parts_ = 0;
   // By MeshId; null when unreferenced. MeshIds whose data are identical (the same OBJ file
   // loaded by several statements) share one MeshAccel, so one BVH.

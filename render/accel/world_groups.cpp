@@ -5,6 +5,7 @@
 // parent space, naming the shape instance it shows (SurfaceHit::csg_part) and that shape's
 // own object point (SurfaceHit::leaf_point), so shading sees the same records as for a copy.
 #include <cmath>
+#include <cstring>
 
 #include "render/accel/hit_transform.hpp"
 #include "render/accel/world.hpp"
@@ -62,9 +63,17 @@ bool World::add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst
   }
   const double det = glm::determinant(glm::dmat3(to_world));
   if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) return false;
+  const glm::dmat4x3 world_map(to_world), object_map(glm::inverse(to_world));
+  GroupLinear linear{glm::dmat3(world_map), glm::dmat3(object_map)};
+  // Shared by bits: two placements share a pair only when all 18 doubles are the same.
+  std::string key(sizeof(GroupLinear), '\0');
+  std::memcpy(key.data(), &linear, sizeof(GroupLinear));
+  auto [it, fresh] = group_linear_index_.try_emplace(std::move(key), static_cast<uint32_t>(group_linears_.size()));
+  if (fresh) group_linears_.push_back(linear);
   GroupTransform xf;
-  xf.to_world = glm::dmat4x3(to_world);
-  xf.to_object = glm::dmat4x3(glm::inverse(to_world));
+  xf.linear = it->second;
+  xf.to_world_t = world_map[3];
+  xf.to_object_t = object_map[3];
   inst.transform = static_cast<uint32_t>(group_transforms_.size());
   group_transforms_.push_back(xf);
   bounds = transform_bounds(to_world, group_bounds);
@@ -73,7 +82,7 @@ bool World::add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst
 
 Ray World::group_ray(const Instance& inst, const Ray& r) const {
   if (inst.transform == kNoId) return r;
-  const glm::dmat4x3& m = group_transforms_[inst.transform].to_object;
+  const glm::dmat4x3 m = group_to_object(group_transforms_[inst.transform]);
   return Ray{m * glm::dvec4(r.origin, 1.0), m * glm::dvec4(r.direction, 0.0)};
 }
 
@@ -112,7 +121,10 @@ bool World::intersect_group(const Instance& inst, const Ray& parent_ray, const I
   // Into the group's space: the part's own transform (a shape's, or a nested placement's).
   const Instance& part = instances_[best_part];
   if (part.kind == kGroupKind) {
-    if (part.transform != kNoId) group_to_parent(group_transforms_[part.transform], best);
+    if (part.transform != kNoId) {
+      const GroupTransform& xf = group_transforms_[part.transform];
+      group_to_parent(group_to_world(xf), group_to_object(xf), best);
+    }
   } else {
     best.csg_part = best_part;
     best.leaf_point = best.point;

@@ -107,6 +107,37 @@ TEST_CASE("an instanced group gives the hits of its copies", "[instancing]") {
   CHECK(instanced.memory().instances * 3 < copies.memory().instances);
 }
 
+TEST_CASE("placements that repeat a rotation share its linear part and give the copies' hits", "[instancing]") {
+  // A loop's placements: two rotations (one with a scale), each with many translations.
+  std::mt19937_64 rng(77);
+  SceneDesc s;
+  const NodeId g = random_group(s, rng, 80);
+  const Mat4 turn_a = rotate_deg(33.0, glm::normalize(Vec3(1, 2, 0.5)));
+  const Mat4 turn_b = rotate_deg(-70.0, Vec3(0, 1, 0)) * scale(Vec3(1.5));
+  for (int k = 0; k < 12; ++k) place(s, g, translate(random_point(rng, 15.0)) * (k % 2 ? turn_a : turn_b));
+  const FlatScene flat = flatten_scene(s);
+  REQUIRE(flat.groups.size() == 12);
+  const World instanced(s, flat), copies(s, copied(s));
+  CHECK(instanced.group_linear_count() == 2);
+  int hits = 0;
+  for (int r = 0; r < 3000; ++r) {
+    const Vec3 o = random_point(rng, 30.0);
+    const Ray ray{o, random_point(rng, 15.0) - o};
+    WorldHit a, b;
+    const bool fa = instanced.intersect(ray, Interval::positive(), a);
+    REQUIRE(fa == copies.intersect(ray, Interval::positive(), b));
+    if (!fa) continue;
+    ++hits;
+    CHECK(a.t == Approx(b.t).epsilon(1e-9));
+    CHECK(glm::dot(a.normal, b.normal) > 1.0 - 1e-9);
+    CHECK(glm::length(a.object_point - b.object_point) <= 1e-9 * (1.0 + glm::length(b.object_point)));
+    CHECK(instanced.instance(a.instance).material == copies.instance(b.instance).material);
+  }
+  CHECK(hits > 300);
+  // A placement holds an index and two translations, not a 192-byte pair of matrices.
+  STATIC_REQUIRE(sizeof(GroupTransform) <= 56);
+}
+
 TEST_CASE("World::intersect writes every field of the hit it returns", "[instancing]") {
   // Integrator::shade keeps one WorldHit per thread instead of initialising a fresh one per
   // ray (render/shade/integrator.cpp): that is only right while a returned hit owes nothing to
