@@ -1,6 +1,7 @@
 #include "render/accel/world.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <string>
 
@@ -23,11 +24,17 @@ bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
 }  // namespace
 
 uint32_t World::add_transform(const Mat4& to_world) {
+  const Mat4 to_object = glm::inverse(to_world);
+  InstanceLinear linear{glm::dmat3(to_world), glm::dmat3(to_object), glm::transpose(glm::dmat3(to_object))};
+  // Shared by bits: two instances share a pair only when every double is the same.
+  std::string key(sizeof(InstanceLinear), '\0');
+  std::memcpy(key.data(), &linear, sizeof(InstanceLinear));
+  auto [it, fresh] = instance_linear_index_.try_emplace(std::move(key), static_cast<uint32_t>(instance_linears_.size()));
+  if (fresh) instance_linears_.push_back(linear);
   InstanceTransform xf;
-  xf.to_world = to_world;
-  xf.to_object = glm::inverse(to_world);
-  xf.normal_to_world = glm::transpose(glm::dmat3(xf.to_object));
-  xf.vector_to_world = glm::dmat3(to_world);
+  xf.linear = it->second;
+  xf.to_world_t = Vec3(to_world[3]);
+  xf.to_object_t = Vec3(to_object[3]);
   transforms_.push_back(xf);
   return static_cast<uint32_t>(transforms_.size() - 1);
 }
@@ -146,7 +153,8 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     }
   }
   bounded_count_ = bounded.size();
-  group_linear_index_ = {};  // every placement is made: free the index before the BVH build
+  group_linear_index_ = {};  // every placement is made: free the indexes before the BVH build
+  instance_linear_index_ = {};
   use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
   if (use_bvh_) bvh_ = build_bvh(boxes);
   instances_ = std::move(bounded);
@@ -202,7 +210,7 @@ std::size_t World::mesh_bvh_count() const {
 
 Ray World::object_ray(const Instance& inst, const Ray& r) const {
   if (inst.transform == kNoId) return r;
-  const Mat4& m = transforms_[inst.transform].to_object;
+  const Mat4 m = instance_to_object(transforms_[inst.transform]);
   return Ray{Vec3(m * glm::dvec4(r.origin, 1.0)), Vec3(m * glm::dvec4(r.direction, 0.0))};
 }
 
@@ -334,19 +342,21 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
     hit.dpdv = best.dpdv;
   } else {
     const InstanceTransform& xf = transforms_[inst.transform];
-    hit.point = Vec3(xf.to_world * glm::dvec4(best.point, 1.0));
+    const InstanceLinear& lin = instance_linears_[xf.linear];
+    const Mat4 to_world = instance_to_world(xf);
+    hit.point = Vec3(to_world * glm::dvec4(best.point, 1.0));
     // The linear part scales the object-space error; the product and the translation add
     // rounding of their own (pbrt-v4's transformed-point error bound).
-    double linear = linear_norm(xf.to_world);
+    double linear = linear_norm(to_world);
     hit.error = linear * best.error * (1.0 + error_gamma(3)) +
                 error_gamma(3) * (linear * max_abs_component(best.point) +
-                                  max_abs_component(Vec3(xf.to_world[3])));
-    const glm::dmat3& nm = xf.normal_to_world;
+                                  max_abs_component(Vec3(to_world[3])));
+    const glm::dmat3& nm = lin.normal_to_world;
     hit.normal = glm::normalize(nm * best.normal);
     hit.shading_normal = glm::normalize(nm * best.shading_normal);
     // Tangents transform as vectors, unlike normals.
-    hit.dpdu = xf.vector_to_world * best.dpdu;
-    hit.dpdv = xf.vector_to_world * best.dpdv;
+    hit.dpdu = lin.to_world * best.dpdu;
+    hit.dpdv = lin.to_world * best.dpdv;
   }
   return true;
 }
@@ -476,7 +486,7 @@ std::size_t World::triangle_count() const {
 WorldMemory World::memory() const {
   WorldMemory w;
   w.instances = instances_.capacity() * sizeof(Instance) + planes_.capacity() * sizeof(uint32_t);
-  w.transforms = transforms_.capacity() * sizeof(InstanceTransform) +
+  w.transforms = transforms_.capacity() * sizeof(InstanceTransform) + instance_linears_.capacity() * sizeof(InstanceLinear) +
                  group_transforms_.capacity() * sizeof(GroupTransform) + group_linears_.capacity() * sizeof(GroupLinear);
   for (const Group& g : groups_) w.bvh += g.bvh.nodes.capacity() * sizeof(BVHNode) + g.bvh.order.capacity() * sizeof(uint32_t);
   std::apply([&](const auto&... array) { ((w.shapes += array.capacity() * sizeof(array[0])), ...); }, shapes_);

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <tuple>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -55,15 +56,32 @@ struct Instance {
   uint32_t transform = kNoId;  // into World's transforms, or kNoId: trace the world ray as is
 };
 
+// A transformed instance's maps (object → world and back). Their 3×3 linear parts, with the
+// normal matrix read off them, are kept once per distinct pair (InstanceLinear,
+// World::instance_linears_): objects placed by `translate` all share the identity's, and a
+// loop's rotations repeat. An instance holds the pair's index and its own two translation
+// columns: 56 bytes where the four matrices were 400 (issue 24: a million spheres placed by
+// `translate` held 416 MB of transforms). The matrices are rebuilt from exactly those columns
+// (World::instance_to_world, instance_to_object), so every product is the one it was.
+struct InstanceLinear {
+  glm::dmat3 to_world{1.0};         // the object → world linear part (tangents)
+  glm::dmat3 to_object{1.0};        // the world → object linear part
+  glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
+};
 struct InstanceTransform {
+  uint32_t linear = 0;              // into World::instance_linears_
+  Vec3 to_world_t{0.0};             // the translation column of each map
+  Vec3 to_object_t{0.0};
+};
+// All of a transformed instance's maps at once, as World::transform rebuilds them (light
+// sampling, which reads them once per emitter).
+struct InstanceMaps {
   Mat4 to_world{1.0};               // object → world
   Mat4 to_object{1.0};              // world → object
   glm::dmat3 normal_to_world{1.0};  // inverse transpose of the object → world linear part
   glm::dmat3 vector_to_world{1.0};  // the object → world linear part (tangents)
 };
 
-// A group placement's transform: the affine rows only (the bottom row is 0 0 0 1), 192 bytes
-// instead of InstanceTransform's 400; the normal and tangent matrices are read off these.
 // A placement's affine map (group space → parent space) and its inverse. Their 3×3 linear
 // parts are kept once per distinct pair (GroupLinear, World::group_linears_): placements made
 // by a loop mostly repeat a few rotations and scales and differ in translation, and the two
@@ -180,8 +198,21 @@ class World {
   const Instance& instance(uint32_t i) const { return instances_[i]; }
   // An instance's object -> world transform (null: the identity), and the shapes by their
   // Instance::index, for samplers of emissive shapes (render/shade/path/light_set.*).
-  const InstanceTransform* transform(uint32_t i) const {
-    return instances_[i].transform == kNoId ? nullptr : &transforms_[instances_[i].transform];
+  // Instance i's maps, or nothing when it has none (the identity).
+  std::optional<InstanceMaps> transform(uint32_t i) const {
+    if (instances_[i].transform == kNoId) return std::nullopt;
+    const InstanceTransform& xf = transforms_[instances_[i].transform];
+    const InstanceLinear& l = instance_linears_[xf.linear];
+    return InstanceMaps{instance_to_world(xf), instance_to_object(xf), l.normal_to_world, l.to_world};
+  }
+  static Mat4 affine(const glm::dmat3& l, const Vec3& t) {
+    return Mat4(glm::dvec4(l[0], 0.0), glm::dvec4(l[1], 0.0), glm::dvec4(l[2], 0.0), glm::dvec4(t, 1.0));
+  }
+  Mat4 instance_to_world(const InstanceTransform& xf) const {
+    return affine(instance_linears_[xf.linear].to_world, xf.to_world_t);
+  }
+  Mat4 instance_to_object(const InstanceTransform& xf) const {
+    return affine(instance_linears_[xf.linear].to_object, xf.to_object_t);
   }
   template <class T>
   const T& shape(uint32_t index) const { return std::get<std::vector<T>>(shapes_)[index]; }
@@ -192,6 +223,7 @@ class World {
   std::size_t group_part_count() const { return group_parts_; }
   std::size_t group_count() const { return groups_.size(); }  // distinct instanced groups built
   std::size_t group_linear_count() const { return group_linears_.size(); }  // distinct placement rotations/scales
+  std::size_t instance_linear_count() const { return instance_linears_.size(); }  // distinct shape rotations/scales
   std::size_t mesh_bvh_count() const;  // distinct mesh BVHs built
   const BVH& top_level() const { return bvh_; }
   // CSG rays compute only the leaves whose state can matter inside the ray's interval
@@ -290,6 +322,9 @@ class World {
 
   std::vector<Instance> instances_;  // bounded instances first (BVH), then planes
   std::vector<InstanceTransform> transforms_;
+  std::vector<InstanceLinear> instance_linears_;
+  // While building: each distinct linear pair's index in instance_linears_, by its doubles' bits.
+  std::unordered_map<std::string, uint32_t> instance_linear_index_;
   std::vector<uint32_t> planes_;     // instance indices of unbounded planes
   BVH bvh_;
   std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded

@@ -87,7 +87,7 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     // share one transform, so a ray is carried into their space once (trace_csg).
     if (m != Mat4(1.0)) {
       auto same = std::find_if(block_transforms.begin(), block_transforms.end(),
-                               [&](uint32_t xf) { return transforms_[xf].to_world == m; });
+                               [&](uint32_t xf) { return instance_to_world(transforms_[xf]) == m; });
       part.transform = same != block_transforms.end() ? *same : add_transform(m);
       if (same == block_transforms.end()) block_transforms.push_back(part.transform);
     }

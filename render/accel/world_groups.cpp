@@ -130,7 +130,11 @@ bool World::intersect_group(const Instance& inst, const Ray& parent_ray, const I
     best.leaf_point = best.point;
     // Only some kinds set tangents; the others' are cleared before they are carried.
     if (!kShapeInfos[part.kind].has_tangents) best.dpdu = best.dpdv = Vec3(0.0);
-    if (part.transform != kNoId) shape_to_parent(transforms_[part.transform], best);
+    if (part.transform != kNoId) {
+      const InstanceTransform& xf = transforms_[part.transform];
+      const InstanceLinear& lin = instance_linears_[xf.linear];
+      shape_to_parent(instance_to_world(xf), lin.to_world, lin.normal_to_world, best);
+    }
   }
   hit = best;
   return true;

@@ -34,6 +34,34 @@ TEST_CASE("translated and scaled sphere is hit where the transform puts it", "[t
   CHECK(w.surface_uv(h).y == Approx(0.5));
 }
 
+TEST_CASE("instances placed by translation share one linear part and keep their own translations", "[transforms]") {
+  // Shapes placed by `translate` (the POV-Ray way) and a few by the same rotation: the world
+  // keeps one linear pair per distinct rotation, and each instance's own translation.
+  SceneDesc s;
+  const Mat4 turn = rotate_deg(30.0, Vec3(0, 0, 1));
+  for (int i = 0; i < 20; ++i) place(s, add_shape(s, Sphere{Vec3(0), 0.4}), translate(Vec3(i, 0, 10)));
+  for (int i = 0; i < 5; ++i) place(s, add_shape(s, Box{Vec3(-0.3), Vec3(0.3)}), translate(Vec3(i, 3, 10)) * turn);
+  World w = make_world(s);
+  CHECK(w.instance_linear_count() == 2);
+  STATIC_REQUIRE(sizeof(InstanceTransform) <= 56);
+  for (int i = 0; i < 20; ++i) {
+    WorldHit h;
+    REQUIRE(w.intersect(Ray{Vec3(i, 0, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
+    CHECK(h.t == Approx(9.6));
+    check_vec(h.object_point, Vec3(0, 0, -0.4));
+    const std::optional<InstanceMaps> maps = w.transform(h.instance);
+    REQUIRE(maps);
+    check_vec(Vec3(maps->to_world[3]), Vec3(i, 0, 10), 0.0);
+    check_vec(Vec3(maps->to_object * glm::dvec4(Vec3(i, 0, 10), 1.0)), Vec3(0.0), 0.0);
+  }
+  for (int i = 0; i < 5; ++i) {
+    WorldHit h;
+    REQUIRE(w.intersect(Ray{Vec3(i, 3, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
+    CHECK(h.t == Approx(9.7));                      // the rotated box's face, turned about z only
+    check_vec(h.normal, Vec3(0, 0, -1));
+  }
+}
+
 TEST_CASE("non-uniform scale: normals use the inverse transpose", "[transforms]") {
   // A sphere squashed to an ellipsoid x^2/4 + y^2 = 1; at (sqrt2, sqrt(1/2)) the true normal
   // is along the gradient (x/4, y) = (sqrt2/4, sqrt(1/2)).

@@ -18,17 +18,17 @@ Rgb to_rgb(const Color& c) { return Rgb(c.r, c.g, c.b); }
 double luminance(const Rgb& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 bool is_black(const Rgb& c) { return !(std::max({c.x, c.y, c.z}) > 0.0); }
 
-Vec3 point_to_world(const InstanceTransform* xf, const Vec3& p) {
+Vec3 point_to_world(const InstanceMaps* xf, const Vec3& p) {
   return xf ? Vec3(xf->to_world * glm::dvec4(p, 1.0)) : p;
 }
-Vec3 vector_to_world(const InstanceTransform* xf, const Vec3& v) { return xf ? xf->vector_to_world * v : v; }
+Vec3 vector_to_world(const InstanceMaps* xf, const Vec3& v) { return xf ? xf->vector_to_world * v : v; }
 
 // A mesh whose vertices carry uvs (one per position), as its hits read them.
 bool has_vertex_uvs(const MeshData& m) { return !m.uvs.empty() && m.uvs.size() == m.positions.size(); }
 
 // A transform that keeps spheres spheres (rotation, mirror, uniform scale, translation):
 // its scale factor, or 0 when it stretches some axis more than another.
-double uniform_scale(const InstanceTransform* xf) {
+double uniform_scale(const InstanceMaps* xf) {
   if (!xf) return 1.0;
   const glm::dmat3& m = xf->vector_to_world;
   double s0 = glm::length(m[0]), s1 = glm::length(m[1]), s2 = glm::length(m[2]);
@@ -92,12 +92,14 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
       Entry& e = entries_.back();
       e.texture = &textures[m.emission_texture];
       e.texture_uv = by_uv;
-      const InstanceTransform* xf = world.transform(i);
-      e.to_object = xf ? &xf->to_object : nullptr;
+      if (const std::optional<InstanceMaps> maps = world.transform(i)) {
+        e.to_object = maps->to_object;
+        e.transformed = true;
+      }
       // For picking by power: the texture at the emitter's reference point (a corner or its
       // centre; uv's centre), a rough guess; any guess keeps the estimate unbiased.
       TexturePoint p;
-      p.object_point = e.to_object ? Vec3(*e.to_object * glm::dvec4(e.p0, 1.0)) : e.p0;
+      p.object_point = e.transformed ? Vec3(e.to_object * glm::dvec4(e.p0, 1.0)) : e.p0;
       p.uv = glm::dvec2(0.5);
       p.has_uv = by_uv;
       e.radiance = glm::max(to_rgb(e.texture->eval(p)), Rgb(0.0));
@@ -214,7 +216,8 @@ std::vector<double> LightSet::pick_probabilities() const {
 void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t instance, const Rgb& le,
                            bool uvs) {
   const Instance& inst = world.instance(instance);
-  const InstanceTransform* xf = world.transform(instance);
+  const std::optional<InstanceMaps> maps = world.transform(instance);
+  const InstanceMaps* xf = maps ? &*maps : nullptr;
   Entry e;
   e.radiance = le;
   if (inst.kind == kPrimKind<Sphere>) {
@@ -351,7 +354,7 @@ bool LightSet::sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSampl
     // uv, as a ray that hits the point reads it.
     const Vec3 on = point + out.distance * out.wi;
     TexturePoint p;
-    p.object_point = e.to_object ? Vec3(*e.to_object * glm::dvec4(on, 1.0)) : on;
+    p.object_point = e.transformed ? Vec3(e.to_object * glm::dvec4(on, 1.0)) : on;
     if (e.texture_uv) {
       p.uv = e.type == Type::Mesh ? mesh_uv : emitter_uv(e, on, p.object_point);
       p.has_uv = true;
@@ -364,7 +367,7 @@ bool LightSet::sample(const Vec3& point, double u_pick, glm::dvec2 u, LightSampl
 glm::dvec2 LightSet::emitter_uv(const Entry& e, const Vec3& on, const Vec3& object_point) {
   if (e.type == Type::Sphere) {
     // As World::surface_uv: the direction from the centre, in the object's space.
-    const Vec3 centre = e.to_object ? Vec3(*e.to_object * glm::dvec4(e.p0, 1.0)) : e.p0;
+    const Vec3 centre = e.transformed ? Vec3(e.to_object * glm::dvec4(e.p0, 1.0)) : e.p0;
     return sphere_uv(glm::normalize(object_point - centre));
   }
   // A quad: (s, t) of on = p0 + s e1 + t e2, by the dual basis, as the quad's own test finds it.

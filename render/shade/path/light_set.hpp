@@ -89,7 +89,8 @@ class LightSet {
     CompiledLight light;             // point, spot
     const CompiledTexture* texture = nullptr;   // textured emission: read at the sampled point
     bool texture_uv = false;                    // ... by its uv (quads, spheres, meshes with uvs)
-    const Mat4* to_object = nullptr;            // its instance's world -> object (null: identity)
+    Mat4 to_object{1.0};                        // its instance's world -> object ...
+    bool transformed = false;                   // ... when it has one (else the identity)
     double pick = 0.0;               // probability that sample() picks this light
     double pick_cdf = 0.0;           // sum of pick up to and including this light
   };
