@@ -88,6 +88,7 @@ LightDesc transform_light(const LightDesc& light, const Mat4& m) {
 FlatScene flatten_instance(const SceneDesc& scene, const Child& instance) {
   FlatScene out;
   flatten_child(scene, instance, Mat4(1.0), 0, {}, kNoId, true, out);
+  out.built();
   return out;
 }
 
@@ -95,6 +96,7 @@ FlatScene flatten_scene(const SceneDesc& scene) {
   FlatScene out;
   out.instanced = instanced_groups(scene);
   for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out.instanced, kNoId, true, out);
+  out.built();
   return out;
 }
 
@@ -103,6 +105,7 @@ FlatScene flatten_group(const SceneDesc& scene, const std::vector<bool>& instanc
   static const std::vector<bool> none;
   const std::vector<bool>& nested = level + 1 < kMaxInstanceLevels ? instanced : none;
   for (const Child& c : scene.groups[group].children) flatten_child(scene, c, Mat4(1.0), level + 1, nested, kNoId, true, out);
+  out.built();
   return out;
 }
 

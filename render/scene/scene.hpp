@@ -11,7 +11,9 @@
 //  - Colors are linear RGB; the image writer encodes sRGB.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <ostream>
@@ -557,23 +559,46 @@ struct Node {
 // A child's placement, child space → parent space. The identity costs no matrix: shapes placed
 // by loops mostly carry their position in their own parameters, and a 128-byte matrix per
 // such child was a third of the scene description of a million spheres (issue 24's memory
-// per object). Any other transform is one immutable matrix, shared by the copies of the child.
+// per object). A pure translation (`translate`, the usual way to place an object) keeps only
+// its offset (a 48-byte block); any other transform one immutable matrix (152 bytes), shared
+// by the copies of the child. matrix() gives the matrix back bit for bit.
 class ChildTransform {
  public:
   ChildTransform() = default;
   ChildTransform(const Mat4& m) {  // NOLINT: implicit, a child is placed by a matrix
-    if (m != Mat4(1.0)) matrix_ = std::make_shared<const Mat4>(m);
+    static const Mat4 kIdentity(1.0);
+    if (m == kIdentity) return;  // by value, as before: a -0 entry is the identity too
+    // By bits: the rebuilt matrix must be this one exactly (a -0 in the linear part is kept).
+    if (std::memcmp(&m, &kIdentity, 3 * sizeof(glm::dvec4)) == 0 && m[3].w == 1.0 && !std::signbit(m[3].w))
+      block_ = std::make_shared<const Offset>(Vec3(m[3]));
+    else
+      block_ = std::make_shared<const Matrix>(m);
   }
-  const Mat4& matrix() const { return matrix_ ? *matrix_ : identity(); }
-  operator const Mat4&() const { return matrix(); }  // NOLINT: reads as the matrix it is
-  const glm::dvec4& operator[](int column) const { return matrix()[column]; }
+  Mat4 matrix() const {
+    if (!block_) return Mat4(1.0);
+    if (block_->offset_only) {
+      Mat4 m(1.0);
+      m[3] = glm::dvec4(static_cast<const Offset&>(*block_).offset, 1.0);
+      return m;
+    }
+    return static_cast<const Matrix&>(*block_).m;
+  }
+  operator Mat4() const { return matrix(); }  // NOLINT: reads as the matrix it is
+  glm::dvec4 operator[](int column) const { return matrix()[column]; }
 
  private:
-  static const Mat4& identity() {
-    static const Mat4 kIdentity(1.0);
-    return kIdentity;
-  }
-  std::shared_ptr<const Mat4> matrix_;
+  struct Block {
+    bool offset_only;
+  };
+  struct Offset : Block {
+    explicit Offset(const Vec3& t) : Block{true}, offset(t) {}
+    Vec3 offset;
+  };
+  struct Matrix : Block {
+    explicit Matrix(const Mat4& matrix) : Block{false}, m(matrix) {}
+    Mat4 m;
+  };
+  std::shared_ptr<const Block> block_;
 };
 inline Mat4 operator*(const Mat4& a, const ChildTransform& b) { return a * b.matrix(); }
 inline glm::dvec4 operator*(const ChildTransform& a, const glm::dvec4& v) { return a.matrix() * v; }

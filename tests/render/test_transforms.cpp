@@ -1,5 +1,6 @@
 // The World: scene-graph flattening, transformed instances (object-space intersection with the
 // inverse matrix, normals by the inverse transpose), shared meshes.
+#include <cstring>
 #include <memory>
 
 #include <catch2/catch.hpp>
@@ -59,6 +60,24 @@ TEST_CASE("instances placed by translation share one linear part and keep their 
     REQUIRE(w.intersect(Ray{Vec3(i, 3, 0), Vec3(0, 0, 1)}, Interval::positive(), h));
     CHECK(h.t == Approx(9.7));                      // the rotated box's face, turned about z only
     check_vec(h.normal, Vec3(0, 0, -1));
+  }
+}
+
+TEST_CASE("a child's transform gives back its matrix bit for bit", "[transforms]") {
+  // ChildTransform keeps a translation as its offset alone and anything else whole; either way
+  // the matrix read back is the one given, down to the sign of a zero.
+  Mat4 mirrored_zero = translate(Vec3(1, 2, 3));
+  mirrored_zero[0][1] = -0.0;  // equal to the translation by value, not by bits: kept whole
+  const Mat4 cases[] = {Mat4(1.0), translate(Vec3(0.1, -2e300, 5e-320)), mirrored_zero,
+                        translate(Vec3(4, 5, 6)) * rotate_deg(33.0, glm::normalize(Vec3(1, 2, 3))) * scale(Vec3(2, 1, 0.5))};
+  for (const Mat4& m : cases) {
+    const ChildTransform t(m);
+    const Mat4 back = t.matrix();
+    CHECK(std::memcmp(&back, &m, sizeof(Mat4)) == 0);
+    CHECK(t[3] == m[3]);
+    const ChildTransform copy = t;
+    const Mat4 copied = copy.matrix();
+    CHECK(std::memcmp(&copied, &m, sizeof(Mat4)) == 0);
   }
 }
 
