@@ -33,4 +33,17 @@ class Boxed {
   std::unique_ptr<T> p_;
 };
 
+// A shape kind whose whole data is boxed (a prism, an isosurface): built from its data, which
+// `->` and `*` reach. Each kind derives its own type from it, so the ShapeGeometry variant
+// still tells them apart.
+template <class Data>
+struct BoxedShape {
+  Boxed<Data> data{Data{}};
+  BoxedShape() = default;
+  BoxedShape(Data d) : data(std::move(d)) {}  // NOLINT: a shape from its data
+  Data* operator->() { return data.operator->(); }
+  const Data* operator->() const { return data.operator->(); }
+  const Data& operator*() const { return *data; }
+};
+
 }  // namespace rts::render

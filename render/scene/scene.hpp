@@ -275,13 +275,8 @@ struct IsosurfaceData {
 };
 
 // The shape holds its data boxed (144 bytes; boxed.hpp says why); `->` reaches it.
-struct Isosurface {
-  Boxed<IsosurfaceData> data{IsosurfaceData{}};
-  Isosurface() = default;
-  Isosurface(IsosurfaceData d) : data(std::move(d)) {}  // NOLINT: a shape from its data
-  IsosurfaceData* operator->() { return data.operator->(); }
-  const IsosurfaceData* operator->() const { return data.operator->(); }
-  const IsosurfaceData& operator*() const { return *data; }
+struct Isosurface : BoxedShape<IsosurfaceData> {
+  using BoxedShape::BoxedShape;
 };
 
 // POV-Ray's blob: components adding s (1 - d^2/r^2)^2 within r of a centre or of an axis
@@ -362,13 +357,8 @@ struct PrismData {
 };
 
 // The shape holds its data boxed (176 bytes; boxed.hpp says why); `->` reaches it.
-struct Prism {
-  Boxed<PrismData> data{PrismData{}};
-  Prism() = default;
-  Prism(PrismData d) : data(std::move(d)) {}  // NOLINT: a shape from its data
-  PrismData* operator->() { return data.operator->(); }
-  const PrismData* operator->() const { return data.operator->(); }
-  const PrismData& operator*() const { return *data; }
+struct Prism : BoxedShape<PrismData> {
+  using BoxedShape::BoxedShape;
 };
 
 // POV-Ray's poly (quartic, cubic): the surface sum c x^i y^j z^k = 0 over i + j + k <= order,

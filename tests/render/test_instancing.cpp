@@ -30,6 +30,29 @@ FlatScene copied(const SceneDesc& s) {
   return out;
 }
 
+// Rays from within `spread` of the origin towards `target` (± 15): the instanced world and the
+// copied one agree on every hit's existence, distance, normal, object point and material, and
+// the instanced world's occlusion agrees with its closest hit. Returns the number of hits.
+int check_same_hits(const World& instanced, const World& copies, std::mt19937_64& rng, double spread, const Vec3& target) {
+  int hits = 0;
+  for (int r = 0; r < 3000; ++r) {
+    const Vec3 o = random_point(rng, spread);
+    const Ray ray{o, random_point(rng, 15.0) + target - o};
+    WorldHit a, b;
+    const bool fa = instanced.intersect(ray, Interval::positive(), a);
+    REQUIRE(fa == copies.intersect(ray, Interval::positive(), b));
+    if (!fa) continue;
+    ++hits;
+    CHECK(a.t == Approx(b.t).epsilon(1e-9));
+    CHECK(glm::dot(a.normal, b.normal) > 1.0 - 1e-9);
+    CHECK(glm::length(a.object_point - b.object_point) <= 1e-9 * (1.0 + glm::length(b.object_point)));
+    CHECK(instanced.instance(a.instance).material == copies.instance(b.instance).material);
+    CHECK(instanced.occluded(ray, Interval(0.0, a.t * 0.999)) == false);
+    CHECK(instanced.occluded(ray, Interval(0.0, a.t * 1.001)) == true);
+  }
+  return hits;
+}
+
 // A group of `n` random spheres, boxes and triangles (some transformed, a nested group among
 // them) with two materials.
 NodeId random_group(SceneDesc& s, std::mt19937_64& rng, int n) {
@@ -119,21 +142,7 @@ TEST_CASE("placements that repeat a rotation share its linear part and give the 
   REQUIRE(flat.groups.size() == 12);
   const World instanced(s, flat), copies(s, copied(s));
   CHECK(instanced.group_linear_count() == 2);
-  int hits = 0;
-  for (int r = 0; r < 3000; ++r) {
-    const Vec3 o = random_point(rng, 30.0);
-    const Ray ray{o, random_point(rng, 15.0) - o};
-    WorldHit a, b;
-    const bool fa = instanced.intersect(ray, Interval::positive(), a);
-    REQUIRE(fa == copies.intersect(ray, Interval::positive(), b));
-    if (!fa) continue;
-    ++hits;
-    CHECK(a.t == Approx(b.t).epsilon(1e-9));
-    CHECK(glm::dot(a.normal, b.normal) > 1.0 - 1e-9);
-    CHECK(glm::length(a.object_point - b.object_point) <= 1e-9 * (1.0 + glm::length(b.object_point)));
-    CHECK(instanced.instance(a.instance).material == copies.instance(b.instance).material);
-  }
-  CHECK(hits > 300);
+  CHECK(check_same_hits(instanced, copies, rng, 30.0, Vec3(0.0)) > 300);
   // A placement holds an index and two translations, not a 192-byte pair of matrices.
   STATIC_REQUIRE(sizeof(GroupTransform) <= 56);
 }
@@ -202,22 +211,7 @@ TEST_CASE("nested instanced groups and groups without a BVH", "[instancing]") {
   const World instanced(s, flat), copies(s, copied(s));
   REQUIRE(instanced.group_count() == 2);  // the row (3 placements of the leaf) and the leaf
   REQUIRE(instanced.group_part_count() == 70 + 3);
-  int hits = 0;
-  for (int r = 0; r < 3000; ++r) {
-    const Vec3 o = random_point(rng, 40.0);
-    const Ray ray{o, random_point(rng, 15.0) + Vec3(0, 0, 15) - o};
-    WorldHit a, b;
-    const bool fa = instanced.intersect(ray, Interval::positive(), a);
-    REQUIRE(fa == copies.intersect(ray, Interval::positive(), b));
-    if (!fa) continue;
-    ++hits;
-    CHECK(a.t == Approx(b.t).epsilon(1e-9));
-    CHECK(glm::dot(a.normal, b.normal) > 1.0 - 1e-9);
-    CHECK(instanced.instance(a.instance).material == copies.instance(b.instance).material);
-    CHECK(instanced.occluded(ray, Interval(0.0, a.t * 0.999)) == false);
-    CHECK(instanced.occluded(ray, Interval(0.0, a.t * 1.001)) == true);
-  }
-  CHECK(hits > 300);
+  CHECK(check_same_hits(instanced, copies, rng, 40.0, Vec3(0, 0, 15)) > 300);
 }
 
 TEST_CASE("which groups are instanced", "[instancing]") {
