@@ -5,9 +5,9 @@
 #pragma once
 
 #include <memory>
-#include <tuple>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -196,9 +196,8 @@ class World {
   bool vertex_material(const WorldHit& hit, VertexMaterial& out) const;
 
   const Instance& instance(uint32_t i) const { return instances_[i]; }
-  // An instance's object -> world transform (null: the identity), and the shapes by their
-  // Instance::index, for samplers of emissive shapes (render/shade/path/light_set.*).
-  // Instance i's maps, or nothing when it has none (the identity).
+  // Instance i's maps (nothing: the identity), and the shapes by their Instance::index, for
+  // samplers of emissive shapes (render/shade/path/light_set.*).
   std::optional<InstanceMaps> transform(uint32_t i) const {
     if (instances_[i].transform == kNoId) return std::nullopt;
     const InstanceTransform& xf = transforms_[instances_[i].transform];

@@ -11,7 +11,6 @@
 //  - Colors are linear RGB; the image writer encodes sRGB.
 #pragma once
 
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -559,7 +558,7 @@ class ChildTransform {
     static const Mat4 kIdentity(1.0);
     if (m == kIdentity) return;  // by value, as before: a -0 entry is the identity too
     // By bits: the rebuilt matrix must be this one exactly (a -0 in the linear part is kept).
-    if (std::memcmp(&m, &kIdentity, 3 * sizeof(glm::dvec4)) == 0 && m[3].w == 1.0 && !std::signbit(m[3].w))
+    if (std::memcmp(&m, &kIdentity, 3 * sizeof(glm::dvec4)) == 0 && m[3].w == 1.0)
       block_ = std::make_shared<const Offset>(Vec3(m[3]));
     else
       block_ = std::make_shared<const Matrix>(m);
