@@ -43,10 +43,9 @@ inline void group_to_parent(const glm::dmat4x3& to_world, const glm::dmat4x3& to
   hit_to_parent(to_world * glm::dvec4(h.point, 1.0), vec, to_world[3], glm::transpose(glm::dmat3(to_object)), h);
 }
 
-// A shape instance's maps as World::instance_to_world and its InstanceLinear give them.
-inline void shape_to_parent(const Mat4& to_world, const glm::dmat3& vector_to_world, const glm::dmat3& normal_to_world,
-                            SurfaceHit& h) {
-  hit_to_parent(Vec3(to_world * glm::dvec4(h.point, 1.0)), vector_to_world, Vec3(to_world[3]), normal_to_world, h);
+// A shape instance's map: its shared linear parts and its own translation.
+inline void shape_to_parent(const InstanceLinear& lin, const Vec3& to_world_t, SurfaceHit& h) {
+  hit_to_parent(apply_affine(lin.to_world, to_world_t, h.point, 1.0), lin.to_world, to_world_t, lin.normal_to_world, h);
 }
 
 }  // namespace rts::render

@@ -210,8 +210,9 @@ std::size_t World::mesh_bvh_count() const {
 
 Ray World::object_ray(const Instance& inst, const Ray& r) const {
   if (inst.transform == kNoId) return r;
-  const Mat4 m = instance_to_object(transforms_[inst.transform]);
-  return Ray{Vec3(m * glm::dvec4(r.origin, 1.0)), Vec3(m * glm::dvec4(r.direction, 0.0))};
+  const InstanceTransform& xf = transforms_[inst.transform];
+  const glm::dmat3& l = instance_linears_[xf.linear].to_object;
+  return Ray{apply_affine(l, xf.to_object_t, r.origin, 1.0), apply_affine(l, xf.to_object_t, r.direction, 0.0)};
 }
 
 // One test per kind, chosen by comparing the kind with each index in turn (GCC turns the
@@ -343,14 +344,12 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   } else {
     const InstanceTransform& xf = transforms_[inst.transform];
     const InstanceLinear& lin = instance_linears_[xf.linear];
-    const Mat4 to_world = instance_to_world(xf);
-    hit.point = Vec3(to_world * glm::dvec4(best.point, 1.0));
+    hit.point = apply_affine(lin.to_world, xf.to_world_t, best.point, 1.0);
     // The linear part scales the object-space error; the product and the translation add
     // rounding of their own (pbrt-v4's transformed-point error bound).
-    double linear = linear_norm(to_world);
+    double linear = linear_norm(lin.to_world);
     hit.error = linear * best.error * (1.0 + error_gamma(3)) +
-                error_gamma(3) * (linear * max_abs_component(best.point) +
-                                  max_abs_component(Vec3(to_world[3])));
+                error_gamma(3) * (linear * max_abs_component(best.point) + max_abs_component(xf.to_world_t));
     const glm::dmat3& nm = lin.normal_to_world;
     hit.normal = glm::normalize(nm * best.normal);
     hit.shading_normal = glm::normalize(nm * best.shading_normal);

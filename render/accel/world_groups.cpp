@@ -132,8 +132,7 @@ bool World::intersect_group(const Instance& inst, const Ray& parent_ray, const I
     if (!kShapeInfos[part.kind].has_tangents) best.dpdu = best.dpdv = Vec3(0.0);
     if (part.transform != kNoId) {
       const InstanceTransform& xf = transforms_[part.transform];
-      const InstanceLinear& lin = instance_linears_[xf.linear];
-      shape_to_parent(instance_to_world(xf), lin.to_world, lin.normal_to_world, best);
+      shape_to_parent(instance_linears_[xf.linear], xf.to_world_t, best);
     }
   }
   hit = best;
