@@ -4,12 +4,10 @@
 // World builds the group's contents once, in the group's own space (two-level instancing).
 #pragma once
 
-#include <cstring>
 #include <functional>
-#include <string>
-#include <unordered_map>
 #include <vector>
 
+#include "render/accel/bit_interner.hpp"
 #include "render/scene/scene.hpp"
 
 namespace rts::render {
@@ -101,19 +99,15 @@ struct FlatScene {
     return m;
   }
   // Frees what only building needs (the index of distinct linear parts).
-  void built() { linear_lookup = {}; }
+  void built() { linear_lookup.release(); }
 
  private:
   uint32_t linear_index(const Mat4& to_world) {
     Mat4 linear = to_world;
     linear[3].x = linear[3].y = linear[3].z = 0.0;
-    std::string key(sizeof(Mat4), '\0');
-    std::memcpy(key.data(), &linear, sizeof(Mat4));
-    auto [it, fresh] = linear_lookup.try_emplace(std::move(key), static_cast<uint32_t>(linears.size()));
-    if (fresh) linears.push_back(linear);
-    return it->second;
+    return linear_lookup.intern(linear, linears);
   }
-  std::unordered_map<std::string, uint32_t> linear_lookup;  // by the linear part's bits
+  BitInterner<Mat4> linear_lookup;
 };
 
 // A group is instanced when it is placed at least twice (two Child entries name it), holds at

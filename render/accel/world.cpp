@@ -1,7 +1,6 @@
 #include "render/accel/world.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
 #include <string>
 
@@ -27,12 +26,8 @@ uint32_t World::add_transform(const Mat4& to_world) {
   const Mat4 to_object = glm::inverse(to_world);
   InstanceLinear linear{glm::dmat3(to_world), glm::dmat3(to_object), glm::transpose(glm::dmat3(to_object))};
   // Shared by bits: two instances share a pair only when every double is the same.
-  std::string key(sizeof(InstanceLinear), '\0');
-  std::memcpy(key.data(), &linear, sizeof(InstanceLinear));
-  auto [it, fresh] = instance_linear_index_.try_emplace(std::move(key), static_cast<uint32_t>(instance_linears_.size()));
-  if (fresh) instance_linears_.push_back(linear);
   InstanceTransform xf;
-  xf.linear = it->second;
+  xf.linear = instance_linear_index_.intern(linear, instance_linears_);
   xf.to_world_t = Vec3(to_world[3]);
   xf.to_object_t = Vec3(to_object[3]);
   transforms_.push_back(xf);
@@ -153,8 +148,8 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
     }
   }
   bounded_count_ = bounded.size();
-  group_linear_index_ = {};  // every placement is made: free the indexes before the BVH build
-  instance_linear_index_ = {};
+  group_linear_index_.release();  // every placement is made: free the indexes before the BVH build
+  instance_linear_index_.release();
   use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
   if (use_bvh_) bvh_ = build_bvh(boxes);
   instances_ = std::move(bounded);

@@ -6,11 +6,10 @@
 
 #include <memory>
 #include <optional>
-#include <string>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
+#include "render/accel/bit_interner.hpp"
 #include "render/accel/bvh.hpp"
 #include "render/accel/flatten.hpp"
 #include "render/accel/mesh_accel.hpp"
@@ -314,7 +313,7 @@ class World {
   std::vector<GroupTransform> group_transforms_;
   std::vector<GroupLinear> group_linears_;
   // While building: each distinct linear pair's index in group_linears_, by its 18 doubles' bits.
-  std::unordered_map<std::string, uint32_t> group_linear_index_;
+  BitInterner<GroupLinear> group_linear_index_;
   glm::dmat4x3 group_to_world(const GroupTransform& xf) const {
     const glm::dmat3& l = group_linears_[xf.linear].to_world;
     return glm::dmat4x3(l[0], l[1], l[2], xf.to_world_t);
@@ -332,7 +331,7 @@ class World {
   std::vector<InstanceTransform> transforms_;
   std::vector<InstanceLinear> instance_linears_;
   // While building: each distinct linear pair's index in instance_linears_, by its doubles' bits.
-  std::unordered_map<std::string, uint32_t> instance_linear_index_;
+  BitInterner<InstanceLinear> instance_linear_index_;
   std::vector<uint32_t> planes_;     // instance indices of unbounded planes
   BVH bvh_;
   std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded

@@ -5,7 +5,6 @@
 // parent space, naming the shape instance it shows (SurfaceHit::csg_part) and that shape's
 // own object point (SurfaceHit::leaf_point), so shading sees the same records as for a copy.
 #include <cmath>
-#include <cstring>
 
 #include "render/accel/hit_transform.hpp"
 #include "render/accel/world.hpp"
@@ -66,12 +65,8 @@ bool World::add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst
   const glm::dmat4x3 world_map(to_world), object_map(glm::inverse(to_world));
   GroupLinear linear{glm::dmat3(world_map), glm::dmat3(object_map)};
   // Shared by bits: two placements share a pair only when all 18 doubles are the same.
-  std::string key(sizeof(GroupLinear), '\0');
-  std::memcpy(key.data(), &linear, sizeof(GroupLinear));
-  auto [it, fresh] = group_linear_index_.try_emplace(std::move(key), static_cast<uint32_t>(group_linears_.size()));
-  if (fresh) group_linears_.push_back(linear);
   GroupTransform xf;
-  xf.linear = it->second;
+  xf.linear = group_linear_index_.intern(linear, group_linears_);
   xf.to_world_t = world_map[3];
   xf.to_object_t = object_map[3];
   inst.transform = static_cast<uint32_t>(group_transforms_.size());

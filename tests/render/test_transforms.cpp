@@ -81,6 +81,26 @@ TEST_CASE("a child's transform gives back its matrix bit for bit", "[transforms]
   }
 }
 
+TEST_CASE("shared transforms are told apart by their bits", "[transforms]") {
+  // The interner behind every shared linear part: equal bits share an entry, a -0 is not a +0,
+  // and releasing the lookup keeps the values.
+  BitInterner<Mat4> interner;
+  std::vector<Mat4> values;
+  Mat4 negative_zero(1.0);
+  negative_zero[1][0] = -0.0;
+  const Mat4 turned = rotate_deg(33.0, glm::normalize(Vec3(1, 2, 3)));
+  CHECK(interner.intern(Mat4(1.0), values) == 0);
+  CHECK(interner.intern(turned, values) == 1);
+  CHECK(interner.intern(negative_zero, values) == 2);  // == the identity by value, not by bits
+  CHECK(interner.intern(Mat4(1.0), values) == 0);
+  CHECK(interner.intern(turned, values) == 1);
+  REQUIRE(values.size() == 3);
+  CHECK(std::memcmp(&values[2], &negative_zero, sizeof(Mat4)) == 0);
+  interner.release();
+  CHECK(values.size() == 3);
+  CHECK(interner.intern(turned, values) == 3);  // a fresh lookup: appended again
+}
+
 TEST_CASE("non-uniform scale: normals use the inverse transpose", "[transforms]") {
   // A sphere squashed to an ellipsoid x^2/4 + y^2 = 1; at (sqrt2, sqrt(1/2)) the true normal
   // is along the gradient (x/4, y) = (sqrt2/4, sqrt(1/2)).
