@@ -43,7 +43,9 @@ inline constexpr int kBvhMaxLeafCount = 65535;  // BVHNode::count's range
 inline constexpr int kBvhMaxDepth = 64;         // deeper: forced median splits (< 32 more)
 inline constexpr int kBvhTraversalStack = 128;  // > the deepest possible tree
 
-BVH build_bvh(const std::vector<AABB>& primitive_bounds);
+// Takes the boxes by value and frees them before the nodes are built (callers done with them
+// move them in): the build's peak holds the builder's references, not both.
+BVH build_bvh(std::vector<AABB> primitive_bounds);
 
 // Bounds given in float (mesh triangles: their vertices are floats): the same tree as the
 // double overload builds for the same boxes, without a 48-byte double box per primitive.

@@ -151,7 +151,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   group_linear_index_.release();  // every placement is made: free the indexes before the BVH build
   instance_linear_index_.release();
   use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
-  if (use_bvh_) bvh_ = build_bvh(boxes);
+  if (use_bvh_) bvh_ = build_bvh(std::move(boxes));
   instances_ = std::move(bounded);
   for (Instance& p : unbounded) {
     planes_.push_back(static_cast<uint32_t>(instances_.size()));

@@ -60,8 +60,9 @@ struct Instance {
 // World::instance_linears_): objects placed by `translate` all share the identity's, and a
 // loop's rotations repeat. An instance holds the pair's index and its own two translation
 // columns: 56 bytes where the four matrices were 400 (issue 24: a million spheres placed by
-// `translate` held 416 MB of transforms). The matrices are rebuilt from exactly those columns
-// (World::instance_to_world, instance_to_object), so every product is the one it was.
+// `translate` held 416 MB of transforms). Rays and hits are carried by apply_affine on those
+// columns, and the 4×4 matrices, where one is wanted (maps()), are rebuilt from exactly them
+// (World::instance_to_world, instance_to_object): every product is the one it was.
 struct InstanceLinear {
   glm::dmat3 to_world{1.0};         // the object → world linear part (tangents)
   glm::dmat3 to_object{1.0};        // the world → object linear part
