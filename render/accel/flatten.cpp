@@ -43,22 +43,22 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
   Mat4 m = parent * child.transform;
   switch (node.kind) {
     case NodeKind::Shape:
-      if (node.index >= scene.shapes.size()) throw RenderError(node.loc, "internal: unknown shape");
+      if (node.index >= scene.shapes.size()) throw RenderError(child.loc, "internal: unknown shape");
       check_transform(m, child.loc);
       out.add_shape(node.index, m, inherited, casts && scene.shapes[node.index].casts_shadow);
       break;
     case NodeKind::Light:
-      if (node.index >= scene.lights.size()) throw RenderError(node.loc, "internal: unknown light");
+      if (node.index >= scene.lights.size()) throw RenderError(child.loc, "internal: unknown light");
       check_transform(m, child.loc);
       out.lights.push_back(transform_light(scene.lights[node.index], m));
       break;
     case NodeKind::Csg:
-      if (node.index >= scene.csgs.size()) throw RenderError(node.loc, "internal: unknown CSG block");
+      if (node.index >= scene.csgs.size()) throw RenderError(child.loc, "internal: unknown CSG block");
       check_transform(m, child.loc);
-      out.csgs.push_back(FlatCsg{node.index, m, node.loc, inherited, casts && scene.csgs[node.index].casts_shadow});
+      out.csgs.push_back(FlatCsg{node.index, m, scene.csgs[node.index].loc, inherited, casts && scene.csgs[node.index].casts_shadow});
       break;
     case NodeKind::Group: {
-      if (node.index >= scene.groups.size()) throw RenderError(node.loc, "internal: unknown group");
+      if (node.index >= scene.groups.size()) throw RenderError(child.loc, "internal: unknown group");
       if (inherited == kNoId && node.index < instanced.size() && instanced[node.index]) {
         check_transform(m, child.loc);
         out.groups.push_back(FlatGroup{node.index, m, child.loc, casts && scene.groups[node.index].casts_shadow});

@@ -73,7 +73,7 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
       add_op(d.op, d.children, d.material != kNoId ? d.material : inherited, d.inverse);
       return;
     }
-    if (node.kind != NodeKind::Shape) throw RenderError(node.loc, "a CSG block holds only shapes");
+    if (node.kind != NodeKind::Shape) throw RenderError(node_loc(scene, node), "a CSG block holds only shapes");
     const ShapeDesc& shape = scene.shapes[node.index];
     Instance part;
     part.material = shape.material != kNoId ? shape.material : inherited;

@@ -206,7 +206,11 @@ bool build_described(std::index_sequence<I...>, std::string_view kind, ParamSet&
 namespace builder_detail {
 
 NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef loc) {
-  scene.nodes.push_back(Node{kind, static_cast<uint32_t>(index), loc});
+  // The item keeps where it was written (a shape's and a light's were set from the same
+  // block's location when they were made).
+  if (kind == NodeKind::Group) scene.groups[index].loc = loc;
+  if (kind == NodeKind::Csg) scene.csgs[index].loc = loc;
+  scene.nodes.push_back(Node{kind, static_cast<uint32_t>(index)});
   return static_cast<NodeId>(scene.nodes.size() - 1);
 }
 

@@ -539,10 +539,11 @@ struct Settings {
 
 // ---- the graph ----------------------------------------------------------------------------
 enum class NodeKind : uint8_t { Shape, Light, Group, Csg };  // Csg: SceneDesc::csgs
+// Where the item was written is kept by the item itself (node_loc()): a node is 8 bytes, not
+// 24, and a million spheres placed by a loop do not carry their location twice.
 struct Node {
   NodeKind kind = NodeKind::Shape;
-  uint32_t index = 0;              // into shapes, lights or groups
-  SourceRef loc;
+  uint32_t index = 0;              // into shapes, lights, groups or csgs
 };
 
 // A child's placement, child space → parent space. The identity costs no matrix: shapes placed
@@ -604,6 +605,7 @@ struct GroupDesc {
   // member without a material of its own shows it; kNoId: none, the enclosing one's.
   MaterialId material = kNoId;
   bool casts_shadow = true;        // false: none of its members casts a shadow
+  SourceRef loc{};                 // where the group was written (node_loc)
 };
 
 struct CsgDesc {
@@ -612,6 +614,7 @@ struct CsgDesc {
   MaterialId material = kNoId;     // the children's default
   bool inverse = false;            // the solid is everything outside the result
   bool casts_shadow = true;        // false: shadow rays pass the whole block
+  SourceRef loc{};                 // where the block was written (node_loc)
 };
 
 struct SceneDesc {
@@ -634,5 +637,17 @@ struct SceneDesc {
   // A deterministic, human-readable dump (`rts eval`); golden tests compare it.
   void dump(std::ostream& out) const;
 };
+
+// Where node's item (shape, light, group or CSG block) was written; empty for an index out of
+// range (an internal error, reported at the placement instead).
+inline SourceRef node_loc(const SceneDesc& scene, const Node& node) {
+  switch (node.kind) {
+    case NodeKind::Shape: return node.index < scene.shapes.size() ? scene.shapes[node.index].loc : SourceRef{};
+    case NodeKind::Light: return node.index < scene.lights.size() ? scene.lights[node.index].loc : SourceRef{};
+    case NodeKind::Group: return node.index < scene.groups.size() ? scene.groups[node.index].loc : SourceRef{};
+    case NodeKind::Csg: return node.index < scene.csgs.size() ? scene.csgs[node.index].loc : SourceRef{};
+  }
+  return {};
+}
 
 }  // namespace rts::render

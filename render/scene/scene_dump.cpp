@@ -314,7 +314,7 @@ void SceneDesc::dump(std::ostream& out) const {
         break;
       }
     }
-    out << where(n.loc) << '\n';
+    out << where(node_loc(*this, n)) << '\n';
     if (n.kind == NodeKind::Group)
       for (const Child& ch : groups[n.index].children)
         out << fmt::format("    child node {} transform {}{}\n", ch.node, mat(ch.transform), where(ch.loc));

@@ -20,25 +20,25 @@ inline NodeId add_shape(SceneDesc& s, ShapeGeometry g, MaterialId material = kNo
   shape.geometry = std::move(g);
   shape.material = material;
   s.shapes.push_back(std::move(shape));
-  s.nodes.push_back(Node{NodeKind::Shape, static_cast<uint32_t>(s.shapes.size() - 1), {}});
+  s.nodes.push_back(Node{NodeKind::Shape, static_cast<uint32_t>(s.shapes.size() - 1)});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
 inline NodeId add_light(SceneDesc& s, const LightDesc& l) {
   s.lights.push_back(l);
-  s.nodes.push_back(Node{NodeKind::Light, static_cast<uint32_t>(s.lights.size() - 1), {}});
+  s.nodes.push_back(Node{NodeKind::Light, static_cast<uint32_t>(s.lights.size() - 1)});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
 inline NodeId add_group(SceneDesc& s, std::vector<Child> children, MaterialId material = kNoId) {
   s.groups.push_back(GroupDesc{std::move(children), material});
-  s.nodes.push_back(Node{NodeKind::Group, static_cast<uint32_t>(s.groups.size() - 1), {}});
+  s.nodes.push_back(Node{NodeKind::Group, static_cast<uint32_t>(s.groups.size() - 1)});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
 inline NodeId add_csg(SceneDesc& s, CsgDesc block) {
   s.csgs.push_back(std::move(block));
-  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
+  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 

@@ -206,6 +206,23 @@ TEST_CASE("groups nest and carry their transforms; lights in groups are children
   CHECK(s.nodes[g.children[1].node].kind == NodeKind::Light);
 }
 
+TEST_CASE("every node's item keeps where it was written", "[eval]") {
+  // Nodes carry no location of their own (8 bytes each); node_loc reads the item's.
+  SceneDesc s = eval_text(
+      "sphere { radius = 1 }\n"
+      "  point_light { position = <0, 5, 0> }\n"
+      "group { box { min = <0, 0, 0>  max = <1, 1, 1> } }\n"
+      "   difference { sphere { radius = 1 } box { min = <0, 0, 0>  max = <1, 1, 1> } }\n");
+  REQUIRE(s.roots.size() == 4);
+  const uint32_t lines[] = {1, 2, 3, 4}, cols[] = {1, 3, 1, 4};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const SourceRef at = node_loc(s, s.nodes[s.roots[i].node]);
+    CHECK(at.line == lines[i]);
+    CHECK(at.col == cols[i]);
+  }
+  CHECK(node_loc(s, Node{NodeKind::Csg, 99}).line == 0);  // out of range: no location
+}
+
 TEST_CASE("materials: one value is one material; with derives new ones", "[eval][material]") {
   SceneDesc s = eval_text(
       "let ivory = material { color = rgb(0.9, 0.9, 0.8)  diffuse = 0.7  reflect = 0.2 }\n"

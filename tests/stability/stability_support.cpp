@@ -123,19 +123,19 @@ NodeId add_shape(SceneDesc& s, ShapeGeometry g, MaterialId material) {
   shape.geometry = std::move(g);
   shape.material = material;
   s.shapes.push_back(std::move(shape));
-  s.nodes.push_back(Node{NodeKind::Shape, static_cast<uint32_t>(s.shapes.size() - 1), {}});
+  s.nodes.push_back(Node{NodeKind::Shape, static_cast<uint32_t>(s.shapes.size() - 1)});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
 NodeId add_light(SceneDesc& s, const LightDesc& l) {
   s.lights.push_back(l);
-  s.nodes.push_back(Node{NodeKind::Light, static_cast<uint32_t>(s.lights.size() - 1), {}});
+  s.nodes.push_back(Node{NodeKind::Light, static_cast<uint32_t>(s.lights.size() - 1)});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
 NodeId add_group(SceneDesc& s, std::vector<Child> children) {
   s.groups.push_back(GroupDesc{std::move(children)});
-  s.nodes.push_back(Node{NodeKind::Group, static_cast<uint32_t>(s.groups.size() - 1), {}});
+  s.nodes.push_back(Node{NodeKind::Group, static_cast<uint32_t>(s.groups.size() - 1)});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 

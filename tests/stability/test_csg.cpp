@@ -32,7 +32,7 @@ NodeId block(SceneDesc& s, CsgOp op, std::vector<Child> kids, MaterialId m = kNo
   d.children = std::move(kids);
   d.material = m;
   s.csgs.push_back(std::move(d));
-  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1), {}});
+  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
