@@ -90,11 +90,17 @@ void check_output_writable(const std::string& out);
 int evaluate_scene(const RenderCommand& c, const EvalOptions& eval_in, DiagnosticSink& sink, Evaluated& out,
                    render::ProgressMode progress = render::ProgressMode::None);
 
+// Whether render_scene may take the evaluated scene: its shapes and graph are then released
+// once the world holds them (a large scene's peak without its description) and ev.scene is left
+// empty. Kept: the caller renders the same evaluation again (the watch mode's quick pass).
+enum class SceneAfterRender : uint8_t { Released, Kept };
+
 // Renders an evaluated scene and writes its images to `out`; `stats_out` receives the figures.
 // With `video`, the image goes to the video instead of a file (AOVs are refused earlier).
 int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, const std::string& out,
                  const render::OutputSpec& spec, DiagnosticSink& sink, render::RenderStats* stats_out,
-                 render::VideoWriter* video = nullptr, const Distribution* dist = nullptr);
+                 render::VideoWriter* video = nullptr, const Distribution* dist = nullptr,
+                 SceneAfterRender after = SceneAfterRender::Released);
 
 // A still over mpirun's ranks and/or with a checkpoint journal.
 int run_distributed(const RenderCommand& c, const CLI::App& cmd, const CommandContext& ctx, const std::string& out,

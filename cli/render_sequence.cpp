@@ -187,7 +187,7 @@ int run_watch(const RenderCommand& c, const CLI::App& cmd, const CommandContext&
       quick.samples = 1;
       quick.target_error = quick.time_limit = 0;
       const int scene_samples = std::exchange(ev.scene.settings.samples, 1);
-      render_scene(quick, cmd, ev, out, spec, sink, nullptr);
+      render_scene(quick, cmd, ev, out, spec, sink, nullptr, nullptr, nullptr, SceneAfterRender::Kept);
       ev.scene.settings.samples = scene_samples;
       superseded = watcher.changed();
     }

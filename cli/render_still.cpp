@@ -215,7 +215,7 @@ int evaluate_scene(const RenderCommand& c, const EvalOptions& eval_in, Diagnosti
 // With `video`, the image goes to the video instead of a file (AOVs are refused earlier).
 int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, const std::string& out,
                  const render::OutputSpec& spec, DiagnosticSink& sink, render::RenderStats* stats_out,
-                 render::VideoWriter* video, const Distribution* dist) {
+                 render::VideoWriter* video, const Distribution* dist, SceneAfterRender after) {
   render::RenderOptions opts;
   opts.threads = c.threads;
   if (cmd.count("--seed")) opts.seed = c.seed;
@@ -258,7 +258,8 @@ int render_scene(const RenderCommand& c, const CLI::App& cmd, Evaluated& ev, con
 
   try {
     if (!video && !dist) check_output_writable(out);
-    render::RenderResult result = render::render(ev.scene, opts);
+    render::RenderResult result = after == SceneAfterRender::Released ? render::render(std::move(ev.scene), opts)
+                                                                      : render::render(ev.scene, opts);
     if (dist && !dist->root()) return kExitOk;  // rank 0 writes the image
     print_warnings(result.warnings);
     result.stats.eval_seconds = ev.eval_seconds;

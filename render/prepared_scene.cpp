@@ -1,22 +1,65 @@
 #include "render/prepared_scene.hpp"
 
+#include <variant>
+
 namespace rts::render {
 
-// Only what is placed is built: textures no placed material uses are never loaded.
+namespace {
+// Frees a vector's block (clear() keeps it).
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+}  // namespace
+
 PreparedScene::PreparedScene(const SceneDesc& scene, bool specialize, std::size_t max_memory)
     : scene_(&scene), specialize_(specialize), max_memory_(max_memory) {
+  build(nullptr);
+}
+
+PreparedScene::PreparedScene(SceneDesc&& scene, bool specialize, std::size_t max_memory)
+    : owned_(std::make_unique<SceneDesc>(std::move(scene))), scene_(owned_.get()), specialize_(specialize),
+      max_memory_(max_memory) {
+  build(owned_.get());
+}
+
+// Only what is placed is built: textures no placed material uses are never loaded. Everything
+// that reads the shapes or the graph (the world's instances, the textures used, the shapes'
+// features, the shapes with something to say after the render) runs before the top-level BVH;
+// with `release_graph` (the scene taken), the graph and the placements are freed then.
+void PreparedScene::build(SceneDesc* release_graph) {
+  const SceneDesc& scene = *scene_;
   flat_ = flatten_scene(scene);
-  world_ = std::make_unique<World>(scene, flat_, specialize);
+  world_ = std::make_unique<World>(scene, flat_, specialize_, WorldBuild::BvhLater);
   lights_ = compile_lights(flat_.lights);
   std::vector<bool> used = used_textures(scene, flat_);
-  textures_ = compile_textures(scene, &used, max_memory);
+  textures_ = compile_textures(scene, &used, max_memory_);
   media_ = compile_media(scene, textures_);
+  shape_features_ = shape_features(scene, flat_);
+  instancing_ = !flat_.groups.empty();
+  for (const ShapeDesc& sd : scene.shapes)
+    std::visit(
+        [&](const auto& g) {
+          if constexpr (requires { after_render_warning(g); }) watched_.push_back(sd);
+        },
+        sd.geometry);
+  // Freed, not trimmed: the builder's references and nodes reuse those blocks (a trim here
+  // measured the same peak and a slower build: fresh pages faulted in again).
+  if (release_graph) {
+    release(release_graph->shapes);
+    release(release_graph->nodes);
+    release(release_graph->groups);
+    release(release_graph->csgs);
+    release(release_graph->roots);
+    flat_.keep_lights_only();
+  }
+  world_->build_bvh();
 }
 
 FeatureSet PreparedScene::features(const FeatureContext& context) const {
-  FeatureSet f = analyze_features(*scene_, flat_, context);
+  FeatureSet f = analyze_features(*scene_, shape_features_[context.max_depth > 0 ? 1 : 0], flat_.lights, context);
   if (world_->uses_bvh()) f.add(Feature::Bvh);
-  if (!flat_.groups.empty()) f.add(Feature::Instancing);
+  if (instancing_) f.add(Feature::Instancing);
   return f;
 }
 

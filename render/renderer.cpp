@@ -217,15 +217,17 @@ std::vector<double> channel_mean_variance(const std::vector<PixelEstimate>& est)
 
 namespace {
 
-// render() for a scene prepared beforehand (`given`) or here (null).
-RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, const RenderOptions& options) {
+// render() for a scene prepared beforehand (`given`) or here (null): from `scene_in`, or, when
+// `take` is set (the same scene), taking it (scene_in is not read once it is taken).
+RenderResult render_scene(const SceneDesc& scene_in, SceneDesc* take, const PreparedScene* given,
+                          const RenderOptions& options) {
   auto build_start = Clock::now();
   RenderResult result;
-  ResolvedSettings rs = resolve(scene, options, result.warnings);
+  ResolvedSettings rs = resolve(scene_in, options, result.warnings);
   Frame frame;
   // The batches' spread is the error estimate: none with one batch (1 spp).
   allocate_frame(result, rs.width, rs.height, parse_aovs(options.aovs),
-                 batch_count(rs.samples, options.target_error > 0.0, rs.sampler) >= 2, scene.settings.loc, frame);
+                 batch_count(rs.samples, options.target_error > 0.0, rs.sampler) >= 2, scene_in.settings.loc, frame);
   frame.normal_miss = options.normal_miss;
 
   // All parallel work (BVH builds, tiles) runs in one arena of --threads workers;
@@ -236,9 +238,14 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   tbb::task_arena arena(threads);
   PhaseProgress building(options.progress, "building the scene (flattening, BVH)");
   std::optional<PreparedScene> own;
-  if (!given) arena.execute([&] { own.emplace(scene, options.specialize, options.max_memory); });
+  if (!given)
+    arena.execute([&] {
+      if (take) own.emplace(std::move(*take), options.specialize, options.max_memory);
+      else own.emplace(scene_in, options.specialize, options.max_memory);
+    });
   building.done();
   const PreparedScene& prep = given ? *given : *own;
+  const SceneDesc& scene = prep.scene();
   const FeatureSet features = prep.features(FeatureContext{rs.samples, rs.max_depth, !options.aovs.empty()});
   const World& world = prep.world();
   // The lights for this render's samples per pixel: area lights written without `samples`
@@ -555,7 +562,7 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
   stats.render_seconds = seconds_since(render_start);
   summarise_error(result.color, stats.pixels, err);
   // Shapes that learn something while tracing (an isosurface's real gradient) say it now.
-  for (const ShapeDesc& sd : scene.shapes)
+  for (const ShapeDesc& sd : prep.watched_shapes())
     std::visit(
         [&](const auto& g) {
           if constexpr (requires { after_render_warning(g); })
@@ -567,10 +574,16 @@ RenderResult render_scene(const SceneDesc& scene, const PreparedScene* given, co
 
 }  // namespace
 
-RenderResult render(const SceneDesc& scene, const RenderOptions& options) { return render_scene(scene, nullptr, options); }
+RenderResult render(const SceneDesc& scene, const RenderOptions& options) {
+  return render_scene(scene, nullptr, nullptr, options);
+}
+
+RenderResult render(SceneDesc&& scene, const RenderOptions& options) {
+  return render_scene(scene, &scene, nullptr, options);
+}
 
 RenderResult render(const PreparedScene& prepared, const RenderOptions& options) {
-  return render_scene(prepared.scene(), &prepared, options);
+  return render_scene(prepared.scene(), nullptr, &prepared, options);
 }
 
 PreparedScene prepare_scene(const SceneDesc& scene, const RenderOptions& options) {

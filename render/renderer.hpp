@@ -75,6 +75,10 @@ struct RenderOptions {
 
 // Throws RenderError (located where possible) for unreadable textures, oversize images...
 RenderResult render(const SceneDesc& scene, const RenderOptions& options);
+// The same for a scene rendered once: it is taken, and its shapes and graph are released once
+// the world holds them, before the top-level BVH is built (PreparedScene's taking constructor):
+// a large scene's peak memory without its description. `scene` is left empty.
+RenderResult render(SceneDesc&& scene, const RenderOptions& options);
 // The same for a scene prepared beforehand (render/prepared_scene.hpp: built once for many
 // renders); it was prepared with its own --no-specialize and --max-memory, which win over
 // `options`' ones.

@@ -100,6 +100,13 @@ struct FlatScene {
   }
   // Frees what only building needs (the index of distinct linear parts).
   void built() { linear_lookup.release(); }
+  // Frees everything but the lights, once the world holds the placements (PreparedScene of a
+  // scene it took: the shapes' placements are 16 bytes and more each).
+  void keep_lights_only() {
+    std::vector<LightDesc> kept = std::move(lights);
+    *this = FlatScene{};
+    lights = std::move(kept);
+  }
 
  private:
   uint32_t linear_index(const Mat4& to_world) {

@@ -85,7 +85,7 @@ bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, con
   return bounds.finite();                    // NaN/inf coordinates: never hit
 }
 
-World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
+World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, WorldBuild build) {
   meshes_.resize(scene.meshes.size());
   std::vector<Instance> bounded, unbounded, parts;
   std::vector<AABB> boxes;
@@ -151,7 +151,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   group_linear_index_.release();  // every placement is made: free the indexes before the BVH build
   instance_linear_index_.release();
   use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
-  if (use_bvh_) bvh_ = build_bvh(std::move(boxes));
+  if (use_bvh_) pending_boxes_ = std::move(boxes);
   instances_ = std::move(bounded);
   for (Instance& p : unbounded) {
     planes_.push_back(static_cast<uint32_t>(instances_.size()));
@@ -174,6 +174,14 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize) {
   csg_parts_ = parts.size();
   // Group and CSG parts are reached through their placement or block only: never skipped.
   if (any_shadowless) shadowless_.resize(instances_.size(), 0);
+  if (build == WorldBuild::Whole) build_bvh();
+}
+
+void World::build_bvh() {
+  // The BVH's leaves index instances_[0, bounded_count_), which the rest of the assembly leaves
+  // in place.
+  if (use_bvh_ && !pending_boxes_.empty()) bvh_ = render::build_bvh(std::move(pending_boxes_));
+  pending_boxes_ = {};
 }
 
 namespace {

@@ -167,10 +167,18 @@ struct WorldMemory {
   std::size_t instances = 0, transforms = 0, shapes = 0, bvh = 0, meshes = 0;
 };
 
+// How a World is built: whole, or its instances first and the top-level BVH when asked
+// (World::build_bvh), so that the caller can release the scene description in between and the
+// build's peak does not hold it (PreparedScene does, for a scene it owns).
+enum class WorldBuild : uint8_t { Whole, BvhLater };
+
 class World {
  public:
-  // `specialize`: a scene of at most kMaxObjectsWithoutBvh bounded objects gets no BVH.
-  World(const SceneDesc& scene, const FlatScene& flat, bool specialize = true);
+  // `specialize`: a scene of at most kMaxObjectsWithoutBvh bounded objects gets no BVH. Once
+  // built, the World reads neither `scene` nor `flat` (it holds copies of what it traces).
+  World(const SceneDesc& scene, const FlatScene& flat, bool specialize = true, WorldBuild build = WorldBuild::Whole);
+  // Builds the top-level BVH over the instances (WorldBuild::BvhLater); once, before tracing.
+  void build_bvh();
 
   // Closest hit; with `transmissive_only`, opaque instances are ignored; with `shadow_ray`,
   // so are the objects that cast no shadow (casts_shadow = false).
@@ -335,6 +343,7 @@ class World {
   BitInterner<InstanceLinear> instance_linear_index_;
   std::vector<uint32_t> planes_;     // instance indices of unbounded planes
   BVH bvh_;
+  std::vector<AABB> pending_boxes_;  // the bounded instances' boxes, until build_bvh()
   std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded
   bool use_bvh_ = true;
   bool has_transmissive_ = false;

@@ -44,7 +44,7 @@ uint32_t World::group_accel(const SceneDesc& scene, const std::vector<bool>& ins
   g.count = static_cast<uint32_t>(mine.size());
   for (const AABB& b : boxes) g.bounds.extend(b);
   g.use_bvh = !(specialize && mine.size() <= kMaxObjectsWithoutBvh);
-  if (g.use_bvh) g.bvh = build_bvh(std::move(boxes));
+  if (g.use_bvh) g.bvh = render::build_bvh(std::move(boxes));
   parts.insert(parts.end(), mine.begin(), mine.end());
   groups_.push_back(std::move(g));
   built[group] = static_cast<uint32_t>(groups_.size() - 1);

@@ -2,6 +2,8 @@
 
 #include <array>
 #include <iterator>
+#include <optional>
+#include <variant>
 
 #include "render/scene/csg_leaves.hpp"
 
@@ -198,22 +200,41 @@ void for_each_instanced_group(const FlatScene& flat, F&& f) {
 }
 }  // namespace
 
-FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const FeatureContext& ctx) {
-  FeatureSet f;
+std::array<FeatureSet, 2> shape_features(const SceneDesc& scene, const FlatScene& flat) {
+  std::array<FeatureSet, 2> f;
   // The default material (no material given) has the MaterialDesc defaults.
   const MaterialDesc default_material;
-  FeatureProbe probe{scene, ctx};
+  // A Shape rule reads the context's max_depth alone (FeatureProbe::secondary_possible): the
+  // one part of it given here, both ways.
+  const FeatureContext contexts[2] = {{0, 0, false}, {0, 1, false}};
+  // What a Shape rule sees of a shape: its kind, its material and its mesh (vertex materials).
+  // Placed shapes mostly repeat the one before (a loop's spheres of one material), which then
+  // adds nothing: a million spheres cost a million comparisons, not ten million rule calls.
+  struct Seen {
+    std::size_t kind;
+    MaterialId material;
+    MeshId mesh;
+    bool operator==(const Seen&) const = default;
+  };
+  std::optional<Seen> last;
   auto add_shape = [&](const ShapeDesc& shape, MaterialId material) {
-    f.add(shape_feature(shape.geometry.index()));
-    probe.shape = &shape;
-    probe.material = material < scene.materials.size() ? &scene.materials[material] : &default_material;
-    apply_rules(Scope::Shape, probe, f);
-    // A material chosen by pattern (its pattern is a texture of its own): what each choice uses.
-    if (material < scene.materials.size() && scene.materials[material].choice_count > 0)
-      for_each_material_choice(scene.materials, material, [&](MaterialId, const MaterialDesc& m) {
-        probe.material = &m;
-        apply_rules(Scope::Shape, probe, f);
-      });
+    const MeshRef* mesh = std::get_if<MeshRef>(&shape.geometry);
+    const Seen seen{shape.geometry.index(), material, mesh ? mesh->mesh : kNoId};
+    if (last == seen) return;
+    last = seen;
+    for (int s = 0; s < 2; ++s) {
+      f[s].add(shape_feature(shape.geometry.index()));
+      FeatureProbe probe{scene, contexts[s]};
+      probe.shape = &shape;
+      probe.material = material < scene.materials.size() ? &scene.materials[material] : &default_material;
+      apply_rules(Scope::Shape, probe, f[s]);
+      // A material chosen by pattern (its pattern is a texture of its own): what each choice uses.
+      if (material < scene.materials.size() && scene.materials[material].choice_count > 0)
+        for_each_material_choice(scene.materials, material, [&](MaterialId, const MaterialDesc& m) {
+          probe.material = &m;
+          apply_rules(Scope::Shape, probe, f[s]);
+        });
+    }
   };
   for (std::size_t i = 0; i < flat.shapes.size(); ++i) add_shape(scene.shapes[flat.shapes[i].shape], flat.material(scene, i));
   // An instanced group's shapes, once per group (not per placement; such a group holds no
@@ -224,12 +245,17 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
   // What a CSG block shows is its leaves, each with its own material or the block's (or the
   // enclosing group's).
   for (const FlatCsg& fc : flat.csgs) {
-    f.add(Feature::Csg);
+    for (FeatureSet& set : f) set.add(Feature::Csg);
     for_each_csg_leaf(scene, fc.csg, add_shape, fc.inherited);
   }
-  probe.shape = nullptr;
-  probe.material = nullptr;
-  for (const LightDesc& l : flat.lights) {
+  return f;
+}
+
+FeatureSet analyze_features(const SceneDesc& scene, const FeatureSet& shapes, const std::vector<LightDesc>& lights,
+                            const FeatureContext& ctx) {
+  FeatureSet f = shapes;
+  FeatureProbe probe{scene, ctx};
+  for (const LightDesc& l : lights) {
     if (!light_emits(l)) continue;  // sends nothing: costs nothing
     probe.light = &l;
     apply_rules(Scope::Light, probe, f);
@@ -239,6 +265,10 @@ FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const
   for (const FeatureRule& r : kRules)
     if (r.only_with != Feature::Count && !f.has(r.only_with)) f.remove(r.feature);
   return f;
+}
+
+FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const FeatureContext& ctx) {
+  return analyze_features(scene, shape_features(scene, flat)[ctx.max_depth > 0 ? 1 : 0], flat.lights, ctx);
 }
 
 std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {

@@ -5,6 +5,7 @@
 // `--stats` reports it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -113,6 +114,13 @@ bool reflects(const MaterialDesc& m);
 // The features the placed scene uses. `bvh` is decided by the World (see World::uses_bvh) and
 // added by the caller.
 FeatureSet analyze_features(const SceneDesc& scene, const FlatScene& flat, const FeatureContext& ctx);
+// The same in two steps, so that a prepared scene reads its shapes once and may then release
+// them: what the placed shapes use (their kinds, the Shape rules on their materials, CSG),
+// which depends on the render only through whether secondary rays are possible (max_depth > 0:
+// index 1, else 0); then that with the lights' and the scene's rules for a render's context.
+std::array<FeatureSet, 2> shape_features(const SceneDesc& scene, const FlatScene& flat);
+FeatureSet analyze_features(const SceneDesc& scene, const FeatureSet& shapes, const std::vector<LightDesc>& lights,
+                            const FeatureContext& ctx);
 
 // Which textures placed materials refer to (by TextureId): the others are never loaded.
 std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat);

@@ -10,6 +10,7 @@
 #include "render/shade/integrator.hpp"
 #include "render/renderer.hpp"
 #include "render/accel/world.hpp"
+#include "render/prepared_scene.hpp"
 #include "scene_fixture.hpp"
 
 namespace rts::render {
@@ -195,6 +196,51 @@ TEST_CASE("specialised paths give the generic path's image", "[leave_out]") {
     CHECK(fast.stats.rays.shadow == generic.stats.rays.shadow);
     CHECK(same_pixels(fast.color, generic.color));
   }
+}
+
+TEST_CASE("a taken scene is prepared as a borrowed one, its graph released before the BVH", "[leave_out]") {
+  // What the features, the world and the image of a scene taken by PreparedScene (render() of
+  // a scene rendered once) read of its shapes is read before they are freed.
+  SceneDesc s = diffuse_scene();
+  MaterialDesc mirror;
+  mirror.reflect = Color(0.8);
+  mirror.roughness = 0.1;
+  place(s, add_shape(s, Sphere{Vec3(1, 1.2, -1), 0.6}, add_material(s, mirror)));
+  CsgDesc cut;
+  cut.op = CsgOp::Difference;
+  cut.children = {Child{add_shape(s, Box{Vec3(-1), Vec3(1)}), Mat4(1.0), {}},
+                  Child{add_shape(s, Sphere{Vec3(0), 1.2}), Mat4(1.0), {}}};
+  s.csgs.push_back(cut);
+  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
+  place(s, static_cast<NodeId>(s.nodes.size() - 1), translate(Vec3(-2, 1, 1)));
+  const PreparedScene borrowed(s, true, 0);
+  const PreparedScene taken(SceneDesc(s), true, 0);
+  CHECK(borrowed.scene().shapes.size() == s.shapes.size());
+  CHECK(taken.scene().shapes.empty());
+  CHECK(taken.scene().nodes.empty());
+  CHECK(taken.scene().csgs.empty());
+  CHECK(taken.scene().roots.empty());
+  CHECK(taken.flat().shapes.empty());
+  CHECK(taken.flat().lights.size() == borrowed.flat().lights.size());
+  CHECK(taken.scene().materials.size() == s.materials.size());
+  CHECK(taken.world().instance_count() == borrowed.world().instance_count());
+  CHECK(taken.world().bvh_nodes() == borrowed.world().bvh_nodes());
+  for (int depth : {0, 5}) {
+    const FeatureContext ctx{2, depth, false};
+    const FeatureSet expected = analyze_features(s, flatten_scene(s), ctx);
+    CHECK(borrowed.features(ctx).used() == taken.features(ctx).used());
+    FeatureSet from_scene = expected;
+    if (borrowed.world().uses_bvh()) from_scene.add(Feature::Bvh);
+    CHECK(taken.features(ctx).used() == from_scene.used());
+  }
+  CHECK(taken.features(FeatureContext{2, 5, false}).has(Feature::Glossiness));
+  CHECK(taken.features(FeatureContext{2, 5, false}).has(Feature::Csg));
+  CHECK_FALSE(taken.features(FeatureContext{2, 0, false}).has(Feature::Reflection));
+  RenderOptions o;
+  o.threads = 1;
+  CHECK(same_pixels(render(borrowed, o).color, render(taken, o).color));
+  SceneDesc once = s;
+  CHECK(same_pixels(render(std::move(once), o).color, render(s, o).color));
 }
 
 TEST_CASE("one shadow traversal collects glass crossings and stops at opaque hits", "[leave_out]") {

@@ -8,6 +8,7 @@
 #include "render/geometry/shapes/lathe.hpp"
 #include "render/geometry/shapes/prism.hpp"
 #include "render/geometry/shapes/sor.hpp"
+#include "render/renderer.hpp"
 
 using namespace rts;
 using rts::test::eval_diagnostic;
@@ -79,6 +80,33 @@ TEST_CASE("an isosurface warns when max_gradient is below the slopes it met", "[
   CHECK(w->find("above max_gradient 1") != std::string::npos);
   CHECK(iso.monitor->max_seen.load() <= 4.0 + 1e-9);
   CHECK(iso.monitor->max_seen.load() > 3.0);
+}
+
+TEST_CASE("the max_gradient warning comes after a render, the scene borrowed or taken", "[shapes]") {
+  // A scene rendered once is taken and its shapes released before the BVH build; the warning
+  // is read from the prepared scene's own copy of the isosurface, whose monitor the traced
+  // one shares.
+  const std::string text =
+      "settings { width = 24  height = 18 }\n"
+      "camera { position = <0, 0, -4>  look_at = <0, 0, 0> }\n"
+      "point_light { position = <2, 3, -4> }\n"
+      "macro steep(p) { return 4 * (length(p) - 0.5) }\n"
+      "isosurface { function = steep  max_gradient = 1 }\n";
+  render::RenderOptions o;
+  o.threads = 1;
+  auto warned = [](const render::RenderResult& r) {
+    for (const render::Warning& w : r.warnings)
+      if (w.message.find("above max_gradient 1") != std::string::npos) return w.where.line == 5;
+    return false;
+  };
+  const render::SceneDesc borrowed = eval_text(text);
+  render::SceneDesc taken = eval_text(text);
+  const render::RenderResult a = render::render(borrowed, o);
+  const render::RenderResult b = render::render(std::move(taken), o);
+  CHECK(warned(a));
+  CHECK(warned(b));
+  CHECK(a.color.rgb == b.color.rgb);
+  CHECK_FALSE(borrowed.shapes.empty());  // borrowed: left as it was
 }
 
 TEST_CASE("an isosurface of a distance function does not warn: rounding over a last, one-ulp step is no slope",
