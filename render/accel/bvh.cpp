@@ -244,6 +244,20 @@ BVH build_bvh(std::vector<AABB> primitive_bounds) {
   return bvh;
 }
 
+BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of) {
+  if (count == 0) return BVH{};
+  bool compact = true;
+  for (std::size_t i = 0; i < count && compact; ++i) compact = float_exact(box_of(i));
+  auto made = [&]<class PrimRef>(PrimRef) {
+    std::vector<PrimRef> refs(count);
+    for (std::size_t i = 0; i < count; ++i) refs[i] = PrimRef(box_of(i), static_cast<uint32_t>(i));
+    return build_from(std::move(refs));
+  };
+  BVH bvh = compact ? made(CompactRef{}) : made(WideRef{});
+  release_free_memory(count);  // the builder's references
+  return bvh;
+}
+
 BVH build_bvh(const std::vector<FloatBox>& primitive_bounds) {
   return build_bvh(primitive_bounds.size(), [&](std::size_t i) { return primitive_bounds[i]; });
 }

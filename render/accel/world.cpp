@@ -88,7 +88,6 @@ bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, con
 World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, WorldBuild build) {
   meshes_.resize(scene.meshes.size());
   std::vector<Instance> bounded, unbounded, parts;
-  std::vector<AABB> boxes;
   // Whether each bounded and unbounded instance casts no shadow, kept only when one does not.
   bool any_shadowless = !flat.shadowless.empty();
   for (const FlatCsg& fc : flat.csgs) any_shadowless = any_shadowless || !fc.casts_shadow;
@@ -98,11 +97,10 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
     to.push_back(inst);
     if (any_shadowless) flags.push_back(casts ? 0 : 1);
   };
-  // Sized once: grown by doubling, the box array (48 bytes per object) and the instances left
-  // their outgrown blocks resident in the heap through the BVH build.
+  // Sized once: grown by doubling, the instances left their outgrown blocks resident in the
+  // heap through the BVH build.
   const std::size_t objects = flat.shapes.size() + flat.groups.size() + flat.csgs.size();
   bounded.reserve(objects);
-  boxes.reserve(objects);
   transforms_.reserve(flat.transforms.size());
   for (std::size_t i = 0; i < flat.shapes.size(); ++i) {
     const FlatShape& fs = flat.shapes[i];
@@ -117,7 +115,6 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
       continue;
     }
     keep(bounded, bounded_shadowless, inst, flat.casts_shadow(i));
-    boxes.push_back(world_bounds);
   }
   // Instanced groups: each group's contents built once, each placement one instance.
   std::vector<Instance> group_parts;
@@ -129,7 +126,6 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
       AABB world_bounds;
       if (!add_group_instance(gi, fg.to_world, inst, world_bounds)) continue;
       keep(bounded, bounded_shadowless, inst, fg.casts_shadow);
-      boxes.push_back(world_bounds);
     }
   }
   // CSG blocks: traced in world space through their leaves' own transforms (the block has
@@ -144,14 +140,12 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
       keep(unbounded, unbounded_shadowless, inst, fc.casts_shadow);
     } else {
       keep(bounded, bounded_shadowless, inst, fc.casts_shadow);
-      boxes.push_back(world_bounds);
     }
   }
   bounded_count_ = bounded.size();
   group_linear_index_.release();  // every placement is made: free the indexes before the BVH build
   instance_linear_index_.release();
   use_bvh_ = !(specialize && bounded_count_ <= kMaxObjectsWithoutBvh);
-  if (use_bvh_) pending_boxes_ = std::move(boxes);
   instances_ = std::move(bounded);
   for (Instance& p : unbounded) {
     planes_.push_back(static_cast<uint32_t>(instances_.size()));
@@ -178,10 +172,30 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
 }
 
 void World::build_bvh() {
+  if (!use_bvh_ || bvh_built_) return;
+  bvh_built_ = true;
   // The BVH's leaves index instances_[0, bounded_count_), which the rest of the assembly leaves
-  // in place.
-  if (use_bvh_ && !pending_boxes_.empty()) bvh_ = render::build_bvh(std::move(pending_boxes_));
-  pending_boxes_ = {};
+  // in place. Their boxes are made again from the world's own arrays, straight into the
+  // builder's references: no box array lives beside the scene description while the instances
+  // are made (48 bytes per object of that peak), nor beside the references.
+  bvh_ = render::build_bvh(bounded_count_, [&](std::size_t i) { return world_bounds(instances_[i]); });
+}
+
+AABB World::world_bounds(const Instance& inst) const {
+  // The same values as the instance's box when it was made: the same object box, and the
+  // matrix rebuilt from exactly the columns kept (transform_bounds reads its x, y, z rows only).
+  if (inst.kind == kCsgKind) {
+    const Csg& c = csgs_[inst.index];
+    return c.tree.bounds(c.leaf_bounds);
+  }
+  if (inst.kind == kGroupKind) {
+    const AABB& b = groups_[inst.index].bounds;
+    if (inst.transform == kNoId) return b;
+    const GroupTransform& xf = group_transforms_[inst.transform];
+    return transform_bounds(affine(group_linears_[xf.linear].to_world, xf.to_world_t), b);
+  }
+  const AABB object = object_bounds(inst, std::make_index_sequence<kShapeKindCount>{});
+  return inst.transform == kNoId ? object : transform_bounds(instance_to_world(transforms_[inst.transform]), object);
 }
 
 namespace {

@@ -247,6 +247,20 @@ class World {
   void set_csg_pruning(bool on) { csg_pruning_ = on; }
 
  private:
+  // A bounded instance's world box (the top-level BVH's input).
+  AABB world_bounds(const Instance& inst) const;
+  template <std::size_t... I>
+  AABB object_bounds(const Instance& inst, std::index_sequence<I...>) const {
+    AABB b;
+    (void)((inst.kind == I && (b = kind_bounds<std::variant_alternative_t<I, ShapeGeometry>>(inst), true)) || ...);
+    return b;
+  }
+  template <class T>
+  AABB kind_bounds(const Instance& inst) const {
+    if constexpr (std::is_same_v<T, MeshRef>) return meshes_[inst.index]->bounds();
+    else if constexpr (ShapeTraits<T>::kInfo.bounded) return bounds(shape<T>(inst.index));
+    else return AABB{};  // unbounded kinds are never in the BVH
+  }
   Ray object_ray(const Instance& inst, const Ray& world_ray) const;
   // The traversals behind intersect, occluded and shadow_crossings; Filter::kSkipShadowless:
   // the instances flagged in shadowless_ are not tested (only scenes that have some pay).
@@ -343,7 +357,7 @@ class World {
   BitInterner<InstanceLinear> instance_linear_index_;
   std::vector<uint32_t> planes_;     // instance indices of unbounded planes
   BVH bvh_;
-  std::vector<AABB> pending_boxes_;  // the bounded instances' boxes, until build_bvh()
+  bool bvh_built_ = false;
   std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded
   bool use_bvh_ = true;
   bool has_transmissive_ = false;

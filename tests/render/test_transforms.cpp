@@ -63,6 +63,42 @@ TEST_CASE("instances placed by translation share one linear part and keep their 
   }
 }
 
+TEST_CASE("the top-level BVH is built from boxes equal to the ones made with the instances", "[transforms]") {
+  // World::build_bvh makes each instance's box again from the world's own arrays (the shape,
+  // the matrix rebuilt from the columns kept): the tree must be the one the boxes computed from
+  // the flattened scene give, node for node.
+  SceneDesc s;
+  for (int i = 0; i < 60; ++i) {
+    const Mat4 place_at = translate(Vec3(0.37 * i, -1e-3 * i * i, 5.0 - i)) *
+                          rotate_deg(7.0 * i, glm::normalize(Vec3(1, i % 3, 2))) * scale(Vec3(1.0 + 0.01 * i, 0.5, 2.0));
+    if (i % 3 == 0) place(s, add_shape(s, Sphere{Vec3(0.1 * i, 0, 0), 0.3}), place_at);
+    else if (i % 3 == 1) place(s, add_shape(s, Box{Vec3(-0.2), Vec3(0.25)}), translate(Vec3(i, 2.0, -0.0)));
+    else place(s, add_shape(s, Sphere{Vec3(i, 1e6, -3), 0.5}));
+  }
+  const FlatScene flat = flatten_scene(s);
+  std::vector<AABB> boxes;
+  for (const FlatShape& fs : flat.shapes) {
+    const AABB object = std::visit([](const auto& g) -> AABB {
+      if constexpr (requires { bounds(g); }) return bounds(g);
+      else return AABB{};
+    }, s.shapes[fs.shape].geometry);
+    const Mat4 m = flat.to_world(fs);
+    boxes.push_back(m == Mat4(1.0) ? object : transform_bounds(m, object));
+  }
+  const BVH expected = build_bvh(boxes);
+  const World w(s, flat, false);
+  const BVH& got = w.top_level();
+  REQUIRE(got.nodes.size() == expected.nodes.size());
+  CHECK(got.order == expected.order);
+  for (std::size_t i = 0; i < got.nodes.size(); ++i) {
+    const BVHNode &a = got.nodes[i], &b = expected.nodes[i];
+    CHECK(std::memcmp(a.lo, b.lo, sizeof a.lo) == 0);
+    CHECK(std::memcmp(a.hi, b.hi, sizeof a.hi) == 0);
+    CHECK(a.offset == b.offset);
+    CHECK(a.count == b.count);
+  }
+}
+
 TEST_CASE("a child's transform gives back its matrix bit for bit", "[transforms]") {
   // ChildTransform keeps a translation as its offset alone and anything else whole; either way
   // the matrix read back is the one given, down to the sign of a zero.
