@@ -5,10 +5,10 @@
 namespace rts::render {
 
 namespace {
-// Frees a vector's block (clear() keeps it).
-template <class T>
-void release(std::vector<T>& v) {
-  std::vector<T>().swap(v);
+// Frees a container's blocks (a vector's clear() keeps its block).
+template <class Container>
+void release(Container& c) {
+  Container().swap(c);
 }
 }  // namespace
 

@@ -24,6 +24,7 @@
 #include <glm/glm.hpp>
 
 #include "render/scene/boxed.hpp"
+#include "render/scene/chunked_vector.hpp"
 #include "render/scene/pattern_desc.hpp"
 #include "render/scene/sampler_kind.hpp"
 #include "render/scene/source_ref.hpp"
@@ -626,7 +627,9 @@ struct SceneDesc {
   std::vector<MaterialDesc> materials;
   std::vector<MediumDesc> media;
   std::vector<std::shared_ptr<const MeshData>> meshes;
-  std::vector<ShapeDesc> shapes;
+  // Grown by chunks (chunked_vector.hpp: a vector's doubling held two copies of the largest
+  // array at the end of evaluation). Nothing needs the shapes contiguous.
+  ChunkedVector<ShapeDesc> shapes;
   std::vector<LightDesc> lights;
   std::vector<GroupDesc> groups;
   std::vector<CsgDesc> csgs;
