@@ -1,10 +1,22 @@
 #include "render/prepared_scene.hpp"
 
+#include <array>
+#include <utility>
 #include <variant>
 
 namespace rts::render {
 
 namespace {
+// By shape kind: whether the kind has something to say after the render (after_render_warning).
+template <class T>
+constexpr bool kWatched = requires(const T& g) { after_render_warning(g); };
+template <std::size_t... I>
+constexpr std::array<bool, sizeof...(I)> watched_kinds(std::index_sequence<I...>) {
+  return {kWatched<std::variant_alternative_t<I, ShapeGeometry>>...};
+}
+constexpr auto kWatchedKinds = watched_kinds(std::make_index_sequence<std::variant_size_v<ShapeGeometry>>{});
+static_assert(kWatchedKinds[kPrimKind<Isosurface>], "an isosurface warns after the render");
+
 // Frees a container's blocks (a vector's clear() keeps its block).
 template <class Container>
 void release(Container& c) {
@@ -38,11 +50,7 @@ void PreparedScene::build(SceneDesc* release_graph) {
   shape_features_ = shape_features(scene, flat_);
   instancing_ = !flat_.groups.empty();
   for (const ShapeDesc& sd : scene.shapes)
-    std::visit(
-        [&](const auto& g) {
-          if constexpr (requires { after_render_warning(g); }) watched_.push_back(sd);
-        },
-        sd.geometry);
+    if (kWatchedKinds[sd.geometry.index()]) watched_.push_back(sd);
   // Freed, not trimmed: the builder's references and nodes reuse those blocks (a trim here
   // measured the same peak and a slower build: fresh pages faulted in again).
   if (release_graph) {

@@ -280,8 +280,11 @@ std::vector<bool> used_textures(const SceneDesc& scene, const FlatScene& flat) {
     for_each_texture(m, [&](TextureId t) { if (t < used.size()) used[t] = true; });
     use_medium(m.medium);
   };
+  // Placed shapes mostly show the material of the shape before them, which adds nothing.
+  MaterialId last = kNoId;
   auto use = [&](const ShapeDesc&, MaterialId id) {
-    if (id >= scene.materials.size()) return;
+    if (id >= scene.materials.size() || id == last) return;
+    last = id;
     use_material(id, scene.materials[id]);  // a chooser's pattern
     if (scene.materials[id].choice_count > 0) for_each_material_choice(scene.materials, id, use_material);
   };
