@@ -223,39 +223,35 @@ BVH build_from(std::vector<PrimRef> refs) {
   return bvh;
 }
 
-// Takes the boxes and frees them once the references hold them (before the nodes are made).
-template <class PrimRef>
-BVH build_with(std::vector<AABB> primitive_bounds) {
-  std::vector<PrimRef> refs(primitive_bounds.size());
-  for (std::size_t i = 0; i < refs.size(); ++i) refs[i] = PrimRef(primitive_bounds[i], static_cast<uint32_t>(i));
-  std::vector<AABB>().swap(primitive_bounds);
-  return build_from(std::move(refs));
-}
-
-}  // namespace
-
-BVH build_bvh(std::vector<AABB> primitive_bounds) {
-  if (primitive_bounds.empty()) return BVH{};
-  const std::size_t count = primitive_bounds.size();
-  bool compact = std::all_of(primitive_bounds.begin(), primitive_bounds.end(), float_exact);
-  BVH bvh = compact ? build_with<CompactRef>(std::move(primitive_bounds))
-                    : build_with<WideRef>(std::move(primitive_bounds));
-  release_free_memory(count);  // the builder's references
-  return bvh;
-}
-
-BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of) {
+// The tree over `count` boxes (box_of(i) called twice each: once to see whether every box is
+// float-exact, which picks the reference layout, once into the references); `refs_made` runs
+// once the references hold every box (the array overload frees its boxes there).
+template <class BoxOf>
+BVH build_over(std::size_t count, const BoxOf& box_of, const std::function<void()>& refs_made = {}) {
   if (count == 0) return BVH{};
   bool compact = true;
   for (std::size_t i = 0; i < count && compact; ++i) compact = float_exact(box_of(i));
   auto made = [&]<class PrimRef>(PrimRef) {
     std::vector<PrimRef> refs(count);
     for (std::size_t i = 0; i < count; ++i) refs[i] = PrimRef(box_of(i), static_cast<uint32_t>(i));
+    if (refs_made) refs_made();
     return build_from(std::move(refs));
   };
   BVH bvh = compact ? made(CompactRef{}) : made(WideRef{});
   release_free_memory(count);  // the builder's references
   return bvh;
+}
+
+}  // namespace
+
+BVH build_bvh(std::vector<AABB> primitive_bounds) {
+  return build_over(
+      primitive_bounds.size(), [&](std::size_t i) -> const AABB& { return primitive_bounds[i]; },
+      [&] { std::vector<AABB>().swap(primitive_bounds); });
+}
+
+BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of) {
+  return build_over(count, box_of);
 }
 
 BVH build_bvh(const std::vector<FloatBox>& primitive_bounds) {

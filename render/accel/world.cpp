@@ -71,8 +71,7 @@ bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, con
     inst.transmissive = t.r > 0.0 || t.g > 0.0 || t.b > 0.0;
     has_transmissive_ = has_transmissive_ || inst.transmissive;
   }
-  bool identity = is_identity(to_world);
-  if (!identity) {
+  if (!is_identity(to_world)) {
     double det = glm::determinant(glm::dmat3(to_world));
     if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) return false;
     inst.transform = add_transform(to_world);
@@ -81,7 +80,7 @@ bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, con
   add_geometry(scene, shape, inst, object_bounds, unbounded);
   if (unbounded) return true;
   if (!object_bounds.valid()) return false;  // empty mesh, nothing to hit
-  bounds = identity ? object_bounds : transform_bounds(to_world, object_bounds);
+  bounds = world_bounds(inst);               // as the BVH build will make it again
   return bounds.finite();                    // NaN/inf coordinates: never hit
 }
 

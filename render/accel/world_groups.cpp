@@ -71,7 +71,7 @@ bool World::add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst
   xf.to_object_t = object_map[3];
   inst.transform = static_cast<uint32_t>(group_transforms_.size());
   group_transforms_.push_back(xf);
-  bounds = transform_bounds(to_world, group_bounds);
+  bounds = world_bounds(inst);  // as the BVH build will make it again
   return bounds.finite();
 }
 
