@@ -44,7 +44,7 @@ bool Placement::to_world(const render::Child& c, SourceLoc loc) {
 }
 
 void Placement::record(uint32_t node, ObjectCount count) {
-  if (node_counts_.size() <= node) node_counts_.resize(std::size_t(node) + 1);
+  node_counts_.grow_to(std::size_t(node) + 1);
   node_counts_[node] = count;
 }
 

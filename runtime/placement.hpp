@@ -74,7 +74,7 @@ class Placement {
   std::vector<render::Child>* target_ = nullptr;  // null: the world
   bool allowed_ = true;
   std::size_t placements_ = 0;
-  std::vector<ObjectCount> node_counts_;  // by NodeId
+  render::ChunkedVector<ObjectCount> node_counts_;  // by NodeId (by chunks: one per object)
   ObjectCount world_;                     // placed in the world, groups expanded
   std::atomic<uint64_t>* published_ = nullptr;  // EvalOptions::placed
 };

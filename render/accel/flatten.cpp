@@ -115,7 +115,7 @@ std::vector<bool> instanced_groups(const SceneDesc& scene) {
   // Placements of each group: Child entries naming it (the world's and groups'; a group inside
   // a CSG block is part of that block's tree).
   std::vector<uint32_t> placed(n, 0);
-  auto count = [&](const std::vector<Child>& children) {
+  auto count = [&](const auto& children) {
     for (const Child& c : children)
       if (c.node < scene.nodes.size() && scene.nodes[c.node].kind == NodeKind::Group &&
           scene.nodes[c.node].index < n && placed[scene.nodes[c.node].index] < 2)

@@ -18,12 +18,13 @@ inline constexpr std::size_t kReleaseMemoryMinItems = 100'000;
 // profile finding (peak RSS of a 2M-triangle mesh vs. massif's heap peak) that they added
 // about a third to the whole process's peak. malloc_trim returns their whole free pages
 // (madvise) without moving anything; a scan of the heap, done once per large mesh.
-inline void release_free_memory(std::size_t items) {
+inline void return_free_pages() {
 #ifdef __GLIBC__
-  if (items >= kReleaseMemoryMinItems) malloc_trim(0);
-#else
-  (void)items;
+  malloc_trim(0);
 #endif
+}
+inline void release_free_memory(std::size_t items) {
+  if (items >= kReleaseMemoryMinItems) return_free_pages();
 }
 
 }  // namespace rts::render

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "render/accel/hit_transform.hpp"
+#include "render/accel/shape_release.hpp"
 #include "render/geometry/csg/leaf_crossings.hpp"
 #include "render/geometry/shapes/shape_kinds.hpp"
 #include "render/geometry/tolerances.hpp"
@@ -84,7 +85,7 @@ bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, con
   return bounds.finite();                    // NaN/inf coordinates: never hit
 }
 
-World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, WorldBuild build) {
+World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, WorldBuild build, SceneDesc* taken) {
   meshes_.resize(scene.meshes.size());
   std::vector<Instance> bounded, unbounded, parts;
   // Whether each bounded and unbounded instance casts no shadow, kept only when one does not.
@@ -101,14 +102,16 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
   const std::size_t objects = flat.shapes.size() + flat.groups.size() + flat.csgs.size();
   bounded.reserve(objects);
   transforms_.reserve(flat.transforms.size());
+  ShapeRelease release(taken, flat);
   for (std::size_t i = 0; i < flat.shapes.size(); ++i) {
     const FlatShape& fs = flat.shapes[i];
     Instance inst;
     AABB world_bounds;
     bool unbounded_shape = false;
-    if (!add_shape_instance(scene, fs.shape, flat.to_world(fs), inst, world_bounds, unbounded_shape,
-                            flat.material(scene, i)))
-      continue;
+    const bool made = add_shape_instance(scene, fs.shape, flat.to_world(fs), inst, world_bounds, unbounded_shape,
+                                         flat.material(scene, i));
+    release.passed(i);
+    if (!made) continue;
     if (unbounded_shape) {
       keep(unbounded, unbounded_shadowless, inst, flat.casts_shadow(i));
       continue;

@@ -176,7 +176,10 @@ class World {
  public:
   // `specialize`: a scene of at most kMaxObjectsWithoutBvh bounded objects gets no BVH. Once
   // built, the World reads neither `scene` nor `flat` (it holds copies of what it traces).
-  World(const SceneDesc& scene, const FlatScene& flat, bool specialize = true, WorldBuild build = WorldBuild::Whole);
+  // `taken`: the same scene, given up by its owner: its shapes are freed while the instances
+  // are made (shape_release.hpp), so that only groups, CSG blocks and what they read stay.
+  World(const SceneDesc& scene, const FlatScene& flat, bool specialize = true, WorldBuild build = WorldBuild::Whole,
+        SceneDesc* taken = nullptr);
   // Builds the top-level BVH over the instances (WorldBuild::BvhLater); once, before tracing.
   void build_bvh();
 

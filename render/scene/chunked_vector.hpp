@@ -40,10 +40,23 @@ class ChunkedVector {
     ++size_;
     return placed;
   }
+  // Appends default elements up to size n (never shrinks).
+  void grow_to(std::size_t n) {
+    while (size_ < n) emplace_back();
+  }
   void clear() {
     chunks_.clear();
     size_ = 0;
   }
+
+  // The chunk that holds element i, and how many chunks there are.
+  static constexpr std::size_t chunk_of(std::size_t i) { return i >> kChunkBits; }
+  std::size_t chunk_count() const { return chunks_.size(); }
+  std::size_t chunk_capacity_bytes(std::size_t k) const { return chunks_[k].capacity() * sizeof(T); }
+  // Frees chunk k's elements ahead of the rest, for a reader that has passed them for good (the
+  // world's build consuming a scene it took: World's constructor). size() is unchanged;
+  // reading an element of a released chunk afterwards is an error.
+  void release_chunk(std::size_t k) { std::vector<T>().swap(chunks_[k]); }
   void swap(ChunkedVector& other) noexcept {
     chunks_.swap(other.chunks_);
     std::swap(size_, other.size_);

@@ -51,3 +51,34 @@ TEST_CASE("a chunked vector holds move-only elements", "[chunked_vector]") {
   CHECK(*v[4999] == 4999);
   CHECK(*v.at(4096) == 4096);
 }
+
+TEST_CASE("a chunk released ahead of the rest frees its elements and only those", "[chunked_vector]") {
+  using V = ChunkedVector<std::shared_ptr<int>>;
+  V v;
+  for (std::size_t i = 0; i < 2 * V::kChunk + 5; ++i) v.push_back(std::make_shared<int>(static_cast<int>(i)));
+  REQUIRE(v.chunk_count() == 3);
+  CHECK(V::chunk_of(V::kChunk - 1) == 0);
+  CHECK(V::chunk_of(V::kChunk) == 1);
+  const std::weak_ptr<int> in_first = v[0], in_middle = v[V::kChunk + 7], in_last = v[2 * V::kChunk];
+  CHECK(v.chunk_capacity_bytes(1) == V::kChunk * sizeof(std::shared_ptr<int>));
+  v.release_chunk(1);
+  CHECK(in_middle.expired());  // the chunk's elements are destroyed, its block freed
+  CHECK(v.chunk_capacity_bytes(1) == 0);
+  CHECK_FALSE(in_first.expired());
+  CHECK_FALSE(in_last.expired());
+  CHECK(*v[V::kChunk - 1] == static_cast<int>(V::kChunk - 1));
+  CHECK(*v[2 * V::kChunk + 4] == static_cast<int>(2 * V::kChunk + 4));
+  CHECK(v.size() == 2 * V::kChunk + 5);  // the indices of the others are unchanged
+}
+
+TEST_CASE("grow_to appends default elements and never shrinks", "[chunked_vector]") {
+  ChunkedVector<int> v;
+  v.grow_to(ChunkedVector<int>::kChunk + 2);
+  REQUIRE(v.size() == ChunkedVector<int>::kChunk + 2);
+  CHECK(v[0] == 0);
+  CHECK(v.back() == 0);
+  v.back() = 7;
+  v.grow_to(3);
+  CHECK(v.size() == ChunkedVector<int>::kChunk + 2);
+  CHECK(v.back() == 7);
+}

@@ -9,6 +9,7 @@
 #include "render/shade/features.hpp"
 #include "render/shade/integrator.hpp"
 #include "render/renderer.hpp"
+#include "render/accel/shape_release.hpp"
 #include "render/accel/world.hpp"
 #include "render/prepared_scene.hpp"
 #include "scene_fixture.hpp"
@@ -195,6 +196,74 @@ TEST_CASE("specialised paths give the generic path's image", "[leave_out]") {
     CHECK(fast.stats.rays.refraction == generic.stats.rays.refraction);
     CHECK(fast.stats.rays.shadow == generic.stats.rays.shadow);
     CHECK(same_pixels(fast.color, generic.color));
+  }
+}
+
+TEST_CASE("a taken scene's shapes are freed by chunks as the world's instances are made", "[leave_out]") {
+  // ShapeRelease (render/accel/shape_release.hpp): a chunk goes once the loop over the placed
+  // shapes has passed the last placement that reads it, unless a group or a CSG block (made
+  // after the loop) reads one of its shapes. Below kReleaseMemoryMinItems nothing is freed.
+  using Shapes = ChunkedVector<ShapeDesc>;
+  SceneDesc s = diffuse_scene();
+  const MaterialId m = s.shapes[1].material;
+  const std::size_t placed = kReleaseMemoryMinItems + Shapes::kChunk;
+  while (s.shapes.size() < placed) {
+    const double k = static_cast<double>(s.shapes.size());
+    place(s, add_shape(s, Sphere{Vec3(std::fmod(k, 300.0) * 0.1 - 15, 0.1, std::floor(k / 300.0) * 0.1), 0.04}, m));
+  }
+  // A CSG block whose leaves are shapes of the second chunk, one of them also placed alone.
+  const NodeId pinned_leaf = static_cast<NodeId>(Shapes::kChunk + 3 + s.lights.size());
+  REQUIRE(s.nodes[pinned_leaf].kind == NodeKind::Shape);
+  REQUIRE(Shapes::chunk_of(s.nodes[pinned_leaf].index) == 1);
+  CsgDesc cut;
+  cut.op = CsgOp::Intersection;
+  cut.children = {Child{pinned_leaf, Mat4(1.0), {}}, Child{add_shape(s, Box{Vec3(-20), Vec3(20)}), Mat4(1.0), {}}};
+  place(s, add_csg(s, cut), translate(Vec3(0, 0.5, 0)));
+  // A group placed twice (instanced: 64 shapes), its members in the last chunk.
+  std::vector<Child> members;
+  for (int i = 0; i < 64; ++i) members.push_back(Child{add_shape(s, Sphere{Vec3(i * 0.05, 1, 0), 0.02}, m), Mat4(1.0), {}});
+  const NodeId group = add_group(s, members);
+  place(s, group, translate(Vec3(-1, 0, -1)));
+  place(s, group, translate(Vec3(1, 0, -1)));
+
+  SECTION("the chunks go in order, the ones a block or a group reads stay") {
+    SceneDesc taken = s;
+    const FlatScene flat = flatten_scene(taken);
+    REQUIRE(flat.shapes.size() == placed);  // the plane, the spheres; not the group's or the block's
+    const std::size_t chunks = taken.shapes.chunk_count();
+    std::vector<std::size_t> last(chunks, 0);
+    for (std::size_t i = 0; i < flat.shapes.size(); ++i) last[Shapes::chunk_of(flat.shapes[i].shape)] = i;
+    ShapeRelease release(&taken, flat);
+    for (std::size_t i = 0; i < flat.shapes.size(); ++i) {
+      release.passed(i);
+      for (std::size_t k : {std::size_t{0}, std::size_t{2}})
+        CHECK((taken.shapes.chunk_capacity_bytes(k) == 0) == (i >= last[k]));
+    }
+    CHECK(taken.shapes.chunk_capacity_bytes(1) > 0);           // the CSG block's leaf
+    CHECK(taken.shapes.chunk_capacity_bytes(chunks - 1) > 0);  // the group's members
+    for (std::size_t k = 2; k + 1 < chunks; ++k) CHECK(taken.shapes.chunk_capacity_bytes(k) == 0);
+  }
+  SECTION("nothing is freed for a borrowed scene or a small one") {
+    const FlatScene flat = flatten_scene(s);
+    SceneDesc copy = s;
+    ShapeRelease none(nullptr, flat);
+    for (std::size_t i = 0; i < flat.shapes.size(); ++i) none.passed(i);
+    CHECK(copy.shapes.chunk_capacity_bytes(0) > 0);
+    SceneDesc small = diffuse_scene();
+    const FlatScene small_flat = flatten_scene(small);
+    ShapeRelease below(&small, small_flat);
+    for (std::size_t i = 0; i < small_flat.shapes.size(); ++i) below.passed(i);
+    CHECK(small.shapes.chunk_capacity_bytes(0) > 0);
+  }
+  SECTION("the world and the image are those of the scene borrowed") {
+    const PreparedScene borrowed(s, true, 0);
+    const PreparedScene taken(SceneDesc(s), true, 0);
+    CHECK(taken.scene().shapes.empty());
+    CHECK(taken.world().instance_count() == borrowed.world().instance_count());
+    CHECK(taken.world().bvh_nodes() == borrowed.world().bvh_nodes());
+    RenderOptions o;
+    o.threads = 1;
+    CHECK(same_pixels(render(borrowed, o).color, render(taken, o).color));
   }
 }
 

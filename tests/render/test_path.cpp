@@ -686,7 +686,7 @@ TEST_CASE("path mode stays finite: grazing views, albedo 1, tiny and huge scales
   SECTION("the whole scene scaled by 1e-6 and by 1e6") {
     for (double k : {1e-6, 1e6}) {
       SceneDesc s = cornell_like();
-      std::vector<Child> roots = s.roots;
+      std::vector<Child> roots(s.roots.begin(), s.roots.end());
       NodeId group = add_group(s, roots);
       s.roots.clear();
       place(s, group, scale(Vec3(k)));
