@@ -61,7 +61,7 @@ void flatten_child(const SceneDesc& scene, const Child& child, const Mat4& paren
       if (node.index >= scene.groups.size()) throw RenderError(child.loc, "internal: unknown group");
       if (inherited == kNoId && node.index < instanced.size() && instanced[node.index]) {
         check_transform(m, child.loc);
-        out.groups.push_back(FlatGroup{node.index, m, child.loc, casts && scene.groups[node.index].casts_shadow});
+        out.add_group(node.index, m, casts && scene.groups[node.index].casts_shadow);
         break;
       }
       const GroupDesc& g = scene.groups[node.index];

@@ -101,7 +101,10 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
   // heap through the BVH build.
   const std::size_t objects = flat.shapes.size() + flat.groups.size() + flat.csgs.size();
   bounded.reserve(objects);
-  transforms_.reserve(flat.transforms.size());
+  // The placements' transforms are kept by the shapes' instances and the groups' placements.
+  transforms_.reserve(static_cast<std::size_t>(std::count_if(
+      flat.shapes.begin(), flat.shapes.end(), [](const FlatShape& fs) { return fs.transform != kNoId; })));
+  group_transforms_.reserve(flat.groups.size());
   ShapeRelease release(taken, flat);
   for (std::size_t i = 0; i < flat.shapes.size(); ++i) {
     const FlatShape& fs = flat.shapes[i];
@@ -126,7 +129,7 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
       const uint32_t gi = group_accel(scene, flat.instanced, fg.group, 0, specialize, group_parts, built);
       Instance inst;
       AABB world_bounds;
-      if (!add_group_instance(gi, fg.to_world, inst, world_bounds)) continue;
+      if (!add_group_instance(gi, flat.to_world(fg), inst, world_bounds)) continue;
       keep(bounded, bounded_shadowless, inst, fg.casts_shadow);
     }
   }

@@ -35,7 +35,7 @@ uint32_t World::group_accel(const SceneDesc& scene, const std::vector<bool>& ins
     const uint32_t sub = group_accel(scene, instanced, fg.group, level + 1, specialize, parts, built);
     Instance inst;
     AABB box;
-    if (!add_group_instance(sub, fg.to_world, inst, box)) continue;
+    if (!add_group_instance(sub, local.to_world(fg), inst, box)) continue;
     mine.push_back(inst);
     boxes.push_back(box);
   }

@@ -2,6 +2,7 @@
 // once and traced through each placement's transform. Checked against the same scene with
 // every placement copied (flatten_instance never instances): the same hits, the same shapes,
 // the same occlusion answers; and which groups flattening chooses to instance.
+#include <cstring>
 #include <random>
 
 #include <catch2/catch.hpp>
@@ -145,6 +146,27 @@ TEST_CASE("placements that repeat a rotation share its linear part and give the 
   CHECK(check_same_hits(instanced, copies, rng, 30.0, Vec3(0.0)) > 300);
   // A placement holds an index and two translations, not a 192-byte pair of matrices.
   STATIC_REQUIRE(sizeof(GroupTransform) <= 56);
+}
+
+TEST_CASE("a group's placements keep their matrices exactly in the flattened scene", "[instancing]") {
+  // FlatGroup holds an index into the shapes' transforms (a shared linear part and its own
+  // translation): the matrix given back is the placement's, bit for bit; the identity costs none.
+  std::mt19937_64 rng(5);
+  SceneDesc s;
+  const NodeId g = random_group(s, rng, 70);
+  const Mat4 odd = translate(Vec3(1e-300, -0.0, 3.25e7)) * rotate_deg(41.0, glm::normalize(Vec3(0.3, -1, 2)));
+  const std::vector<Mat4> placed{Mat4(1.0), odd, translate(Vec3(2, 0, 0)) * odd, translate(Vec3(-5, 1, 9))};
+  for (const Mat4& m : placed) place(s, g, m);
+  const FlatScene flat = flatten_scene(s);
+  REQUIRE(flat.groups.size() == placed.size());
+  CHECK(flat.groups[0].transform == kNoId);
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const Mat4 back = flat.to_world(flat.groups[i]), composed = Mat4(1.0) * placed[i];  // as flattening composes it
+    INFO("placement " << i);
+    CHECK(std::memcmp(&back, &composed, sizeof(Mat4)) == 0);
+  }
+  CHECK(flat.linears.size() == 2);  // odd's (shared by two placements) and the translation's
+  STATIC_REQUIRE(sizeof(FlatGroup) <= 12);
 }
 
 TEST_CASE("World::intersect writes every field of the hit it returns", "[instancing]") {
