@@ -1,6 +1,7 @@
-// A vector that grows by chunks: the scene description's shape array (SceneDesc::shapes).
-// A scene of millions of shapes grows that array last and largest; a std::vector's doubling
-// then holds the old and the new block at once (4M spheres: 537 MB more at the end of
+// A vector that grows by chunks: the scene description's arrays with one entry per placed
+// object (SceneDesc::shapes, ::nodes, ::roots; the evaluator's per-node counts). A scene of
+// millions of shapes grows those arrays last and largest; a std::vector's doubling then holds
+// the old and the new block at once (4M spheres: 537 MB more for the shapes at the end of
 // evaluation, the whole render's peak), while here growing copies one chunk at most: chunks of
 // 4096 elements, each a std::vector that grows by doubling up to that size (so a small scene
 // holds no more than it uses) and is never moved once full. std::deque also grows without
