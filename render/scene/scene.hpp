@@ -11,6 +11,7 @@
 //  - Colors are linear RGB; the image writer encodes sRGB.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -18,6 +19,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -551,7 +553,7 @@ struct Node {
 // by loops mostly carry their position in their own parameters, and a 128-byte matrix per
 // such child was a third of the scene description of a million spheres (issue 24's memory
 // per object). A pure translation (`translate`, the usual way to place an object) keeps only
-// its offset (a 48-byte block); any other transform one immutable matrix (152 bytes), shared
+// its offset (a 32-byte block); any other transform one immutable matrix (136 bytes), shared
 // by the copies of the child. matrix() gives the matrix back bit for bit.
 class ChildTransform {
  public:
@@ -561,10 +563,29 @@ class ChildTransform {
     if (m == kIdentity) return;  // by value, as before: a -0 entry is the identity too
     // By bits: the rebuilt matrix must be this one exactly (a -0 in the linear part is kept).
     if (std::memcmp(&m, &kIdentity, 3 * sizeof(glm::dvec4)) == 0 && m[3].w == 1.0)
-      block_ = std::make_shared<const Offset>(Vec3(m[3]));
+      block_ = new Offset(Vec3(m[3]));
     else
-      block_ = std::make_shared<const Matrix>(m);
+      block_ = new Matrix(m);
   }
+  ChildTransform(const ChildTransform& o) noexcept : block_(o.block_) { retain(); }
+  ChildTransform(ChildTransform&& o) noexcept : block_(std::exchange(o.block_, nullptr)) {}
+  ChildTransform& operator=(const ChildTransform& o) noexcept {
+    if (block_ != o.block_) {
+      release();
+      block_ = o.block_;
+      retain();
+    }
+    return *this;
+  }
+  ChildTransform& operator=(ChildTransform&& o) noexcept {
+    if (this != &o) {
+      release();
+      block_ = std::exchange(o.block_, nullptr);
+    }
+    return *this;
+  }
+  ~ChildTransform() { release(); }
+
   Mat4 matrix() const {
     if (!block_) return Mat4(1.0);
     if (block_->offset_only) {
@@ -578,18 +599,31 @@ class ChildTransform {
   glm::dvec4 operator[](int column) const { return matrix()[column]; }
 
  private:
+  // Shared by the copies of the child, counted in the block itself: one pointer per child
+  // (a shared_ptr was two, and its control block 16 bytes more per block).
   struct Block {
+    explicit Block(bool offset) : offset_only(offset) {}
+    mutable std::atomic<uint32_t> refs{1};
     bool offset_only;
   };
   struct Offset : Block {
-    explicit Offset(const Vec3& t) : Block{true}, offset(t) {}
+    explicit Offset(const Vec3& t) : Block(true), offset(t) {}
     Vec3 offset;
   };
   struct Matrix : Block {
-    explicit Matrix(const Mat4& matrix) : Block{false}, m(matrix) {}
+    explicit Matrix(const Mat4& matrix) : Block(false), m(matrix) {}
     Mat4 m;
   };
-  std::shared_ptr<const Block> block_;
+  void retain() const noexcept {
+    if (block_) block_->refs.fetch_add(1, std::memory_order_relaxed);
+  }
+  void release() noexcept {
+    if (!block_ || block_->refs.fetch_sub(1, std::memory_order_acq_rel) != 1) return;
+    if (block_->offset_only) delete static_cast<const Offset*>(block_);
+    else delete static_cast<const Matrix*>(block_);
+    block_ = nullptr;
+  }
+  const Block* block_ = nullptr;
 };
 inline Mat4 operator*(const Mat4& a, const ChildTransform& b) { return a * b.matrix(); }
 inline glm::dvec4 operator*(const ChildTransform& a, const glm::dvec4& v) { return a.matrix() * v; }
@@ -599,6 +633,7 @@ struct Child {
   ChildTransform transform;        // child space → parent space
   SourceRef loc;                   // where this instance was placed
 };
+static_assert(sizeof(void*) != 8 || sizeof(Child) <= 32, "a child grew: one per placed object");
 
 struct GroupDesc {
   std::vector<Child> children;
