@@ -113,7 +113,7 @@ void push_number(ParseState& st, SourceLoc loc, std::string_view text) {
   } else if (ec != std::errc() || end != text.data() + text.size()) {
     throw LanguageError(loc, fmt::format("malformed number '{}'", text));
   }
-  push_expr(st, std::make_unique<NumberExpr>(loc, value), 1);
+  push_expr(st, st.arena->make<NumberExpr>(loc, value), 1);
 }
 
 std::string decode_string(ParseState& st) {
@@ -156,17 +156,17 @@ std::string decode_string(ParseState& st) {
 }
 
 void push_string(ParseState& st, SourceLoc quote_loc) {
-  push_expr(st, std::make_unique<StringExpr>(quote_loc, decode_string(st)), 1);
+  push_expr(st, st.arena->make<StringExpr>(quote_loc, decode_string(st)), 1);
 }
 
 void push_bool(ParseState& st, SourceLoc loc, bool value) {
-  push_expr(st, std::make_unique<BoolExpr>(loc, value), 1);
+  push_expr(st, st.arena->make<BoolExpr>(loc, value), 1);
 }
 
-void push_none(ParseState& st, SourceLoc loc) { push_expr(st, std::make_unique<NoneExpr>(loc), 1); }
+void push_none(ParseState& st, SourceLoc loc) { push_expr(st, st.arena->make<NoneExpr>(loc), 1); }
 
 void push_name_ref(ParseState& st, SourceLoc loc, std::string_view name) {
-  push_expr(st, std::make_unique<NameExpr>(loc, st.symbol(name)), 1);
+  push_expr(st, st.arena->make<NameExpr>(loc, st.symbol(name)), 1);
 }
 
 void push_name(ParseState& st, SourceLoc loc, std::string_view name) {
@@ -188,14 +188,14 @@ Open close_bracket(ParseState& st) {
 
 void finish_list(ParseState& st) {
   Open o = close_bracket(st);
-  auto list = std::make_unique<ListExpr>(o.loc);
+  auto list = st.arena->make<ListExpr>(o.loc);
   uint32_t h = collect(st.exprs, o.mark, list->elements);
   push_expr(st, std::move(list), h + 1);
 }
 
 void finish_vector(ParseState& st) {
   Open o = close_bracket(st);
-  auto vec = std::make_unique<VectorExpr>(o.loc);
+  auto vec = st.arena->make<VectorExpr>(o.loc);
   uint32_t h = collect(st.exprs, o.mark, vec->components);
   push_expr(st, std::move(vec), h + 1);
 }
@@ -203,7 +203,7 @@ void finish_vector(ParseState& st) {
 void finish_call(ParseState& st) {
   Open o = close_bracket(st);
   Sized<ExprPtr> callee = pop_expr(st);
-  auto call = std::make_unique<CallExpr>(callee.node->loc, std::move(callee.node));
+  auto call = st.arena->make<CallExpr>(callee.node->loc, std::move(callee.node));
   std::optional<SourceLoc> first_named;
   uint32_t h = std::max(callee.height, collect(st.args, o.mark, call->args, [&](const Argument& a) {
     if (a.name) {
@@ -223,7 +223,7 @@ void finish_index(ParseState& st) {
   Sized<ExprPtr> object = pop_expr(st);
   SourceLoc loc = object.node->loc;
   uint32_t h = std::max(index.height, object.height) + 1;
-  push_expr(st, std::make_unique<IndexExpr>(loc, std::move(object.node), std::move(index.node)), h);
+  push_expr(st, st.arena->make<IndexExpr>(loc, std::move(object.node), std::move(index.node)), h);
 }
 
 void finish_block_body(ParseState& st) {
@@ -270,7 +270,7 @@ void finish_params(ParseState& st) {
 // ---------------------------------------------------------------------------------------
 void build_unary(ParseState& st, SourceLoc op_loc, UnaryOp op) {
   Sized<ExprPtr> operand = pop_expr(st);
-  push_expr(st, std::make_unique<UnaryExpr>(op_loc, op, std::move(operand.node)), operand.height + 1);
+  push_expr(st, st.arena->make<UnaryExpr>(op_loc, op, std::move(operand.node)), operand.height + 1);
 }
 
 void build_binary(ParseState& st, SourceLoc op_loc, BinaryOp op) {
@@ -279,7 +279,7 @@ void build_binary(ParseState& st, SourceLoc op_loc, BinaryOp op) {
   SourceLoc loc = lhs.node->loc;
   uint32_t h = std::max(lhs.height, rhs.height) + 1;
   checked_height(st, h, op_loc);
-  push_expr(st, std::make_unique<BinaryExpr>(loc, op, std::move(lhs.node), std::move(rhs.node), op_loc), h);
+  push_expr(st, st.arena->make<BinaryExpr>(loc, op, std::move(lhs.node), std::move(rhs.node), op_loc), h);
 }
 
 void build_range(ParseState& st, bool inclusive) {
@@ -290,7 +290,7 @@ void build_range(ParseState& st, bool inclusive) {
   Sized<ExprPtr> from = pop_expr(st);
   SourceLoc loc = from.node->loc;
   uint32_t h = std::max({from.height, to.height, step.height}) + 1;
-  push_expr(st, std::make_unique<RangeExpr>(loc, std::move(from.node), std::move(to.node),
+  push_expr(st, st.arena->make<RangeExpr>(loc, std::move(from.node), std::move(to.node),
                                             std::move(step.node), inclusive), h);
 }
 
@@ -300,7 +300,7 @@ void build_transform(ParseState& st, SourceLoc op_loc, TransformOp op) {
   SourceLoc loc = object.node->loc;
   uint32_t h = std::max(arg.height, object.height) + 1;
   checked_height(st, h, op_loc);
-  push_expr(st, std::make_unique<TransformExpr>(loc, std::move(object.node), op, std::move(arg.node), op_loc), h);
+  push_expr(st, st.arena->make<TransformExpr>(loc, std::move(object.node), op, std::move(arg.node), op_loc), h);
 }
 
 void build_member(ParseState& st) {
@@ -308,14 +308,14 @@ void build_member(ParseState& st) {
   Sized<ExprPtr> object = pop_expr(st);
   SourceLoc loc = object.node->loc;
   checked_height(st, object.height + 1, member.loc);
-  push_expr(st, std::make_unique<MemberExpr>(loc, std::move(object.node), member.name, member.loc),
+  push_expr(st, st.arena->make<MemberExpr>(loc, std::move(object.node), member.name, member.loc),
             object.height + 1);
 }
 
 void build_with(ParseState& st) {
   Sized<BlockBody> body = pop(st.block_bodies);
   Sized<ExprPtr> base = pop_expr(st);
-  auto with = std::make_unique<WithExpr>(base.node->loc, std::move(base.node));
+  auto with = st.arena->make<WithExpr>(base.node->loc, std::move(base.node));
   with->body = std::move(body.node);
   push_expr(st, std::move(with), std::max(base.height, body.height) + 1);
 }
@@ -323,7 +323,7 @@ void build_with(ParseState& st) {
 void build_block(ParseState& st) {
   Sized<BlockBody> body = pop(st.block_bodies);
   NamePiece kind = pop_name(st);
-  auto block = std::make_unique<BlockExpr>(kind.loc, kind.name);
+  auto block = st.arena->make<BlockExpr>(kind.loc, kind.name);
   block->body = std::move(body.node);
   push_expr(st, std::move(block), body.height + 1);
 }
@@ -364,7 +364,7 @@ void build_block_statement(ParseState& st) {
 void build_let(ParseState& st, SourceLoc loc) {
   Sized<ExprPtr> value = pop_expr(st);
   NamePiece name = pop_name(st);
-  push_stmt(st, std::make_unique<LetStmt>(loc, name.name, std::move(value.node), name.loc), value.height + 1);
+  push_stmt(st, st.arena->make<LetStmt>(loc, name.name, std::move(value.node), name.loc), value.height + 1);
 }
 
 void build_assign(ParseState& st) {
@@ -372,7 +372,7 @@ void build_assign(ParseState& st) {
   NamePiece name = pop_name(st);
   AssignOp op = st.assign_ops.back();
   st.assign_ops.pop_back();
-  push_stmt(st, std::make_unique<AssignStmt>(name.loc, name.name, op, std::move(value.node)), value.height + 1);
+  push_stmt(st, st.arena->make<AssignStmt>(name.loc, name.name, op, std::move(value.node)), value.height + 1);
 }
 
 void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {
@@ -387,7 +387,7 @@ void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {
   Sized<Body> then_body = pop(st.bodies);
   Sized<ExprPtr> cond = pop_expr(st);
   h = std::max({h, then_body.height, cond.height}) + 1;
-  auto stmt = std::make_unique<IfStmt>(loc, std::move(cond.node));
+  auto stmt = st.arena->make<IfStmt>(loc, std::move(cond.node));
   stmt->then_body = std::move(then_body.node);
   stmt->else_body = std::move(else_body);
   if (!as_else_body) {
@@ -405,7 +405,7 @@ void build_for(ParseState& st, SourceLoc loc) {
   Sized<Body> body = pop(st.bodies);
   Sized<ExprPtr> iterable = pop_expr(st);
   NamePiece var = pop_name(st);
-  auto stmt = std::make_unique<ForStmt>(loc, var.name, var.loc, std::move(iterable.node));
+  auto stmt = st.arena->make<ForStmt>(loc, var.name, var.loc, std::move(iterable.node));
   stmt->body = std::move(body.node);
   push_stmt(st, std::move(stmt), std::max(body.height, iterable.height) + 1);
 }
@@ -413,7 +413,7 @@ void build_for(ParseState& st, SourceLoc loc) {
 void build_while(ParseState& st, SourceLoc loc) {
   Sized<Body> body = pop(st.bodies);
   Sized<ExprPtr> cond = pop_expr(st);
-  auto stmt = std::make_unique<WhileStmt>(loc, std::move(cond.node));
+  auto stmt = st.arena->make<WhileStmt>(loc, std::move(cond.node));
   stmt->body = std::move(body.node);
   push_stmt(st, std::move(stmt), std::max(body.height, cond.height) + 1);
 }
@@ -430,7 +430,7 @@ void build_macro(ParseState& st, SourceLoc loc) {
   Sized<Body> body = pop(st.bodies);
   Sized<std::vector<Param>> params = pop(st.param_lists);
   NamePiece name = pop_name(st);
-  auto stmt = std::make_unique<MacroStmt>(loc, name.name);
+  auto stmt = st.arena->make<MacroStmt>(loc, name.name);
   stmt->params = std::move(params.node);
   stmt->body = std::move(body.node);
   push_stmt(st, std::move(stmt), std::max(body.height, params.height) + 1);
@@ -440,24 +440,24 @@ void build_return(ParseState& st, SourceLoc loc) {
   Sized<ExprPtr> value{nullptr, 0};
   if (st.has_return_value) value = pop_expr(st);
   st.has_return_value = false;
-  push_stmt(st, std::make_unique<ReturnStmt>(loc, std::move(value.node)), value.height + 1);
+  push_stmt(st, st.arena->make<ReturnStmt>(loc, std::move(value.node)), value.height + 1);
 }
 
-void build_break(ParseState& st, SourceLoc loc) { push_stmt(st, std::make_unique<BreakStmt>(loc), 1); }
+void build_break(ParseState& st, SourceLoc loc) { push_stmt(st, st.arena->make<BreakStmt>(loc), 1); }
 
 void build_continue(ParseState& st, SourceLoc loc) {
-  push_stmt(st, std::make_unique<ContinueStmt>(loc), 1);
+  push_stmt(st, st.arena->make<ContinueStmt>(loc), 1);
 }
 
 void build_include(ParseState& st, SourceLoc loc) {
-  push_stmt(st, std::make_unique<IncludeStmt>(loc, std::move(st.include_path)), 1);
+  push_stmt(st, st.arena->make<IncludeStmt>(loc, std::move(st.include_path)), 1);
   st.include_path.clear();
 }
 
 void build_expr_stmt(ParseState& st) {
   Sized<ExprPtr> e = pop_expr(st);
   SourceLoc loc = e.node->loc;
-  push_stmt(st, std::make_unique<ExprStmt>(loc, std::move(e.node)), e.height + 1);
+  push_stmt(st, st.arena->make<ExprStmt>(loc, std::move(e.node)), e.height + 1);
 }
 
 }  // namespace rts::parse_detail

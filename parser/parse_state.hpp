@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -57,6 +58,9 @@ struct ParseState {
   uint32_t max_height;  // of the syntax tree
   uint32_t depth = 0;  // current nesting of brackets, bodies and prefix operators
 
+  // The nodes' memory, handed to the Program at the end; declared before the stacks that hold
+  // nodes, so that a parse that fails destroys them first.
+  std::unique_ptr<ast::NodeArena> arena = std::make_unique<ast::NodeArena>();
   std::vector<Sized<ast::ExprPtr>> exprs;
   std::vector<Sized<ast::StmtPtr>> stmts;
   std::vector<Sized<ast::BlockItem>> items;
