@@ -49,7 +49,7 @@ void PreparedScene::build(SceneDesc* release_graph) {
   flat_ = flatten_scene(scene);
   if (release_graph) {
     release(release_graph->roots);
-    release_free_memory(flat_.shapes.size());  // the roots' block is larger than what follows
+    release_free_memory(flat_.shapes.size());  // what follows makes large arrays, which cannot reuse the roots' chunks
   }
   lights_ = compile_lights(flat_.lights);
   std::vector<bool> used = used_textures(scene, flat_);
