@@ -183,8 +183,9 @@ inline SpecularWeights specular_weights(const MaterialDesc& m, const Vec3& incid
 }
 
 // The cube root of u in [0, 1), inline: libm's cbrt (a call, frexp and scalbn inside) was 7%
-// of the glossy race scene's render. A bit-trick start (within ~3%), two Halley steps (cubic:
-// ~1e-15) and a Newton step leave it within a few ulps of libm's.
+// of the glossy race scene's render. A bit-trick start (within ~3%) and two Halley steps
+// (cubic convergence) leave it within 64 ulps (1.5e-14 relative) of libm's; a third, Newton
+// step to within 4 ulps cost 3% of the glossy render and changed no image byte.
 inline double unit_cbrt(double u) {
   if (!(u > 0.0)) return 0.0;
   double y = std::bit_cast<double>(std::bit_cast<uint64_t>(u) / 3 + 0x2A9F7893782DA1CEull);
@@ -192,7 +193,7 @@ inline double unit_cbrt(double u) {
     const double y3 = y * y * y;
     y *= (y3 + 2.0 * u) / (2.0 * y3 + u);
   }
-  return y - (y * y * y - u) / (3.0 * y * y);
+  return y;
 }
 
 // Uniform point in the unit ball from three uniforms (the glossy lobe's perturbation).
