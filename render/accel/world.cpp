@@ -272,6 +272,8 @@ bool World::occluded_instance(const Instance& inst, const Ray& world_ray, const 
     double t;
     return sphere_root(std::get<std::vector<Sphere>>(shapes_)[inst.index], object_ray(inst, world_ray), ray_t, t);
   }
+  if (inst.kind == kPrimKind<Isosurface>)   // the crossing alone: no normal (six evaluations)
+    return occludes(std::get<std::vector<Isosurface>>(shapes_)[inst.index], object_ray(inst, world_ray), ray_t);
   if (inst.kind == kGroupKind) return occluded_group(inst, world_ray, ray_t);
   if (inst.kind == kCsgKind) return occluded_csg(inst, world_ray, ray_t);  // the sweep's answer alone
   SurfaceHit scratch;

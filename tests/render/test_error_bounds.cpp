@@ -1,7 +1,7 @@
 // Every shape kind reports the rounding error bound of its hit point: a ray spawned from the
 // hit, offset by that bound, never hits the same surface again (issue 16: quads reported none
 // and shadowed themselves). The kinds are enumerated from ShapeGeometry, so a new kind without
-// a sample here does not compile.
+// a sample here does not compile. Shadow rays must agree with closest hits for each kind too.
 #include <cmath>
 #include <memory>
 #include <type_traits>
@@ -186,7 +186,44 @@ void check_all_kinds(std::index_sequence<I...>) {
       ...);
 }
 
+// Shadow rays take shortcuts for some kinds (a sphere's root alone, an isosurface's crossing
+// without its normal): World::occluded must answer what World::intersect finds, for rays that
+// end just before and just after the first hit.
+template <std::size_t... I>
+void check_occlusion_agrees(std::index_sequence<I...>) {
+  (
+      [] {
+        using T = std::variant_alternative_t<I, ShapeGeometry>;
+        SceneDesc s;
+        const ShapeGeometry g = sample<T>(s);
+        test::place(s, test::add_shape(s, g), glm::translate(Mat4(1.0), Vec3(0.3, -0.2, 0.1)));
+        FlatScene flat = flatten_scene(s);
+        World world(s, flat);
+        int hits = 0, disagree = 0;
+        for (int i = 0; i < 300; ++i) {
+          const Vec3 origin = 3.0 * Vec3(std::sin(1.3 * i), std::cos(2.1 * i), std::sin(0.7 * i + 1.0));
+          const Vec3 target = 0.5 * Vec3(std::sin(3.0 * i), std::cos(5.0 * i), std::sin(7.0 * i));
+          const Ray ray{origin, glm::normalize(target - origin)};
+          WorldHit hit;
+          const bool found = world.intersect(ray, Interval::positive(), hit);
+          if (world.occluded(ray, Interval::positive()) != found) ++disagree;
+          if (!found) continue;
+          ++hits;
+          if (world.occluded(ray, Interval{0.0, 0.999 * hit.t})) ++disagree;  // ends before the hit
+          if (!world.occluded(ray, Interval{0.0, 1.001 * hit.t})) ++disagree;  // ends past it
+        }
+        CAPTURE(I, hits);
+        CHECK(hits > 30);
+        CHECK(disagree == 0);
+      }(),
+      ...);
+}
+
 }  // namespace
+
+TEST_CASE("shadow rays agree with closest hits for every shape kind", "[primitives][occlusion]") {
+  check_occlusion_agrees(std::make_index_sequence<std::variant_size_v<ShapeGeometry>>());
+}
 
 TEST_CASE("every shape kind reports an error bound that its spawned rays clear", "[primitives][error]") {
   check_all_kinds(std::make_index_sequence<std::variant_size_v<ShapeGeometry>>());

@@ -264,7 +264,21 @@ inline bool intersect(const IsosurfaceData& s, const Ray& ray, Interval ray_t, S
   return true;
 }
 
+// For a shadow ray: intersect's answer without the hit, whose normal alone is six evaluations
+// of the function (profile finding: shadow rays blocked by an isosurface computed it and the
+// uv's atan2 for nothing).
+inline bool occludes(const IsosurfaceData& s, const Ray& ray, Interval ray_t) {
+  double t0, t1;
+  if (!iso_container_span(s, ray, t0, t1)) return false;
+  double a = std::max(t0, ray_t.min), b = std::min(t1, ray_t.max);
+  if (!(a < b)) return false;
+  double ts[1];
+  bool on[1];
+  return iso_crossings(s, ray, t0, t1, a, b, ts, on, 1) > 0 && ray_t.surrounds(ts[0]);
+}
+
 // The shape as the scene and the world hold it (its data boxed: scene.hpp).
+inline bool occludes(const Isosurface& s, const Ray& ray, Interval ray_t) { return occludes(*s, ray, ray_t); }
 inline AABB bounds(const Isosurface& s) { return bounds(*s); }
 inline bool intersect(const Isosurface& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
   return intersect(*s, ray, ray_t, hit);
