@@ -491,8 +491,8 @@ std::string csg_refusal(const SceneDesc& scene, NodeId id, std::string_view op, 
   bool open = info.closure == Closure::Open;
   if (const auto* c = std::get_if<Cylinder>(&s.geometry)) open = !c->capped;
   if (const auto* c = std::get_if<Cone>(&s.geometry)) open = !c->capped;
-  if (const auto* c = std::get_if<Sor>(&s.geometry)) open = c->open;
-  if (const auto* c = std::get_if<Lathe>(&s.geometry)) open = !c->closed;
+  if (const auto* c = std::get_if<Sor>(&s.geometry)) open = (*c)->open;
+  if (const auto* c = std::get_if<Lathe>(&s.geometry)) open = !(*c)->closed;
   if (const auto* c = std::get_if<Prism>(&s.geometry)) open = (*c)->open;
   if (open) {
     bool capped_kind = info.closure == Closure::WhenCapped;

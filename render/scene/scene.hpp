@@ -309,11 +309,15 @@ struct HeightField {
 // the profile's points 2 .. N-1 (render/geometry/shapes/sor.hpp fits and traces it).
 struct SorSegment { double h0 = 0.0, h1 = 1.0; double c[4] = {0, 0, 0, 0}; double r2_max = 0.0; };  // r^2 = sum c_k (y - h0)^k
 inline constexpr int kMaxSorPoints = 256;  // bounds the per-ray stack arrays
-struct Sor {
+struct SorData {
   std::vector<Vec3> points;          // <r, h, 0> as given
   std::vector<SorSegment> segments;  // points.size() - 3 of them, bottom to top
   double radius = 0.0, h_min = 0.0, h_max = 0.0, base_r2 = 0.0, cap_r2 = 0.0;
   bool open = false;                 // no discs at the bottom and top
+};
+// Boxed (boxed.hpp): its 96 bytes made every shape's description 16 bytes larger.
+struct Sor : BoxedShape<SorData> {
+  using BoxedShape::BoxedShape;
 };
 
 // POV-Ray's splines through 2-D points (a lathe's profile, a prism's outline): linear_spline,
@@ -330,13 +334,17 @@ struct SplineSegment {
 // POV-Ray's lathe: the profile's segments (straight, or spline pieces) turned about the y axis
 // (render/geometry/shapes/lathe.hpp traces it).
 inline constexpr int kMaxLathePoints = 4096;
-struct Lathe {
+struct LatheData {
   std::vector<Vec3> points;          // <r, h, 0> as given
   SplineKind spline = SplineKind::Linear;
   std::vector<SplineSegment> segments;  // the spline's pieces (r as x, h as y); empty for linear
   double radius = 0.0, h_min = 0.0, h_max = 0.0;
   bool closed = false;               // the profile ends where it starts, or both ends on the axis
   double orientation = 1.0;          // +1: the profile (closed along the axis) runs counter-clockwise
+};
+// Boxed, as Sor.
+struct Lathe : BoxedShape<LatheData> {
+  using BoxedShape::BoxedShape;
 };
 
 // POV-Ray's prism with linear_spline and linear_sweep: polygons in the x-z plane (several,
@@ -384,7 +392,7 @@ struct ShapeDesc {
   bool casts_shadow = true;
   SourceRef loc;
 };
-static_assert(sizeof(void*) != 8 || sizeof(ShapeDesc) <= 128, "a shape's description grew: box its bulk (boxed.hpp)");
+static_assert(sizeof(void*) != 8 || sizeof(ShapeDesc) <= 112, "a shape's description grew: box its bulk (boxed.hpp)");
 
 // ---- constructive solid geometry (POV-Ray's semantics) ------------------------------------
 // union: every child's surface (inner ones too); merge: the union's outer surface only;

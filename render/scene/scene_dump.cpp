@@ -110,12 +110,14 @@ std::string shape_text(const ShapeDesc& s) {
                           : fmt::format(" sphere {} {} {}", vec(c.a), num(c.radius), num(c.strength));
       return out;
     }
-    std::string operator()(const Sor& g) {
+    std::string operator()(const Sor& shape) {
+      const SorData& g = *shape;
       std::string out = "sor points";
       for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
       return out + (g.open ? " open true" : "");
     }
-    std::string operator()(const Lathe& g) {
+    std::string operator()(const Lathe& shape) {
+      const LatheData& g = *shape;
       std::string out = "lathe points";
       for (const Vec3& p : g.points) out += fmt::format(" <{}, {}>", num(p.x), num(p.y));
       return out + (g.spline != SplineKind::Linear ? fmt::format(" spline {}", spline_name(g.spline)) : "");

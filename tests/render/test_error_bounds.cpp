@@ -97,14 +97,14 @@ T sample(SceneDesc& s) {
     return g;
   } else if constexpr (std::is_same_v<T, Sor>) {
     // A vase: a bulge, a waist, a flared lip, closed by its discs.
-    Sor g;
+    SorData g;
     g.points = {Vec3(0.2, -1.2, 0), Vec3(0.6, -1, 0),  Vec3(0.9, -0.5, 0), Vec3(0.5, 0.2, 0),
                 Vec3(0.4, 0.6, 0),  Vec3(0.7, 1, 0),   Vec3(0.8, 1.2, 0)};
     sor_setup(g);
     return g;
   } else if constexpr (std::is_same_v<T, Lathe>) {
     // A closed profile: a cup with a wall, a rim, a hollow inside and a foot.
-    Lathe g;
+    LatheData g;
     g.points = {Vec3(0, -1, 0),      Vec3(0.6, -1, 0), Vec3(0.4, -0.8, 0), Vec3(0.9, 0.9, 0),
                 Vec3(0.8, 1, 0),     Vec3(0.7, 0.8, 0), Vec3(0, -0.5, 0)};
     lathe_setup(g);

@@ -12,15 +12,15 @@ using namespace rts::render;
 
 namespace {
 
-Lathe make(std::vector<Vec3> pts) {
-  Lathe l;
+LatheData make(std::vector<Vec3> pts) {
+  LatheData l;
   l.points = std::move(pts);
   lathe_setup(l);
   return l;
 }
 
 // A tube: radii 1 to 2, heights 0 to 1, the profile's square run counter-clockwise or not.
-Lathe tube(bool ccw) {
+LatheData tube(bool ccw) {
   std::vector<Vec3> p = {Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 0, 0)};
   if (!ccw) std::reverse(p.begin(), p.end());
   return make(p);
@@ -30,7 +30,7 @@ Lathe tube(bool ccw) {
 
 TEST_CASE("lathe: a closed square profile is a tube, whichever way it runs", "[lathe]") {
   for (bool ccw : {true, false}) {
-    Lathe l = tube(ccw);
+    LatheData l = tube(ccw);
     INFO("ccw " << ccw);
     CHECK(l.closed);
     CHECK(l.radius == 2.0);
@@ -60,7 +60,7 @@ TEST_CASE("lathe: a closed square profile is a tube, whichever way it runs", "[l
 
 TEST_CASE("lathe: a double cone from the axis to the axis; slanted rays from near and far", "[lathe]") {
   // r = 1 - |y|: points (0, -1), (1, 0), (0, 1).
-  Lathe l = make({Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)});
+  LatheData l = make({Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)});
   CHECK(l.closed);
   for (double dist : {3.0, 1e3, 1e6}) {
     for (int i = 0; i < 40; ++i) {
@@ -93,8 +93,8 @@ TEST_CASE("lathe: an unclosed profile is open; ends on the axis close it", "[lat
 // Splines (POV-Ray's quadratic_spline, cubic_spline, bezier_spline).
 namespace {
 
-Lathe make_spline(SplineKind k, std::vector<Vec3> pts) {
-  Lathe l;
+LatheData make_spline(SplineKind k, std::vector<Vec3> pts) {
+  LatheData l;
   l.spline = k;
   l.points = std::move(pts);
   lathe_setup(l);
@@ -154,8 +154,8 @@ TEST_CASE("lathe splines: segments follow POV-Ray's conventions", "[lathe]") {
 }
 
 TEST_CASE("lathe splines: a bezier lathe along straight lines is the linear lathe", "[lathe]") {
-  Lathe lin = make({Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)});
-  Lathe bez = make_spline(SplineKind::Bezier, cone_bezier());
+  LatheData lin = make({Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)});
+  LatheData bez = make_spline(SplineKind::Bezier, cone_bezier());
   CHECK(bez.closed);
   CHECK(bez.radius == Approx(1.0).epsilon(1e-8));
   for (double dist : {3.0, 1e3, 1e6}) {
@@ -200,7 +200,7 @@ TEST_CASE("lathe splines: hits lie on the surface of revolution, normals unit an
           pts.pop_back();
         }
       }
-      Lathe l = make_spline(cs.kind, pts);
+      LatheData l = make_spline(cs.kind, pts);
       REQUIRE(l.closed);
       int hits = 0;
       for (double dist : {3.0, 1e3, 1e6}) {
@@ -239,7 +239,7 @@ TEST_CASE("lathe splines: hits lie on the surface of revolution, normals unit an
 }
 
 TEST_CASE("lathe splines: grazing and horizontal rays never give NaN", "[lathe]") {
-  Lathe l = make_spline(SplineKind::Cubic, vase());
+  LatheData l = make_spline(SplineKind::Cubic, vase());
   // Along the axis, through the tips, tangent to the widest circle, exactly horizontal at a
   // joint's height, and in the plane of a flat top.
   std::vector<Ray> rays = {Ray{Vec3(0, 5, 0), Vec3(0, -1, 0)},         Ray{Vec3(0, -1, -5), Vec3(0, 0, 1)},
@@ -275,7 +275,7 @@ TEST_CASE("lathe splines: open and closed as POV-Ray", "[lathe]") {
 TEST_CASE("lathe splines: rays just either side of the horizontal solve agree", "[lathe]") {
   // Below kLatheFlatRay the ray is solved as horizontal first, above it by the sextic: the
   // crossings on either side of the switch are the same to the rays' own difference.
-  Lathe l = make_spline(SplineKind::Cubic, vase());
+  LatheData l = make_spline(SplineKind::Cubic, vase());
   for (int i = 0; i < 40; ++i) {
     Vec3 target(0.3 * std::sin(i), 0.9 * std::cos(2.1 * i), 0.3 * std::cos(3 * i));
     double below = 0.99 * tol::kLatheFlatRay, above = 1.01 * tol::kLatheFlatRay;

@@ -11,8 +11,8 @@ using namespace rts::render;
 
 namespace {
 
-Sor make(std::vector<Vec3> pts, bool open = false) {
-  Sor s;
+SorData make(std::vector<Vec3> pts, bool open = false) {
+  SorData s;
   s.points = std::move(pts);
   s.open = open;
   sor_setup(s);
@@ -21,7 +21,7 @@ Sor make(std::vector<Vec3> pts, bool open = false) {
 
 // r = 1 + h / 2 for h in [0, 2] (points 0 and N-1 on the same line): a cone frustum.
 double cone_r(double h) { return 1.0 + 0.5 * h; }
-Sor cone() {
+SorData cone() {
   std::vector<Vec3> p;
   for (double h : {-0.5, 0.0, 1.0, 2.0, 2.5}) p.emplace_back(cone_r(h), h, 0.0);
   return make(p);
@@ -30,7 +30,7 @@ Sor cone() {
 }  // namespace
 
 TEST_CASE("sor: POV-Ray's fit reproduces a cone's r^2 = (1 + h/2)^2, and its bounds", "[sor]") {
-  Sor s = cone();
+  SorData s = cone();
   REQUIRE(s.segments.size() == 2);
   for (const SorSegment& seg : s.segments) {
     CHECK(seg.c[0] == Approx(cone_r(seg.h0) * cone_r(seg.h0)).epsilon(1e-12));
@@ -47,7 +47,7 @@ TEST_CASE("sor: POV-Ray's fit reproduces a cone's r^2 = (1 + h/2)^2, and its bou
 }
 
 TEST_CASE("sor: crossings of a cone match the closed form, caps included, normals out", "[sor]") {
-  Sor s = cone();
+  SorData s = cone();
   // Horizontal ray at height 1.25: |x| = 1.625.
   SorCrossing c[8];
   int n = sor_crossings(s, Ray{Vec3(-5, 1.25, 0), Vec3(1, 0, 0)}, c, 8);
@@ -78,14 +78,14 @@ TEST_CASE("sor: crossings of a cone match the closed form, caps included, normal
   CHECK(h.normal == Vec3(0, -1, 0));
 
   // Open: only the curved surface; the axis ray meets nothing.
-  Sor o = cone();
+  SorData o = cone();
   o.open = true;
   CHECK(sor_crossings(o, Ray{Vec3(0.1, 10, 0.2), Vec3(0, -1, 0)}, c, 8) == 0);
   CHECK(sor_crossings(o, Ray{Vec3(-5, 1.25, 0), Vec3(1, 0, 0)}, c, 8) == 2);
 }
 
 TEST_CASE("sor: slanted rays cross a cone where the closed form says, from near and far", "[sor]") {
-  Sor s = cone();
+  SorData s = cone();
   for (double dist : {4.0, 1e3, 1e6}) {
     for (int i = 0; i < 40; ++i) {
       Vec3 target(0.3 * std::sin(i), 0.2 + 1.6 * (i % 7) / 6.0, 0.3 * std::cos(3 * i));
@@ -109,7 +109,7 @@ TEST_CASE("sor: slanted rays cross a cone where the closed form says, from near 
 }
 
 TEST_CASE("sor: a cylinder profile, rays grazing its rim and wall give pairs, never NaN", "[sor]") {
-  Sor s = make({Vec3(1, -1, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(1, 3, 0)});
+  SorData s = make({Vec3(1, -1, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(1, 3, 0)});
   SorCrossing c[8];
   for (double x : {0.999999, 1.0, 1.000001})
     for (double y : {-0.5, 0.0, 0.5, 1.0, 2.0, 2.5}) {
@@ -124,7 +124,7 @@ TEST_CASE("sor: a cylinder profile, rays grazing its rim and wall give pairs, ne
 }
 
 TEST_CASE("sor: the waist of an hourglass is crossed four times, caps included", "[sor]") {
-  Sor s = make({Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0.2, 1, 0), Vec3(1, 2, 0), Vec3(0, 3, 0)});
+  SorData s = make({Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0.2, 1, 0), Vec3(1, 2, 0), Vec3(0, 3, 0)});
   SorCrossing c[8];
   // A vertical ray at radius 0.6 goes in and out of the bottom bulb, then the top one.
   int n = sor_crossings(s, Ray{Vec3(0.6, -2, 0), Vec3(0, 1, 0)}, c, 8);

@@ -230,8 +230,8 @@ TEST_CASE("a sor from the language: pairs or vectors, open, and bad points are l
   const render::Sor* g = nullptr;
   for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Sor>(&d.geometry);
   REQUIRE(g);
-  CHECK(g->open);
-  REQUIRE(g->segments.size() == 1);
+  CHECK((*g)->open);
+  REQUIRE((*g)->segments.size() == 1);
   render::SurfaceHit h;
   REQUIRE(intersect(*g, render::Ray{render::Vec3(0, 0.5, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
   CHECK(h.t == Approx(4.0).epsilon(1e-12));
@@ -266,7 +266,7 @@ TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad poi
   const render::Lathe* g = nullptr;
   for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Lathe>(&d.geometry);
   REQUIRE(g);
-  CHECK(g->closed);
+  CHECK((*g)->closed);
   render::SurfaceHit h;
   REQUIRE(intersect(*g, render::Ray{render::Vec3(0, 0.5, -5), render::Vec3(0, 0, 1)}, render::Interval::positive(), h));
   CHECK(h.t == Approx(4.0).epsilon(1e-12));
@@ -295,8 +295,8 @@ TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad poi
   s = eval_text("lathe { spline = \"cubic\"  points = [[-1, -1], [0, 0], [1, 0.5], [0, 1], [-1, 2]] }\n");
   g = std::get_if<render::Lathe>(&s.shapes.at(0).geometry);
   REQUIRE(g);
-  CHECK(g->closed);
-  CHECK(g->segments.size() == 2);
+  CHECK((*g)->closed);
+  CHECK((*g)->segments.size() == 2);
   d = eval_diagnostic("lathe { spline = \"cubic\"  points = [[1, -1], [-0.5, 0], [1, 0.5], [0, 1], [1, 2]] }");
   CHECK(d.message == "lathe point 2 [-0.5, 0]: the radius must be >= 0");
   d = eval_diagnostic("difference { lathe { points = [[1, 0], [1, 1]] } sphere { radius = 1 } }");

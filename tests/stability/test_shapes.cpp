@@ -78,8 +78,8 @@ Blob necked_blob() {
 }
 
 // A vase: a bulge, a narrow waist, a flared lip, closed by its discs.
-Sor vase() {
-  Sor s;
+SorData vase() {
+  SorData s;
   s.points = {Vec3(0.1, -1.3, 0), Vec3(0.5, -1, 0), Vec3(0.85, -0.5, 0), Vec3(0.25, 0.2, 0),
               Vec3(0.3, 0.6, 0),  Vec3(0.7, 1, 0),  Vec3(0.9, 1.3, 0)};
   sor_setup(s);
@@ -90,8 +90,8 @@ Sor vase() {
 // axis. (A foot under the wall casts a true shadow one pixel wide into its inner corner, which
 // the speckle count would flag; so would a blue cup, whose lit rim reads as the background's
 // colour around one unlit pixel of wall at the silhouette.)
-Lathe cup() {
-  Lathe l;
+LatheData cup() {
+  LatheData l;
   l.points = {Vec3(0, -0.7, 0), Vec3(0.5, -0.7, 0), Vec3(1.1, 0.6, 0), Vec3(1, 0.7, 0),
               Vec3(0.9, 0.55, 0), Vec3(0, -0.35, 0)};
   lathe_setup(l);

@@ -209,19 +209,19 @@ bool walked_leaf_hit(const Shape& s, const Ray& ray, double t, SurfaceHit& hit, 
 
 [[gnu::noinline]] inline bool leaf_crossings_from(const Sor& s, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
-  return walked_leaf_crossings_from<SorCrossing>(s, ray, from, out, [](auto&&... a) { return sor_crossings(a...); });
+  return walked_leaf_crossings_from<SorCrossing>(*s, ray, from, out, [](auto&&... a) { return sor_crossings(a...); });
 }
 inline bool leaf_hit(const Sor& s, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
-  return walked_leaf_hit<SorCrossing>(s, ray, c.t[k], hit, [](auto&&... a) { return sor_crossings(a...); },
+  return walked_leaf_hit<SorCrossing>(*s, ray, c.t[k], hit, [](auto&&... a) { return sor_crossings(a...); },
                                       [](auto&&... a) { sor_hit_at(a...); });
 }
 
 [[gnu::noinline]] inline bool leaf_crossings_from(const Lathe& l, const Ray& ray, double from,
                                                       CsgLeafCrossings& out) {
-  return walked_leaf_crossings_from<LatheCrossing>(l, ray, from, out, [](auto&&... a) { return lathe_crossings(a...); });
+  return walked_leaf_crossings_from<LatheCrossing>(*l, ray, from, out, [](auto&&... a) { return lathe_crossings(a...); });
 }
 inline bool leaf_hit(const Lathe& l, const Ray& ray, const CsgLeafCrossings& c, int k, SurfaceHit& hit) {
-  return walked_leaf_hit<LatheCrossing>(l, ray, c.t[k], hit, [](auto&&... a) { return lathe_crossings(a...); },
+  return walked_leaf_hit<LatheCrossing>(*l, ray, c.t[k], hit, [](auto&&... a) { return lathe_crossings(a...); },
                                         [](auto&&... a) { lathe_hit_at(a...); });
 }
 

@@ -42,7 +42,7 @@ namespace rts::render {
 namespace detail {
 
 // The spline's segments, bounds (from the curve's turning points), closure and orientation.
-inline void lathe_spline_setup(Lathe& l) {
+inline void lathe_spline_setup(LatheData& l) {
   l.segments = spline_segments(l.spline, l.points);
   l.radius = 0.0;
   l.h_min = Interval::kInfinity;
@@ -77,7 +77,7 @@ inline void lathe_spline_setup(Lathe& l) {
 
 // Bounds, closure and the profile's orientation (the normal's sign) from l.points (and
 // l.spline: its segments are made here).
-inline void lathe_setup(Lathe& l) {
+inline void lathe_setup(LatheData& l) {
   if (l.spline != SplineKind::Linear) {
     detail::lathe_spline_setup(l);
     return;
@@ -120,7 +120,7 @@ struct ShapeTraits<Lathe> {
   static constexpr ShapeInfo kInfo{
       .name = "lathe", .properties = kProperties, .closure = Closure::WhenCapped, .has_uv = true};
   static Lathe build(ParamSet& ps) {
-    Lathe g;
+    LatheData g;
     const ParamValue* v = ps.value("points");
     if (!v) ps.fail_block("lathe needs property 'points'");
     if (const auto* rows = std::get_if<RowsParam>(v)) {
@@ -165,11 +165,11 @@ struct ShapeTraits<Lathe> {
                          fmt::format("lathe point {} [{}, {}]: the radius must be >= 0", i + 1, q.x, q.y));
     }
     lathe_setup(g);
-    return g;
+    return Lathe(std::move(g));
   }
 };
 
-inline AABB bounds(const Lathe& l) {
+inline AABB bounds(const LatheData& l) {
   const double r = l.radius * (1.0 + 1e-9);
   return AABB{Vec3(-r, l.h_min, -r), Vec3(r, l.h_max, r)};
 }
@@ -227,7 +227,7 @@ inline bool lathe_spline_polish(const SplineSegment& g, const Ray& ray, double s
 }
 
 // lathe_crossings for a spline profile (see the top of this file).
-inline int lathe_spline_walk(const Lathe& l, const Ray& ray, const LatheRayFrame& f, LatheCrossing* out,
+inline int lathe_spline_walk(const LatheData& l, const Ray& ray, const LatheRayFrame& f, LatheCrossing* out,
                              int max_out, double t_after) {
   const Vec3 &d = f.d, &p0 = f.p0;
   const double size = l.radius + std::max(std::abs(l.h_min), std::abs(l.h_max));
@@ -314,7 +314,7 @@ inline int lathe_spline_walk(const Lathe& l, const Ray& ray, const LatheRayFrame
 
 // The crossings of the profile's surfaces along the whole line beyond t_after: the first
 // max_out, ascending; returns how many. Closed profile, whole line: in and out alternately.
-inline int lathe_crossings(const Lathe& l, const Ray& ray, LatheCrossing* out, int max_out,
+inline int lathe_crossings(const LatheData& l, const Ray& ray, LatheCrossing* out, int max_out,
                            double t_after = -Interval::kInfinity) {
   const int np = static_cast<int>(l.points.size());
   if (np < 2) return 0;
@@ -423,7 +423,7 @@ inline int lathe_crossings(const Lathe& l, const Ray& ray, LatheCrossing* out, i
 namespace detail {
 
 // lathe_hit_at for a spline profile: the normal from the curve's tangent at the crossing.
-inline void lathe_spline_hit_at(const Lathe& l, const Ray& ray, const LatheCrossing& c, SurfaceHit& hit) {
+inline void lathe_spline_hit_at(const LatheData& l, const Ray& ray, const LatheCrossing& c, SurfaceHit& hit) {
   const SplineSegment& g = l.segments[c.segment];
   Vec3 p = ray.at(c.t);
   const double size = l.radius + std::max(std::abs(l.h_min), std::abs(l.h_max));
@@ -458,7 +458,7 @@ inline void lathe_spline_hit_at(const Lathe& l, const Ray& ray, const LatheCross
 
 }  // namespace detail
 
-inline void lathe_hit_at(const Lathe& l, const Ray& ray, const LatheCrossing& c, SurfaceHit& hit) {
+inline void lathe_hit_at(const LatheData& l, const Ray& ray, const LatheCrossing& c, SurfaceHit& hit) {
   if (l.spline != SplineKind::Linear) {
     detail::lathe_spline_hit_at(l, ray, c, hit);
     return;
@@ -497,12 +497,18 @@ inline void lathe_hit_at(const Lathe& l, const Ray& ray, const LatheCrossing& c,
   hit.has_uv = true;
 }
 
-inline bool intersect(const Lathe& l, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+inline bool intersect(const LatheData& l, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
   LatheCrossing c[1];
   int n = lathe_crossings(l, ray, c, 1, ray_t.min);
   if (n == 0 || !ray_t.surrounds(c[0].t)) return false;
   lathe_hit_at(l, ray, c[0], hit);
   return true;
+}
+
+// The shape as the scene and the world hold it (its data boxed: scene.hpp).
+inline AABB bounds(const Lathe& l) { return bounds(*l); }
+inline bool intersect(const Lathe& l, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  return intersect(*l, ray, ray_t, hit);
 }
 
 }  // namespace rts::render

@@ -33,7 +33,7 @@
 namespace rts::render {
 
 // Computes the segments' cubics and the bounds from s.points (already checked).
-inline void sor_setup(Sor& s) {
+inline void sor_setup(SorData& s) {
   const std::vector<Vec3>& p = s.points;
   const int n = static_cast<int>(p.size());
   s.segments.clear();
@@ -96,7 +96,7 @@ struct ShapeTraits<Sor> {
   static constexpr ShapeInfo kInfo{
       .name = "sor", .properties = kProperties, .closure = Closure::WhenCapped, .has_uv = true};
   static Sor build(ParamSet& ps) {
-    Sor g;
+    SorData g;
     const ParamValue* v = ps.value("points");
     if (!v) ps.fail_block("sor needs property 'points'");
     if (const auto* rows = std::get_if<RowsParam>(v)) {
@@ -141,11 +141,11 @@ struct ShapeTraits<Sor> {
                        fmt::format("sor points {} and {} must differ in height (they set the top slope)", n - 2, n));
     g.open = ps.boolean("open", g.open);
     sor_setup(g);
-    return g;
+    return Sor(std::move(g));
   }
 };
 
-inline AABB bounds(const Sor& s) {
+inline AABB bounds(const SorData& s) {
   const double r = s.radius * (1.0 + 1e-9);
   return AABB{Vec3(-r, s.h_min, -r), Vec3(r, s.h_max, r)};
 }
@@ -197,7 +197,7 @@ inline int sor_piece_roots(const double* e, int n, double lo, double hi, bool lo
 // Every crossing of the surface (caps included unless open) along the whole line beyond
 // t_after, ascending (the first max_out); returns how many. Closed, over the whole line: they
 // alternate in and out, starting outside. The walk runs in ray order, so they come sorted.
-inline int sor_crossings(const Sor& s, const Ray& ray, SorCrossing* out, int max_out,
+inline int sor_crossings(const SorData& s, const Ray& ray, SorCrossing* out, int max_out,
                          double t_after = -Interval::kInfinity) {
   if (s.segments.empty()) return 0;
   const double len = glm::length(ray.direction);
@@ -307,7 +307,7 @@ inline int sor_crossings(const Sor& s, const Ray& ray, SorCrossing* out, int max
   return count;
 }
 
-inline glm::dvec2 sor_uv(const Sor& s, const Vec3& p, SorPart part, int segment) {
+inline glm::dvec2 sor_uv(const SorData& s, const Vec3& p, SorPart part, int segment) {
   // POV-Ray's: u the angle from +x towards +z over 2 pi; v up the segments (each 1/(N-3)), the
   // base disc from -1 at its centre to 0 at its rim, the top from 2 to 1.
   double u = std::atan2(p.z, p.x) / (2.0 * std::numbers::pi);
@@ -325,7 +325,7 @@ inline glm::dvec2 sor_uv(const Sor& s, const Vec3& p, SorPart part, int segment)
   return {u, v};
 }
 
-inline void sor_hit_at(const Sor& s, const Ray& ray, const SorCrossing& c, SurfaceHit& hit) {
+inline void sor_hit_at(const SorData& s, const Ray& ray, const SorCrossing& c, SurfaceHit& hit) {
   Vec3 p = ray.at(c.t);
   Vec3 n;
   double err = 4.0 * ray_point_error(ray, c.t);
@@ -355,7 +355,7 @@ inline void sor_hit_at(const Sor& s, const Ray& ray, const SorCrossing& c, Surfa
   hit.has_uv = true;
 }
 
-inline bool intersect(const Sor& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+inline bool intersect(const SorData& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
   SorCrossing cs[4];
   int n = sor_crossings(s, ray, cs, 4, ray_t.min);
   for (int i = 0; i < n; ++i)
@@ -364,6 +364,12 @@ inline bool intersect(const Sor& s, const Ray& ray, Interval ray_t, SurfaceHit& 
       return true;
     }
   return false;
+}
+
+// The shape as the scene and the world hold it (its data boxed: scene.hpp).
+inline AABB bounds(const Sor& s) { return bounds(*s); }
+inline bool intersect(const Sor& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  return intersect(*s, ray, ray_t, hit);
 }
 
 }  // namespace rts::render
