@@ -211,7 +211,7 @@ class Sampler {
     }
     const uint32_t d = dimension_, reversed = reverse_bits(index_);
     dimension_ += 3;
-    auto one = [&](uint32_t k) [[gnu::always_inline]] {
+    auto one = [&](uint32_t k) __attribute__((always_inline)) {
       uint64_t h = hash_combine(set_key_, d + k);
       uint32_t a = laine_karras(reversed, static_cast<uint32_t>(h));
       return fraction_to_unit(reverse_bits(laine_karras(reverse_bits(a), static_cast<uint32_t>(h >> 32))),
