@@ -189,14 +189,7 @@ class Sampler {
         return (permute(index_, set_size_, static_cast<uint32_t>(h)) + to_unit(hash_combine(key_, d))) /
                set_size_;
       }
-      case SamplerKind::Sobol: {
-        // owen_scramble(sobol_dim0(i), s) with i = owen_scramble(index, h), written with the
-        // reversals that cancel left out: i = reverse(a), sobol_dim0(i) = a.
-        uint64_t h = hash_combine(set_key_, d);
-        uint32_t a = laine_karras(reverse_bits(index_), static_cast<uint32_t>(h));
-        return fraction_to_unit(reverse_bits(laine_karras(reverse_bits(a), static_cast<uint32_t>(h >> 32))),
-                                hash_combine(key_, d));
-      }
+      case SamplerKind::Sobol: return sobol_padded(d, reverse_bits(index_));
     }
     return to_unit(hash_combine(key_, d));
   }
@@ -211,13 +204,7 @@ class Sampler {
     }
     const uint32_t d = dimension_, reversed = reverse_bits(index_);
     dimension_ += 3;
-    auto one = [&](uint32_t k) __attribute__((always_inline)) {
-      uint64_t h = hash_combine(set_key_, d + k);
-      uint32_t a = laine_karras(reversed, static_cast<uint32_t>(h));
-      return fraction_to_unit(reverse_bits(laine_karras(reverse_bits(a), static_cast<uint32_t>(h >> 32))),
-                              hash_combine(key_, d + k));
-    };
-    return {one(0), one(1), one(2)};
+    return {sobol_padded(d, reversed), sobol_padded(d + 1, reversed), sobol_padded(d + 2, reversed)};
   }
 
   glm::dvec2 next2() {
@@ -254,6 +241,17 @@ class Sampler {
   void skip(uint32_t n) { dimension_ += n; }
 
  private:
+  // Dimension d of a scrambled Sobol sample, padded from the first Sobol dimension:
+  // owen_scramble(sobol_dim0(i), s) with i = owen_scramble(index, h), written with the
+  // reversals that cancel left out (i = reverse(a), sobol_dim0(i) = a); `reversed_index` is
+  // reverse_bits(index_), shared by next3's three values.
+  [[gnu::always_inline]] double sobol_padded(uint32_t d, uint32_t reversed_index) const {
+    uint64_t h = hash_combine(set_key_, d);
+    uint32_t a = laine_karras(reversed_index, static_cast<uint32_t>(h));
+    return fraction_to_unit(reverse_bits(laine_karras(reverse_bits(a), static_cast<uint32_t>(h >> 32))),
+                            hash_combine(key_, d));
+  }
+
   SamplerKind kind_;
   uint64_t set_key_;   // the (pixel, batch[, set]): shared by the points of one set
   uint64_t key_;       // this sample

@@ -249,18 +249,23 @@ inline void iso_hit_at(const IsosurfaceData& s, const Ray& ray, double t, bool o
   hit.has_uv = true;
 }
 
-inline bool intersect(const IsosurfaceData& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+// The first crossing inside ray_t (t, and whether it is on the container): when the segment
+// starts inside the solid at ray_t.min (not at the container), the first sign change is where
+// the ray leaves it.
+inline bool iso_first_crossing(const IsosurfaceData& s, const Ray& ray, Interval ray_t, double& t,
+                               bool& on_container) {
   double t0, t1;
   if (!iso_container_span(s, ray, t0, t1)) return false;
   double a = std::max(t0, ray_t.min), b = std::min(t1, ray_t.max);
   if (!(a < b)) return false;
-  double ts[1];
-  bool on[1];
-  // The first crossing past ray_t.min: when the segment starts inside the solid at ray_t.min
-  // (not at the container), the first sign change is where the ray leaves it.
-  int n = iso_crossings(s, ray, t0, t1, a, b, ts, on, 1);
-  if (n == 0 || !ray_t.surrounds(ts[0])) return false;
-  iso_hit_at(s, ray, ts[0], on[0], hit);
+  return iso_crossings(s, ray, t0, t1, a, b, &t, &on_container, 1) > 0 && ray_t.surrounds(t);
+}
+
+inline bool intersect(const IsosurfaceData& s, const Ray& ray, Interval ray_t, SurfaceHit& hit) {
+  double t;
+  bool on;
+  if (!iso_first_crossing(s, ray, ray_t, t, on)) return false;
+  iso_hit_at(s, ray, t, on, hit);
   return true;
 }
 
@@ -268,13 +273,9 @@ inline bool intersect(const IsosurfaceData& s, const Ray& ray, Interval ray_t, S
 // of the function (profile finding: shadow rays blocked by an isosurface computed it and the
 // uv's atan2 for nothing).
 inline bool occludes(const IsosurfaceData& s, const Ray& ray, Interval ray_t) {
-  double t0, t1;
-  if (!iso_container_span(s, ray, t0, t1)) return false;
-  double a = std::max(t0, ray_t.min), b = std::min(t1, ray_t.max);
-  if (!(a < b)) return false;
-  double ts[1];
-  bool on[1];
-  return iso_crossings(s, ray, t0, t1, a, b, ts, on, 1) > 0 && ray_t.surrounds(ts[0]);
+  double t;
+  bool on;
+  return iso_first_crossing(s, ray, ray_t, t, on);
 }
 
 // The shape as the scene and the world hold it (its data boxed: scene.hpp).
