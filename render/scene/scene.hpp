@@ -26,6 +26,7 @@
 #include <glm/glm.hpp>
 
 #include "render/scene/boxed.hpp"
+#include "render/scene/child_runs.hpp"
 #include "render/scene/chunked_vector.hpp"
 #include "render/scene/pattern_desc.hpp"
 #include "render/scene/sampler_kind.hpp"
@@ -594,6 +595,10 @@ class ChildTransform {
   }
   ~ChildTransform() { release(); }
 
+  // The same transform by identity: both the identity, or copies of one child's matrix (which
+  // need not be the only way to write it: equal matrices made apart are not the same block).
+  bool same_block(const ChildTransform& o) const { return block_ == o.block_; }
+
   Mat4 matrix() const {
     if (!block_) return Mat4(1.0);
     if (block_->offset_only) {
@@ -679,7 +684,7 @@ struct SceneDesc {
   std::vector<GroupDesc> groups;
   std::vector<CsgDesc> csgs;
   ChunkedVector<Node> nodes;
-  ChunkedVector<Child> roots;      // instances placed in the world
+  ChildRuns<Child> roots;          // instances placed in the world (by runs: child_runs.hpp)
   std::vector<Warning> warnings;   // from building: what is skipped (not part of dump())
 
   // A deterministic, human-readable dump (`rts eval`); golden tests compare it.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "render/scene/chunked_vector.hpp"
+#include "render/scene/scene.hpp"
 
 using rts::render::ChunkedVector;
 
@@ -81,4 +82,47 @@ TEST_CASE("grow_to appends default elements and never shrinks", "[chunked_vector
   v.grow_to(3);
   CHECK(v.size() == ChunkedVector<int>::kChunk + 2);
   CHECK(v.back() == 7);
+}
+
+// SceneDesc::roots (render/scene/child_runs.hpp): placements kept as runs give back exactly
+// the children placed, in order, whatever breaks a run.
+TEST_CASE("the world's placements kept as runs read back as placed", "[chunked_vector][roots]") {
+  using namespace rts::render;
+  static const char* const kFile = "a.rts";
+  static const char* const kOther = "b.rts";
+  std::vector<Child> placed;
+  auto add = [&](NodeId node, const ChildTransform& t, SourceRef loc) { placed.push_back(Child{node, t, loc}); };
+  const SourceRef at{kFile, 3, 5};
+  // A loop's spheres: consecutive nodes, no transform, one place in the file.
+  for (NodeId n = 0; n < 10000; ++n) add(n, ChildTransform{}, at);
+  add(10000, ChildTransform{}, SourceRef{kFile, 3, 6});   // another column
+  add(10001, ChildTransform{}, SourceRef{kOther, 3, 5});  // another file, same position
+  add(10001, ChildTransform{}, SourceRef{kOther, 3, 5});  // the same node again
+  Mat4 moved(1.0);
+  moved[3] = glm::dvec4(1, 2, 3, 1);
+  const ChildTransform shared(moved);
+  add(10002, shared, at);
+  add(10003, shared, at);                  // the same block: one run
+  add(10004, ChildTransform(moved), at);   // an equal matrix made apart: a run of its own
+  add(20000, ChildTransform{}, at);        // a gap in the nodes
+  add(20001, ChildTransform{}, at);
+
+  ChildRuns<Child> runs;
+  for (const Child& c : placed) runs.push_back(c);
+  REQUIRE(runs.size() == placed.size());
+  CHECK(runs.run_count() == 8);
+  std::size_t i = 0;
+  for (const Child& c : runs) {
+    REQUIRE(i < placed.size());
+    CHECK(c.node == placed[i].node);
+    CHECK(c.transform.matrix() == placed[i].transform.matrix());
+    CHECK(c.transform.same_block(placed[i].transform));
+    CHECK(std::string(c.loc.file) == placed[i].loc.file);
+    CHECK(c.loc.line == placed[i].loc.line);
+    CHECK(c.loc.col == placed[i].loc.col);
+    ++i;
+  }
+  CHECK(i == placed.size());
+  ChildRuns<Child> empty;
+  CHECK(empty.begin() == empty.end());
 }

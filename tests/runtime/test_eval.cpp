@@ -22,6 +22,9 @@ using rts::test::eval_warnings;
 namespace {
 
 // Programs report values by placing spheres: `probe(x)` places a sphere whose radius is x.
+// The world's placements in order (SceneDesc::roots keeps them as runs, read front to back).
+std::vector<Child> roots_of(const SceneDesc& s) { return {s.roots.begin(), s.roots.end()}; }
+
 const std::string kProbe = "macro probe(x) { sphere { radius = x } }\n";
 
 std::vector<double> probes(const std::string& body, const EvalOptions& opts = {}) {
@@ -165,8 +168,8 @@ TEST_CASE("one definition placed many times is one shape and many instances", "[
   CHECK(s.nodes.size() == 1);
   REQUIRE(s.roots.size() == 100);
   for (std::size_t i = 0; i < 100; ++i) {
-    CHECK(s.roots[i].node == s.roots[0].node);
-    CHECK(s.roots[i].transform[3].x == static_cast<double>(i));
+    CHECK(roots_of(s)[i].node == roots_of(s)[0].node);
+    CHECK(roots_of(s)[i].transform[3].x == static_cast<double>(i));
   }
   // A block evaluated in a loop, by contrast, defines a shape per iteration.
   SceneDesc t = eval_text("for i in 0 .. 10 { sphere { radius = 1 } }");
@@ -180,7 +183,7 @@ TEST_CASE("transforms compose in written order; rotate is in degrees x then y th
       "sphere { radius = 1 } rotate <90, 90, 0>\n"
       "sphere { radius = 1 } matrix [1,0,0, 0,1,0, 0,0,1, 4,5,6]");
   REQUIRE(s.roots.size() == 4);
-  auto apply = [&](std::size_t i, glm::dvec3 p) { return glm::dvec3(s.roots[i].transform * glm::dvec4(p, 1)); };
+  auto apply = [&](std::size_t i, glm::dvec3 p) { return glm::dvec3(roots_of(s)[i].transform * glm::dvec4(p, 1)); };
   CHECK(apply(0, {1, 0, 0}) == glm::dvec3(3, 0, 0));  // scaled, then moved
   glm::dvec3 r = apply(1, {1, 0, 0});
   CHECK(r.x == Approx(0).margin(1e-12));
@@ -197,7 +200,7 @@ TEST_CASE("groups nest and carry their transforms; lights in groups are children
       " rotate <0, 45, 0>");
   REQUIRE(s.roots.size() == 1);
   REQUIRE(s.groups.size() == 2);
-  const Node& outer = s.nodes[s.roots[0].node];
+  const Node& outer = s.nodes[roots_of(s)[0].node];
   CHECK(outer.kind == NodeKind::Group);
   const GroupDesc& g = s.groups[outer.index];
   REQUIRE(g.children.size() == 2);
@@ -216,7 +219,7 @@ TEST_CASE("every node's item keeps where it was written", "[eval]") {
   REQUIRE(s.roots.size() == 4);
   const uint32_t lines[] = {1, 2, 3, 4}, cols[] = {1, 3, 1, 4};
   for (std::size_t i = 0; i < 4; ++i) {
-    const SourceRef at = node_loc(s, s.nodes[s.roots[i].node]);
+    const SourceRef at = node_loc(s, s.nodes[roots_of(s)[i].node]);
     CHECK(at.line == lines[i]);
     CHECK(at.col == cols[i]);
   }
@@ -378,15 +381,15 @@ TEST_CASE("with derives a new shape or light definition from an object", "[eval]
   CHECK(s.shapes[1].material == s.shapes[0].material);                         // one material
   CHECK(s.materials.size() == 1);
   REQUIRE(s.roots.size() == 3 + 4 + 1 + 2);
-  for (std::size_t i = 0; i < 3; ++i) CHECK(s.roots[i].node == s.roots[0].node);
-  for (std::size_t i = 3; i < 7; ++i) CHECK(s.roots[i].node == s.roots[3].node);
-  CHECK(s.roots[3].node != s.roots[0].node);
-  CHECK(s.roots[7].transform[3].z == 9);  // the derived object keeps its base's transform
+  for (std::size_t i = 0; i < 3; ++i) CHECK(roots_of(s)[i].node == roots_of(s)[0].node);
+  for (std::size_t i = 3; i < 7; ++i) CHECK(roots_of(s)[i].node == roots_of(s)[3].node);
+  CHECK(roots_of(s)[3].node != roots_of(s)[0].node);
+  CHECK(roots_of(s)[7].transform[3].z == 9);  // the derived object keeps its base's transform
   REQUIRE(s.lights.size() == 2);
   CHECK(s.lights[0].intensity == 0.5);
   CHECK(s.lights[1].intensity == 0.5);  // inherited
-  CHECK(s.nodes[s.roots[9].node].kind == NodeKind::Light);
-  CHECK(s.roots[9].node != s.roots[8].node);
+  CHECK(s.nodes[roots_of(s)[9].node].kind == NodeKind::Light);
+  CHECK(roots_of(s)[9].node != roots_of(s)[8].node);
 }
 
 TEST_CASE("check's summary counts placed instances through groups and bounds them in world space", "[eval][summary]") {
@@ -423,7 +426,7 @@ TEST_CASE("a mesh is built when first placed: an unused one never opens its file
       "m\nm translate <1, 0, 0>\nlet n = m with { smooth = false }\n");
   CHECK(placed.meshes.size() == 1);
   CHECK(placed.roots.size() == 2);
-  CHECK(placed.roots[0].node == placed.roots[1].node);
+  CHECK(roots_of(placed)[0].node == roots_of(placed)[1].node);
 }
 
 TEST_CASE("check warns about each unused top-level declaration, with its location", "[eval][lazy]") {
