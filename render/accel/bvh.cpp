@@ -11,7 +11,10 @@
 
 namespace rts::render {
 
-void BVHNode::set_bounds(const AABB& b) {
+namespace {
+
+// The float box that encloses b: each bound rounded outwards (infinite past float's range).
+void round_outwards(const AABB& b, float lo[3], float hi[3]) {
   constexpr float kInf = std::numeric_limits<float>::infinity();
   for (int a = 0; a < 3; ++a) {
     float l = static_cast<float>(b.lo[a]), h = static_cast<float>(b.hi[a]);
@@ -22,6 +25,10 @@ void BVHNode::set_bounds(const AABB& b) {
   }
 }
 
+}  // namespace
+
+void BVHNode::set_bounds(const AABB& b) { round_outwards(b, lo, hi); }
+
 namespace {
 
 // Relative costs for the surface area heuristic: one box test vs one primitive test.
@@ -30,16 +37,17 @@ constexpr double kIntersectCost = 1.0;
 
 // A primitive as the builder sees it; partitioned in place so that every pass over a node's
 // range reads memory sequentially. Two layouts with the same interface:
-// - CompactRef (28 bytes): float bounds, centroid recomputed on use; for boxes whose
-//   coordinates are all floats (mesh triangles: their vertices are floats), so the tree is
-//   exactly the one the double layout builds. Profile finding (peak RSS of a 2M-triangle
-//   mesh): the builder's 80-byte references were the largest allocation of the whole render.
+// - CompactRef (28 bytes): the box rounded outwards to float, centroid recomputed on use; for
+//   every set of boxes whose rounded bounds are finite. The nodes' boxes are the same either
+//   way (a node's float box is its union rounded outwards, and rounding outwards commutes with
+//   the union); only the SAH's choices see the rounding, by at most one float step per bound.
+//   Profile findings: the builder's 80-byte references were the largest allocation of a
+//   2M-triangle mesh's render (peak RSS); with the 56-byte double layout below they were 235
+//   MB of the 668 MB peak of 4M spheres (RSS trace, issue 24: bytes per sphere), the rest the
+//   world's records (257 MB) and the nodes written beside them.
 // - WideRef (56 bytes): double box, centroid recomputed on use (the same expression as
-//   AABB::centroid, so the same values and the same tree), for anything else (instances'
-//   world boxes, which may lie beyond float range). Profile finding (heaptrack, 1M spheres):
-//   the builder's references (80 bytes with a stored centroid) and the box array they were
-//   made from (48 bytes) were both alive at the build's peak; now the array is released once
-//   the references hold its boxes, and the centroid is not stored.
+//   AABB::centroid), for boxes past float's range (a scene at 1e39), where rounded bounds
+//   would be infinite and their centroids meaningless.
 struct CompactRef {
   float lo[3], hi[3];
   uint32_t index;
@@ -51,12 +59,7 @@ struct CompactRef {
       hi[a] = b.hi[a];
     }
   }
-  CompactRef(const AABB& b, uint32_t i) : index(i) {
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = static_cast<float>(b.lo[a]);
-      hi[a] = static_cast<float>(b.hi[a]);
-    }
-  }
+  CompactRef(const AABB& b, uint32_t i) : index(i) { round_outwards(b, lo, hi); }
   AABB box() const { return AABB{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])}; }
   double centroid(int axis) const { return 0.5 * (static_cast<double>(lo[axis]) + static_cast<double>(hi[axis])); }
   Vec3 centroid() const { return 0.5 * (Vec3(lo[0], lo[1], lo[2]) + Vec3(hi[0], hi[1], hi[2])); }
@@ -74,11 +77,12 @@ struct WideRef {
 };
 static_assert(sizeof(WideRef) <= 56, "the builder's wide reference grew");
 
-bool float_exact(const AABB& b) {
-  for (int a = 0; a < 3; ++a) {
-    if (static_cast<double>(static_cast<float>(b.lo[a])) != b.lo[a]) return false;
-    if (static_cast<double>(static_cast<float>(b.hi[a])) != b.hi[a]) return false;
-  }
+// Whether b's box rounded outwards to float is finite (CompactRef holds it).
+bool float_finite(const AABB& b) {
+  float lo[3], hi[3];
+  round_outwards(b, lo, hi);
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(lo[a]) || !std::isfinite(hi[a])) return false;
   return true;
 }
 
@@ -231,14 +235,14 @@ BVH build_from(std::vector<PrimRef> refs) {
   return bvh;
 }
 
-// The tree over `count` boxes (box_of(i) called twice each: once to see whether every box is
-// float-exact, which picks the reference layout, once into the references); `refs_made` runs
+// The tree over `count` boxes (box_of(i) called twice each: once to see whether every box
+// rounds to a finite float box, which picks the reference layout, once into the references); `refs_made` runs
 // once the references hold every box (the array overload frees its boxes there).
 template <class BoxOf>
 BVH build_over(std::size_t count, const BoxOf& box_of, const std::function<void()>& refs_made = {}) {
   if (count == 0) return BVH{};
   bool compact = true;
-  for (std::size_t i = 0; i < count && compact; ++i) compact = float_exact(box_of(i));
+  for (std::size_t i = 0; i < count && compact; ++i) compact = float_finite(box_of(i));
   auto made = [&]<class PrimRef>(PrimRef) {
     std::vector<PrimRef> refs(count);
     for (std::size_t i = 0; i < count; ++i) refs[i] = PrimRef(box_of(i), static_cast<uint32_t>(i));

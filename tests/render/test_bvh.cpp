@@ -200,10 +200,10 @@ TEST_CASE("large BVHs (built in parallel) are valid and the same on every build"
 }
 
 TEST_CASE("float boxes build the same tree as the same boxes in double", "[bvh]") {
-  // Mesh triangles pass float boxes (FloatBox, 28-byte builder references); boxes whose
-  // coordinates are floats given as AABB take the compact path too; any other box the
-  // double one. All three must give one tree for the same float-exact boxes, also above the
-  // parallel build threshold.
+  // Mesh triangles pass float boxes (FloatBox, 28-byte builder references); boxes given as
+  // AABB take the compact path too, rounded outwards, when every rounded box is finite, else
+  // the double one. Float boxes and the same float-exact boxes in double must give one tree,
+  // also above the parallel build threshold.
   std::mt19937_64 rng(7);
   const int n = 40'000;
   std::vector<AABB> exact;
@@ -214,11 +214,17 @@ TEST_CASE("float boxes build the same tree as the same boxes in double", "[bvh]"
     exact.push_back(AABB{Vec3(lo), Vec3(hi)});
     floats.push_back(FloatBox{{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}});
   }
-  // The same boxes nudged off float values: the double path; its tree may differ only
-  // where the nudge changes a comparison, so it is checked for validity, not equality.
+  // The same boxes nudged off float values (rounded outwards: a float step larger), and moved
+  // past float's range (1e39: the double references): their trees may differ where the change
+  // moves a comparison, so they are checked for validity, not equality.
   std::vector<AABB> wide = exact;
   for (AABB& b : wide) b.hi += Vec3(1e-12);
-  BVH a = build_bvh(exact), b = build_bvh(floats), c = build_bvh(wide);
+  std::vector<AABB> far = exact;
+  for (AABB& b : far) {
+    b.lo.x = b.lo.x * 1e38 + 1e39;
+    b.hi.x = b.hi.x * 1e38 + 1e39;
+  }
+  BVH a = build_bvh(exact), b = build_bvh(floats), c = build_bvh(wide), d = build_bvh(far);
   REQUIRE(a.nodes.size() == b.nodes.size());
   CHECK(a.order == b.order);
   bool same = true;
@@ -231,12 +237,37 @@ TEST_CASE("float boxes build the same tree as the same boxes in double", "[bvh]"
   for (const BVHNode& node : c.nodes)
     for (uint32_t i = 0; i < node.count; ++i) ++seen[c.order[node.offset + i]];
   CHECK(std::count(seen.begin(), seen.end(), 1) == n);
-  // Every node's float bounds enclose the double boxes of its primitives (rounded outwards).
-  for (const BVHNode& node : c.nodes)
-    for (uint32_t i = 0; i < node.count; ++i) {
-      const AABB& box = wide[c.order[node.offset + i]];
-      for (int k = 0; k < 3; ++k) CHECK((node.lo[k] <= box.lo[k] && box.hi[k] <= node.hi[k]));
+  // Every node's float bounds enclose the double boxes of its primitives (rounded outwards),
+  // and a node's box encloses its children's.
+  auto check_tree = [&](const BVH& t, const std::vector<AABB>& boxes) {
+    std::vector<int> count(n, 0);
+    bool encloses = true;
+    for (std::size_t k = 0; k < t.nodes.size(); ++k) {
+      const BVHNode& node = t.nodes[k];
+      for (uint32_t i = 0; i < node.count; ++i) {
+        const AABB& box = boxes[t.order[node.offset + i]];
+        ++count[t.order[node.offset + i]];
+        for (int a = 0; a < 3; ++a) encloses = encloses && node.lo[a] <= box.lo[a] && box.hi[a] <= node.hi[a];
+      }
+      if (node.count == 0)
+        for (std::size_t child : {k + 1, std::size_t{node.offset}})
+          for (int a = 0; a < 3; ++a)
+            encloses = encloses && node.lo[a] <= t.nodes[child].lo[a] && t.nodes[child].hi[a] <= node.hi[a];
     }
+    CHECK(encloses);
+    CHECK(std::count(count.begin(), count.end(), 1) == n);
+  };
+  check_tree(c, wide);
+  check_tree(d, far);
+  // The far boxes still split along y and z (finite there) rather than piling into leaves.
+  std::size_t leaves = 0, largest = 0;
+  for (const BVHNode& node : d.nodes)
+    if (node.count > 0) {
+      ++leaves;
+      largest = std::max<std::size_t>(largest, node.count);
+    }
+  CHECK(leaves > n / 8);
+  CHECK(largest <= kBvhMaxLeafSize);
 }
 
 TEST_CASE("shadow rays tested against the occluder candidates get occluded()'s answer", "[bvh]") {
