@@ -44,8 +44,25 @@ bool Placement::to_world(const render::Child& c, SourceLoc loc) {
 }
 
 void Placement::record(uint32_t node, ObjectCount count) {
-  node_counts_.grow_to(std::size_t(node) + 1);
-  node_counts_[node] = count;
+  auto by_node = [](const std::pair<uint32_t, ObjectCount>& e, uint32_t n) { return e.first < n; };
+  auto it = std::lower_bound(other_counts_.begin(), other_counts_.end(), node, by_node);
+  const bool listed = it != other_counts_.end() && it->first == node;
+  if (count.shapes == 1 && count.lights == 0) {
+    if (one_shape_.size() <= node) one_shape_.resize(std::size_t(node) + 1, false);
+    one_shape_[node] = true;
+    if (listed) other_counts_.erase(it);
+    return;
+  }
+  if (node < one_shape_.size()) one_shape_[node] = false;
+  if (listed) it->second = count;
+  else other_counts_.insert(it, {node, count});  // at the end: nodes are recorded as they are made
+}
+
+Placement::ObjectCount Placement::count(uint32_t node) const {
+  if (node < one_shape_.size() && one_shape_[node]) return ObjectCount{1, 0};
+  auto by_node = [](const std::pair<uint32_t, ObjectCount>& e, uint32_t n) { return e.first < n; };
+  auto it = std::lower_bound(other_counts_.begin(), other_counts_.end(), node, by_node);
+  return it != other_counts_.end() && it->first == node ? it->second : ObjectCount{};
 }
 
 Placement::ObjectCount Placement::count(const std::vector<render::Child>& children) const {

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "parser/source.hpp"
@@ -63,7 +64,7 @@ class Placement {
   bool to_world(const render::Child& c, SourceLoc loc);
 
   void record(uint32_t node, ObjectCount count);
-  ObjectCount count(uint32_t node) const { return node < node_counts_.size() ? node_counts_[node] : ObjectCount{}; }
+  ObjectCount count(uint32_t node) const;
   // What `children` expand to, saturated at kSaturatedCount.
   ObjectCount count(const std::vector<render::Child>& children) const;
   ObjectCount world() const { return world_; }
@@ -74,7 +75,12 @@ class Placement {
   std::vector<render::Child>* target_ = nullptr;  // null: the world
   bool allowed_ = true;
   std::size_t placements_ = 0;
-  render::ChunkedVector<ObjectCount> node_counts_;  // by NodeId (by chunks: one per object)
+  // The recorded counts by NodeId: a bit for each node that stands for one shape (nearly every
+  // node of a large scene), and the others' counts (lights, groups, CSG blocks) sorted by node.
+  // Profile finding (issue 24, RSS trace of 4M spheres placed by loops): 16 bytes per node,
+  // 67 MB of the evaluation's peak, when all but a few said "one shape".
+  std::vector<bool> one_shape_;
+  std::vector<std::pair<uint32_t, ObjectCount>> other_counts_;
   ObjectCount world_;                     // placed in the world, groups expanded
   std::atomic<uint64_t>* published_ = nullptr;  // EvalOptions::placed
 };

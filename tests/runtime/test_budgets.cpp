@@ -84,6 +84,20 @@ TEST_CASE("groups are counted as they expand, before anything is built", "[budge
   Diagnostic w = eval_diagnostic(
       "let g = group { sphere { radius = 1 } sphere { radius = 2 } }\nfor i in 0 .. 600 { g translate <i, 0, 0> }\n", o);
   CHECK(w.message.find("more than 1000 objects once its groups are expanded") != std::string::npos);
+  // Lights count as objects, and shapes placed one by one, and a CSG block as one (traced whole).
+  Diagnostic l = eval_diagnostic(
+      "let g = group { sphere { radius = 1 } point_light { position = <0, 5, 0> } }\n"
+      "for i in 0 .. 501 { g translate <i, 0, 0> }\n", o);
+  CHECK(l.message.find("more than 1000 objects once its groups are expanded") != std::string::npos);
+  CHECK(l.loc.line == 2);
+  Diagnostic c = eval_diagnostic(
+      "for i in 0 .. 300 { sphere { radius = 1 } }\n"
+      "let d = difference { sphere { radius = 1 } sphere { radius = 0.5 } }\n"
+      "for i in 0 .. 701 { d translate <i, 0, 0> }\n", o);
+  CHECK(c.message.find("more than 1000 objects") != std::string::npos);
+  CHECK(c.loc.line == 3);
+  CHECK(eval_text("let g = group { sphere { radius = 1 } point_light { position = <0, 5, 0> } }\n"
+                  "for i in 0 .. 500 { g translate <i, 0, 0> }\n", o).roots.size() == 500);
 }
 
 TEST_CASE("the memory budget stops a list before it is built", "[budgets]") {
