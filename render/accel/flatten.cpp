@@ -95,6 +95,10 @@ FlatScene flatten_instance(const SceneDesc& scene, const Child& instance) {
 FlatScene flatten_scene(const SceneDesc& scene) {
   FlatScene out;
   out.instanced = instanced_groups(scene);
+  // Room for a placement per shape described, the usual count (a loop's shapes are each placed
+  // once); capacity never written is never resident. Grown by doubling, the last copy held the
+  // array one and a half times at the build's peak (4M spheres: 50 MB, RSS trace).
+  out.shapes.reserve(scene.shapes.size());
   for (const Child& root : scene.roots) flatten_child(scene, root, Mat4(1.0), 0, out.instanced, kNoId, true, out);
   out.built();
   return out;

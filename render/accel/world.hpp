@@ -291,6 +291,7 @@ class World {
                     bool& unbounded);
   uint32_t add_transform(const Mat4& to_world);
   // Flattens a CSG block into a tree whose leaves are instances in `parts`.
+  void reserve_shape_arrays(const SceneDesc& scene, const FlatScene& flat);
   void add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<Instance>& parts, Instance& inst,
                AABB& world_bounds);
   bool intersect_csg(const Instance& inst, const Ray& world_ray, const Interval& ray_t, SurfaceHit& hit) const;
