@@ -563,7 +563,7 @@ RenderResult render_scene(const SceneDesc& scene_in, SceneDesc* take, const Prep
   summarise_error(result.color, stats.pixels, err);
   // Shapes that learn something while tracing (an isosurface's real gradient) say it now.
   for (const ShapeDesc& sd : prep.watched_shapes())
-    std::visit(
+    visit_shape(
         [&](const auto& g) {
           if constexpr (requires { after_render_warning(g); })
             if (std::optional<std::string> w = after_render_warning(g)) result.warnings.push_back({sd.loc, *w});

@@ -63,12 +63,12 @@ struct Inside {
 };
 
 // The closed shapes Inside knows, by name; null for the others (not checked).
-const char* closed_shape(const render::ShapeGeometry& g) {
-  if (std::holds_alternative<render::Sphere>(g)) return "sphere";
-  if (std::holds_alternative<render::Box>(g)) return "box";
-  if (std::holds_alternative<render::Cylinder>(g)) return "cylinder";
-  if (std::holds_alternative<render::Cone>(g)) return "cone";
-  if (std::holds_alternative<render::Torus>(g)) return "torus";
+const char* closed_shape(const render::StoredGeometry& g) {
+  if (g.holds<render::Sphere>()) return "sphere";
+  if (g.holds<render::Box>()) return "box";
+  if (g.holds<render::Cylinder>()) return "cylinder";
+  if (g.holds<render::Cone>()) return "cone";
+  if (g.holds<render::Torus>()) return "torus";
   return nullptr;
 }
 
@@ -107,7 +107,7 @@ struct CameraSearch {
     const double det = glm::determinant(m);
     if (!std::isfinite(det) || det == 0.0) return;  // the render reports a singular transform
     const Vec3 p = Vec3(glm::inverse(m) * glm::dvec4(eye, 1.0));
-    if (std::isfinite(p.x + p.y + p.z) && std::visit(Inside{p}, shape.geometry)) {
+    if (std::isfinite(p.x + p.y + p.z) && visit_shape(Inside{p}, shape.geometry)) {
       found = &shape;
       placed = c.loc;
     }

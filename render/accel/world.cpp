@@ -38,7 +38,7 @@ uint32_t World::add_transform(const Mat4& to_world) {
 
 void World::add_geometry(const SceneDesc& scene, const ShapeDesc& shape, Instance& inst, AABB& object_bounds,
                          bool& unbounded_shape) {
-  std::visit(
+  visit_shape(
       [&](const auto& g) {
         using T = std::decay_t<decltype(g)>;
         inst.kind = kPrimKind<T>;

@@ -82,7 +82,7 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     bool unbounded = false;
     add_geometry(scene, shape, part, object_bounds, unbounded);
     // A height field's solid has no floor (POV-Ray's): its bounds hold only the drawn surface.
-    if (std::holds_alternative<HeightField>(shape.geometry)) unbounded = true;
+    if (shape.geometry.holds<HeightField>()) unbounded = true;
     // Leaves placed by the same matrix (a die's box, sphere and pips under one rotation)
     // share one transform, so a ray is carried into their space once (trace_csg).
     if (m != Mat4(1.0)) {
@@ -93,7 +93,7 @@ void World::add_csg(const SceneDesc& scene, const FlatCsg& block, std::vector<In
     }
     AABB box = unbounded ? AABB{Vec3(-inf), Vec3(inf)}
                          : (m == Mat4(1.0) ? object_bounds : transform_bounds(m, object_bounds));
-    if (const Sphere* sp = std::get_if<Sphere>(&shape.geometry); sp && m != Mat4(1.0) && box.valid()) {
+    if (const Sphere* sp = shape_if<Sphere>(shape.geometry); sp && m != Mat4(1.0) && box.valid()) {
       // A rotated sphere's cube of corners is up to sqrt(3) times too wide; the placed
       // sphere (an ellipsoid) reaches exactly r * |row i of the linear part| along axis i.
       // Tighter leaf boxes prune more leaves, and the block's box (a die: its box intersected

@@ -187,7 +187,7 @@ void warn_degenerate(const MeshData& mesh, SourceRef where, std::vector<Warning>
 // true when `kind` is one of them and `out` is built. Triangles and meshes, which may create
 // MeshData, are built by SceneBuilder::shape itself.
 template <std::size_t... I>
-bool build_described(std::index_sequence<I...>, std::string_view kind, ParamSet& ps, ShapeGeometry& out) {
+bool build_described(std::index_sequence<I...>, std::string_view kind, ParamSet& ps, StoredGeometry& out) {
   return ((kShapeInfos[I].name == kind && [&] {
             using T = ShapeKind<I>;
             if constexpr (requires { ShapeTraits<T>::build(ps); }) {
@@ -471,7 +471,7 @@ std::string csg_refusal(const SceneDesc& scene, NodeId id, std::string_view op, 
   }
   const ShapeDesc& s = scene.shapes[node.index];
   const ShapeInfo& info = kShapeInfos[s.geometry.index()];
-  if (const auto* m = std::get_if<MeshRef>(&s.geometry)) {
+  if (const auto* m = shape_if<MeshRef>(s.geometry)) {
     if (m->mesh >= scene.meshes.size() || !scene.meshes[m->mesh]) return "internal: unknown mesh";
     const MeshClosure& c = closure(*scene.meshes[m->mesh]);
     if (c.closed) return "";
@@ -489,11 +489,11 @@ std::string csg_refusal(const SceneDesc& scene, NodeId id, std::string_view op, 
                        v(c.edge_to));
   }
   bool open = info.closure == Closure::Open;
-  if (const auto* c = std::get_if<Cylinder>(&s.geometry)) open = !c->capped;
-  if (const auto* c = std::get_if<Cone>(&s.geometry)) open = !c->capped;
-  if (const auto* c = std::get_if<Sor>(&s.geometry)) open = (*c)->open;
-  if (const auto* c = std::get_if<Lathe>(&s.geometry)) open = !(*c)->closed;
-  if (const auto* c = std::get_if<Prism>(&s.geometry)) open = (*c)->open;
+  if (const auto* c = shape_if<Cylinder>(s.geometry)) open = !c->capped;
+  if (const auto* c = shape_if<Cone>(s.geometry)) open = !c->capped;
+  if (const auto* c = shape_if<Sor>(s.geometry)) open = (*c)->open;
+  if (const auto* c = shape_if<Lathe>(s.geometry)) open = !(*c)->closed;
+  if (const auto* c = shape_if<Prism>(s.geometry)) open = (*c)->open;
   if (open) {
     bool capped_kind = info.closure == Closure::WhenCapped;
     std::string what = fmt::format("{} {}", capped_kind ? "an uncapped" : "a", info.name);

@@ -15,7 +15,7 @@ namespace {
 // Object-space bounds of a shape (its descriptor's bounds()); false for unbounded shapes
 // (planes) and empty meshes.
 bool shape_bounds(const SceneDesc& scene, const ShapeDesc& s, Vec3& lo, Vec3& hi) {
-  return std::visit(
+  return visit_shape(
       [&](const auto& g) {
         using T = std::decay_t<decltype(g)>;
         if constexpr (std::is_same_v<T, MeshRef>) {
@@ -77,11 +77,11 @@ struct Walker {
       case NodeKind::Shape: {
         const ShapeDesc& s = scene.shapes[n.index];
         ++out.shapes[std::string(shape_name(s.geometry))];
-        if (auto* mesh = std::get_if<MeshRef>(&s.geometry))
+        if (auto* mesh = shape_if<MeshRef>(s.geometry))
           out.triangles += scene.meshes[mesh->mesh]->indices.size() / 3;
         auto& [bounded, box] = shape_box[n.index];
         if (!bounded) {
-          out.unbounded = out.unbounded || std::holds_alternative<Plane>(s.geometry);
+          out.unbounded = out.unbounded || s.geometry.holds<Plane>();
           return;
         }
         for (int c = 0; c < 8; ++c) {

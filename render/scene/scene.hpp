@@ -31,6 +31,7 @@
 #include "render/scene/pattern_desc.hpp"
 #include "render/scene/sampler_kind.hpp"
 #include "render/scene/source_ref.hpp"
+#include "render/scene/stored_geometry.hpp"
 
 namespace rts::render {
 
@@ -383,17 +384,20 @@ struct Poly {
 using ShapeGeometry = std::variant<Sphere, Plane, Triangle, Box, Cylinder, Cone, Disc, MeshRef, Quad, Torus, Superellipsoid,
                                    Isosurface, Blob, HeightField, Sor, Lathe, Prism, Poly>;
 
-// 128 bytes: the flags sit beside the material in one word (ShapeGeometry is 104 since the
-// large shapes keep their bulk boxed).
+// The description's own copy of the geometry (stored_geometry.hpp: the large kinds boxed).
+using StoredGeometry = StoredGeometryOf<ShapeGeometry>;
+
+// 64 bytes: 40 of geometry (a sphere's 32 and the kind), the flags beside the material in one
+// word, and where it was written.
 struct ShapeDesc {
-  ShapeGeometry geometry;
+  StoredGeometry geometry;
   MaterialId material = kNoId;   // kNoId: the default material (inside CSG: the block's)
   bool inverse = false;          // closed shapes in CSG: the solid is everything outside the surface
   // false: shadow rays pass it (POV-Ray's no_shadow); camera and bounced rays still see it.
   bool casts_shadow = true;
   SourceRef loc;
 };
-static_assert(sizeof(void*) != 8 || sizeof(ShapeDesc) <= 112, "a shape's description grew: box its bulk (boxed.hpp)");
+static_assert(sizeof(void*) != 8 || sizeof(ShapeDesc) <= 64, "a shape's description grew: box its bulk (stored_geometry.hpp)");
 
 // ---- constructive solid geometry (POV-Ray's semantics) ------------------------------------
 // union: every child's surface (inner ones too); merge: the union's outer surface only;

@@ -151,7 +151,7 @@ std::string shape_text(const ShapeDesc& s) {
                          num(g.accuracy), g.max_trace, box);
     }
   };
-  return std::visit(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material)) +
+  return visit_shape(Visitor{}, s.geometry) + fmt::format(" material {}", id(s.material)) +
          (s.inverse ? " inverse true" : "") +
          (s.casts_shadow ? "" : " casts_shadow false");
 }

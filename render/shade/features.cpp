@@ -28,7 +28,7 @@ void for_each_texture(const MaterialDesc& m, F&& f) {
 
 // The mesh a shape traces, when it is one with per-vertex material values.
 const MeshData* vertex_material_mesh(const SceneDesc& scene, const ShapeDesc& shape) {
-  const MeshRef* r = std::get_if<MeshRef>(&shape.geometry);
+  const MeshRef* r = shape_if<MeshRef>(shape.geometry);
   if (!r || r->mesh >= scene.meshes.size() || !scene.meshes[r->mesh]) return nullptr;
   const MeshData& mesh = *scene.meshes[r->mesh];
   return mesh.has_vertex_material() ? &mesh : nullptr;
@@ -218,7 +218,7 @@ std::array<FeatureSet, 2> shape_features(const SceneDesc& scene, const FlatScene
   };
   std::optional<Seen> last;
   auto add_shape = [&](const ShapeDesc& shape, MaterialId material) {
-    const MeshRef* mesh = std::get_if<MeshRef>(&shape.geometry);
+    const MeshRef* mesh = shape_if<MeshRef>(shape.geometry);
     const Seen seen{shape.geometry.index(), material, mesh ? mesh->mesh : kNoId};
     if (last == seen) return;
     last = seen;

@@ -67,7 +67,7 @@ TEST_CASE("a sphere becomes a shape node with its material", "[builder]") {
   const SceneDesc& s = b.scene();
   REQUIRE(s.nodes.size() == 1);
   CHECK(s.nodes[n].kind == NodeKind::Shape);
-  const auto& sphere = std::get<Sphere>(s.shapes[s.nodes[n].index].geometry);
+  const auto& sphere = shape_get<Sphere>(s.shapes[s.nodes[n].index].geometry);
   CHECK(sphere.center == Vec3(1, 2, 3));
   CHECK(sphere.radius == 0.5);
   CHECK(s.shapes[0].material == m);
@@ -184,7 +184,7 @@ TEST_CASE("inline meshes check indices and count triangles against the limit", "
     return b.shape("mesh", p);
   };
   NodeId n = mesh({{0, 1, 2}});
-  const auto& ref = std::get<MeshRef>(b.scene().shapes[b.scene().nodes[n].index].geometry);
+  const auto& ref = shape_get<MeshRef>(b.scene().shapes[b.scene().nodes[n].index].geometry);
   const MeshData& data = *b.scene().meshes[ref.mesh];
   CHECK(data.indices == std::vector<uint32_t>{0, 1, 2});
   CHECK(data.normals.size() == 3);  // smooth by default: normals computed
@@ -207,7 +207,7 @@ TEST_CASE("OBJ meshes load, resolve relative paths and report their own line num
     return b.shape("mesh", p);
   };
   NodeId n = load("quad.obj");  // relative to the scene file's folder
-  const auto& ref = std::get<MeshRef>(b.scene().shapes[b.scene().nodes[n].index].geometry);
+  const auto& ref = shape_get<MeshRef>(b.scene().shapes[b.scene().nodes[n].index].geometry);
   const MeshData& m = *b.scene().meshes[ref.mesh];
   CHECK(m.indices.size() == 6);  // triangulated
   CHECK(m.positions.size() == 4);
@@ -233,7 +233,7 @@ TEST_CASE("an OBJ file named by many mesh statements is loaded once and shared",
     p.add("file", file, SourceRef{scene_file.c_str(), 4, 8});
     if (smooth) p.add("smooth", *smooth, SourceRef{scene_file.c_str(), 4, 30});
     NodeId n = b.shape("mesh", p);
-    return std::get<MeshRef>(b.scene().shapes[b.scene().nodes[n].index].geometry);
+    return shape_get<MeshRef>(b.scene().shapes[b.scene().nodes[n].index].geometry);
   };
   for (int i = 0; i < 100; ++i) CHECK(load("tri.obj").mesh == 0);
   CHECK(load("sub/../tri.obj").mesh == 0);   // the same file spelled differently

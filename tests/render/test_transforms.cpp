@@ -78,7 +78,7 @@ TEST_CASE("the top-level BVH is built from boxes equal to the ones made with the
   const FlatScene flat = flatten_scene(s);
   std::vector<AABB> boxes;
   for (const FlatShape& fs : flat.shapes) {
-    const AABB object = std::visit([](const auto& g) -> AABB {
+    const AABB object = visit_shape([](const auto& g) -> AABB {
       if constexpr (requires { bounds(g); }) return bounds(g);
       else return AABB{};
     }, s.shapes[fs.shape].geometry);

@@ -20,7 +20,7 @@ std::vector<double> radii(const std::string& body, const AnimationClock& clock) 
   for (const Child& c : s.roots) {
     const Node& n = s.nodes[c.node];
     if (n.kind == NodeKind::Shape)
-      if (auto* sp = std::get_if<Sphere>(&s.shapes[n.index].geometry)) out.push_back(sp->radius);
+      if (auto* sp = shape_if<Sphere>(s.shapes[n.index].geometry)) out.push_back(sp->radius);
   }
   return out;
 }

@@ -33,7 +33,7 @@ std::vector<double> probes(const std::string& body, const EvalOptions& opts = {}
   for (const Child& c : s.roots) {
     const Node& n = s.nodes[c.node];
     if (n.kind == NodeKind::Shape)
-      if (auto* sp = std::get_if<Sphere>(&s.shapes[n.index].geometry)) out.push_back(sp->radius);
+      if (auto* sp = shape_if<Sphere>(s.shapes[n.index].geometry)) out.push_back(sp->radius);
   }
   return out;
 }
@@ -326,7 +326,7 @@ TEST_CASE("includes resolve relative to the including file, then -I paths", "[ev
   DiagnosticSink sink(w);
   SceneDesc s = evaluate_file(sm, (dir / "main.rts").string(), opts, sink).scene;
   REQUIRE(s.shapes.size() == 1);
-  CHECK(std::get<Sphere>(s.shapes[0].geometry).radius == 111);
+  CHECK(shape_get<Sphere>(s.shapes[0].geometry).radius == 111);
   fs::remove_all(dir);
 }
 
@@ -346,9 +346,9 @@ TEST_CASE("a file already fully included is not run again; one being included is
   DiagnosticSink sink(w);
   SceneDesc s = evaluate_file(sm, (dir / "main.rts").string(), {}, sink).scene;
   REQUIRE(s.shapes.size() == 3);
-  CHECK(std::get<Sphere>(s.shapes[0].geometry).radius == 5);  // materials.rts, once
-  CHECK(std::get<Sphere>(s.shapes[1].geometry).radius == 1);
-  CHECK(std::get<Sphere>(s.shapes[2].geometry).radius == 2);
+  CHECK(shape_get<Sphere>(s.shapes[0].geometry).radius == 5);  // materials.rts, once
+  CHECK(shape_get<Sphere>(s.shapes[1].geometry).radius == 1);
+  CHECK(shape_get<Sphere>(s.shapes[2].geometry).radius == 2);
   CHECK(s.roots.size() == 3);
   CHECK(s.materials.size() == 1);
   // A file that includes itself is still a cycle (it is on the include stack, not finished).
@@ -374,10 +374,10 @@ TEST_CASE("with derives a new shape or light definition from an object", "[eval]
       "lamp with { position = <1, 2, 3> }\n");
   // Two placed sphere definitions plus the transformed-and-derived one; the base unchanged.
   REQUIRE(s.shapes.size() == 3);
-  CHECK(std::get<Sphere>(s.shapes[0].geometry).radius == 1);
-  CHECK(std::get<Sphere>(s.shapes[1].geometry).radius == 2);
-  CHECK(std::get<Sphere>(s.shapes[2].geometry).radius == 1);                    // inherited
-  CHECK(std::get<Sphere>(s.shapes[2].geometry).center == glm::dvec3(1, 0, 0));  // overridden
+  CHECK(shape_get<Sphere>(s.shapes[0].geometry).radius == 1);
+  CHECK(shape_get<Sphere>(s.shapes[1].geometry).radius == 2);
+  CHECK(shape_get<Sphere>(s.shapes[2].geometry).radius == 1);                    // inherited
+  CHECK(shape_get<Sphere>(s.shapes[2].geometry).center == glm::dvec3(1, 0, 0));  // overridden
   CHECK(s.shapes[1].material == s.shapes[0].material);                         // one material
   CHECK(s.materials.size() == 1);
   REQUIRE(s.roots.size() == 3 + 4 + 1 + 2);

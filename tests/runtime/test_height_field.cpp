@@ -27,7 +27,7 @@ using render::Vec3;
 namespace {
 const render::HeightField& only_height_field(const render::SceneDesc& s) {
   for (const render::ShapeDesc& d : s.shapes)
-    if (const auto* g = std::get_if<render::HeightField>(&d.geometry)) return *g;
+    if (const auto* g = shape_if<render::HeightField>(d.geometry)) return *g;
   FAIL("no height_field in the scene");
   throw 0;
 }

@@ -153,7 +153,7 @@ TEST_CASE("noise in a height_field function: the grid holds the language's noise
   const render::SceneDesc s = eval_text(prelude + "height_field { function = terrain  resolution = [9, 7] }\n");
   const render::HeightField* f = nullptr;
   for (const render::ShapeDesc& d : s.shapes)
-    if (const auto* g = std::get_if<render::HeightField>(&d.geometry)) f = g;
+    if (const auto* g = shape_if<render::HeightField>(d.geometry)) f = g;
   REQUIRE(f != nullptr);
   REQUIRE(f->data->nx == 9);
   REQUIRE(f->data->nz == 7);
@@ -192,7 +192,7 @@ TEST_CASE("noise in an isosurface function: rays stop where f crosses the thresh
       "             contained_by = sphere { center = <0, 0, 0>  radius = 2 } }\n");
   const render::IsosurfaceData* iso = nullptr;
   for (const render::ShapeDesc& d : s.shapes)
-    if (const auto* g = std::get_if<render::Isosurface>(&d.geometry)) iso = &**g;
+    if (const auto* g = shape_if<render::Isosurface>(d.geometry)) iso = &**g;
   REQUIRE(iso != nullptr);
   auto f = [](const glm::dvec3& p) { return glm::length(p) - 1 + 0.3 * pat::noise01(p * 3.0); };
   double r_lo = 10, r_hi = 0;
@@ -225,7 +225,7 @@ TEST_CASE("noise in a placement loop places each copy at its noise value", "[pat
   const render::SceneDesc s = eval_text("for i in 0 .. 6 { sphere { center = <i, noise(<i * 0.37, 0.5, 0>), 0>  radius = 0.1 } }\n");
   REQUIRE(s.shapes.size() == 6);
   for (int i = 0; i < 6; ++i) {
-    const auto* sp = std::get_if<render::Sphere>(&s.shapes[i].geometry);
+    const auto* sp = shape_if<render::Sphere>(s.shapes[i].geometry);
     REQUIRE(sp != nullptr);
     CHECK(sp->center.y == render::pattern::noise01(glm::dvec3(i * 0.37, 0.5, 0)));
   }

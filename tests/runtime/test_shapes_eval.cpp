@@ -17,7 +17,7 @@ using rts::test::eval_text;
 namespace {
 const render::IsosurfaceData& only_isosurface(const render::SceneDesc& s) {
   for (const render::ShapeDesc& d : s.shapes)
-    if (const auto* g = std::get_if<render::Isosurface>(&d.geometry)) return **g;
+    if (const auto* g = shape_if<render::Isosurface>(d.geometry)) return **g;
   FAIL("no isosurface in the scene");
   throw 0;
 }
@@ -155,7 +155,7 @@ TEST_CASE("bad isosurface parameters are located errors", "[shapes]") {
 namespace {
 const render::Blob& only_blob(const render::SceneDesc& s) {
   for (const render::ShapeDesc& d : s.shapes)
-    if (const auto* g = std::get_if<render::Blob>(&d.geometry)) return *g;
+    if (const auto* g = shape_if<render::Blob>(d.geometry)) return *g;
   FAIL("no blob in the scene");
   throw 0;
 }
@@ -228,7 +228,7 @@ TEST_CASE("bad blob parameters are located errors", "[shapes]") {
 TEST_CASE("a sor from the language: pairs or vectors, open, and bad points are located errors", "[shapes]") {
   render::SceneDesc s = eval_text("sor { points = [[1, -1], [1, 0], [1, 1], [1, 2]]  open = true }\n");
   const render::Sor* g = nullptr;
-  for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Sor>(&d.geometry);
+  for (const render::ShapeDesc& d : s.shapes) g = g ? g : shape_if<render::Sor>(d.geometry);
   REQUIRE(g);
   CHECK((*g)->open);
   REQUIRE((*g)->segments.size() == 1);
@@ -264,7 +264,7 @@ TEST_CASE("a sor from the language: pairs or vectors, open, and bad points are l
 TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad points are located errors", "[shapes]") {
   render::SceneDesc s = eval_text("lathe { points = [[0, 0], [1, 0], [1, 1], [0, 1]] }\n");
   const render::Lathe* g = nullptr;
-  for (const render::ShapeDesc& d : s.shapes) g = g ? g : std::get_if<render::Lathe>(&d.geometry);
+  for (const render::ShapeDesc& d : s.shapes) g = g ? g : shape_if<render::Lathe>(d.geometry);
   REQUIRE(g);
   CHECK((*g)->closed);
   render::SurfaceHit h;
@@ -293,7 +293,7 @@ TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad poi
   CHECK(d.loc.col == 3);
   // A cubic's first and last points only shape the curve: they may have r < 0, the others not.
   s = eval_text("lathe { spline = \"cubic\"  points = [[-1, -1], [0, 0], [1, 0.5], [0, 1], [-1, 2]] }\n");
-  g = std::get_if<render::Lathe>(&s.shapes.at(0).geometry);
+  g = shape_if<render::Lathe>(s.shapes.at(0).geometry);
   REQUIRE(g);
   CHECK((*g)->closed);
   CHECK((*g)->segments.size() == 2);
@@ -310,7 +310,7 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
       "        height1 = 1  height2 = -1 }\n");
   const render::PrismData* g = nullptr;
   for (const render::ShapeDesc& d : s.shapes)
-    if (const auto* p = std::get_if<render::Prism>(&d.geometry); p && !g) g = &**p;
+    if (const auto* p = shape_if<render::Prism>(d.geometry); p && !g) g = &**p;
   REQUIRE(g);
   CHECK(!g->open);
   CHECK(g->edges.size() == 8);  // the hole closed by its missing last edge
@@ -324,7 +324,7 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
   CHECK(h.normal == render::Vec3(-1, 0, 0));
   eval_text("difference { prism { points = [[0, 0], [1, 0], [0, 1]] } sphere { radius = 0.5 } }\n");
   s = eval_text("prism { points = [[0, 0], [1, 0], [0, 1]]  open = true  sweep = \"linear\"  spline = \"linear\" }\n");
-  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry)->open);
+  CHECK(shape_get<render::Prism>(s.shapes.at(0).geometry)->open);
 
   Diagnostic d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0]] }");
   CHECK(d.message == "prism needs at least 3 points, got 2");
@@ -349,12 +349,12 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
   CHECK(d.message == "prism: the quadratic outline from point 2 does not close (a later point must repeat point 2)");
   CHECK(d.loc.line == 2);
   s = eval_text("prism { spline = \"quadratic\"  points = [[0, 1], [0, 0], [1, 0], [0, 1], [0, 0]] }\n");
-  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry)->curves.size() == 3);
+  CHECK(shape_get<render::Prism>(s.shapes.at(0).geometry)->curves.size() == 3);
   d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  sweep = \"radial\" }");
   CHECK(d.message == "prism sweep \"radial\" is not one of \"linear\" or \"conic\"");
   CHECK(d.loc.line == 3);
   s = eval_text("prism { points = [[0, 0], [1, 0], [0, 1]]  sweep = \"conic\"  height1 = 0.5 }\n");
-  CHECK(std::get<render::Prism>(s.shapes.at(0).geometry)->conic);
+  CHECK(shape_get<render::Prism>(s.shapes.at(0).geometry)->conic);
   d = eval_diagnostic("prism { height1 = 0 }");
   CHECK(d.message == "prism needs property 'points'");
   d = eval_diagnostic("difference { prism { points = [[0, 0], [1, 0], [0, 1]]  open = true } sphere { radius = 1 } }");

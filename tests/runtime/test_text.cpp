@@ -26,7 +26,7 @@ TEST_CASE("text: a prism per glyph, advanced by its width and the offset", "[tex
   for (int i = 0; i < 2; ++i) {
     const render::Node& n = s.nodes[g.children[i].node];
     REQUIRE(n.kind == render::NodeKind::Shape);
-    const auto* p = std::get_if<render::Prism>(&s.shapes[n.index].geometry);
+    const auto* p = shape_if<render::Prism>(s.shapes[n.index].geometry);
     REQUIRE(p);
     CHECK((*p)->spline == render::SplineKind::Bezier);
     CHECK((*p)->height1 == -0.5);
@@ -65,7 +65,7 @@ TEST_CASE("text: holes by the even-odd rule, kerning between pairs", "[text]") {
   render::SceneDesc o = eval_text("text { font = \"" + kFont + "\"  string = \"O\"  thickness = 0.2 }");
   render::FlatScene flat = render::flatten_scene(o);
   render::World world(o, flat);
-  const auto* p = std::get_if<render::Prism>(&o.shapes[0].geometry);
+  const auto* p = shape_if<render::Prism>(o.shapes[0].geometry);
   REQUIRE(p);
   const double cx = o.groups[0].children[0].transform[3][0] + 0.5 * ((*p)->x_min + (*p)->x_max);
   const double cy = 0.5 * ((*p)->z_min + (*p)->z_max);  // the outline's second coordinate is the text's y

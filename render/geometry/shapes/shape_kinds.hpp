@@ -60,6 +60,7 @@ inline constexpr std::array<ShapeInfo, kShapeKindCount> kShapeInfos =
 
 inline constexpr std::string_view shape_name(std::size_t kind) { return kShapeInfos[kind].name; }
 inline std::string_view shape_name(const ShapeGeometry& g) { return kShapeInfos[g.index()].name; }
+inline std::string_view shape_name(const StoredGeometry& g) { return kShapeInfos[g.index()].name; }
 
 // The kind named `name`, or nullptr.
 inline const ShapeInfo* find_shape(std::string_view name) {
