@@ -1,5 +1,6 @@
 #include "render/prepared_scene.hpp"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 #include <variant>
@@ -48,8 +49,13 @@ void PreparedScene::build(SceneDesc* release_graph) {
   const SceneDesc& scene = *scene_;
   flat_ = flatten_scene(scene);
   if (release_graph) {
+    // What follows makes large arrays, which cannot reuse the roots' chunks: their pages go back
+    // once there were many placements, of shapes or of groups (1M placements of a group: their
+    // 152-byte matrix blocks, 150 MB, stayed resident through the BVH build when only placed
+    // shapes were counted; RSS trace of bench/instancing/copies.rts -D m=8 -D c=1000).
+    const std::size_t placements = release_graph->roots.size();
     release(release_graph->roots);
-    release_free_memory(flat_.shapes.size());  // what follows makes large arrays, which cannot reuse the roots' chunks
+    release_free_memory(std::max(placements, flat_.shapes.size()));
   }
   lights_ = compile_lights(flat_.lights);
   std::vector<bool> used = used_textures(scene, flat_);
