@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <new>
 
 #include <sys/mman.h>
@@ -28,6 +29,19 @@ inline void return_free_pages() {
 }
 inline void release_free_memory(std::size_t items) {
   if (items >= kReleaseMemoryMinItems) return_free_pages();
+}
+
+// Gives back to the system the pages wholly inside [first, last) of a block whose contents
+// there are not read again (a finished part of a large array the builder still holds). They
+// read as zeros if touched later; pages shared with the rest of the block are kept. Safe on
+// heap blocks too: malloc keeps nothing of its own inside a block in use (malloc_trim gives
+// back free chunks the same way).
+template <class T>
+void release_pages(T* first, T* last) {
+  constexpr std::uintptr_t kPage = 4096;
+  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(first) + kPage - 1) & ~(kPage - 1);
+  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(last) & ~(kPage - 1);
+  if (to > from) ::madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
 }
 
 // Pages mapped for one block and unmapped when it is freed, outside malloc's heaps: for large
