@@ -13,6 +13,11 @@ namespace {
 constexpr uint64_t kObjectsPerMemoryCheck = 1 << 16;
 // What the renderer spends per object in the world (instance record, BVH share), roughly.
 constexpr std::size_t kBytesPerInstance = 256;
+// Where node's entry is, or would go, in a list sorted by node.
+template <class List>
+auto find_node(List& list, uint32_t node) {
+  return std::lower_bound(list.begin(), list.end(), node, [](const auto& e, uint32_t n) { return e.first < n; });
+}
 }  // namespace
 
 void Placement::admit(SourceLoc loc) {
@@ -44,24 +49,23 @@ bool Placement::to_world(const render::Child& c, SourceLoc loc) {
 }
 
 void Placement::record(uint32_t node, ObjectCount count) {
-  auto by_node = [](const std::pair<uint32_t, ObjectCount>& e, uint32_t n) { return e.first < n; };
-  auto it = std::lower_bound(other_counts_.begin(), other_counts_.end(), node, by_node);
+  const bool one_shape = count.shapes == 1 && count.lights == 0;
+  if (one_shape_.size() <= node) one_shape_.resize(std::size_t(node) + 1, false);
+  one_shape_[node] = one_shape;
+  auto it = find_node(other_counts_, node);
   const bool listed = it != other_counts_.end() && it->first == node;
-  if (count.shapes == 1 && count.lights == 0) {
-    if (one_shape_.size() <= node) one_shape_.resize(std::size_t(node) + 1, false);
-    one_shape_[node] = true;
-    if (listed) other_counts_.erase(it);
-    return;
+  if (one_shape) {
+    if (listed) other_counts_.erase(it);  // recorded again (not done today: nodes are recorded once)
+  } else if (listed) {
+    it->second = count;
+  } else {
+    other_counts_.insert(it, {node, count});  // at the end: nodes are recorded as they are made
   }
-  if (node < one_shape_.size()) one_shape_[node] = false;
-  if (listed) it->second = count;
-  else other_counts_.insert(it, {node, count});  // at the end: nodes are recorded as they are made
 }
 
 Placement::ObjectCount Placement::count(uint32_t node) const {
   if (node < one_shape_.size() && one_shape_[node]) return ObjectCount{1, 0};
-  auto by_node = [](const std::pair<uint32_t, ObjectCount>& e, uint32_t n) { return e.first < n; };
-  auto it = std::lower_bound(other_counts_.begin(), other_counts_.end(), node, by_node);
+  auto it = find_node(other_counts_, node);
   return it != other_counts_.end() && it->first == node ? it->second : ObjectCount{};
 }
 

@@ -96,7 +96,6 @@ constexpr uint32_t kParallelBuildThreshold = 32 * 1024;
 // the nested parallel splits still resident beside the top split's.
 using SubtreeNodes = std::vector<BVHNode, PageAllocator<BVHNode>>;
 
-// Appends `sub` (a subtree whose interior offsets count from its own start) to `nodes`.
 // Appends `sub` (a subtree whose interior offsets count from its own start) to `nodes`, giving
 // each copied stretch of `sub` back to the system as it goes: the copy and the original are not
 // both resident (profile finding, RSS trace of 4M spheres: the top split's right subtree, 64 MB,
@@ -263,8 +262,9 @@ BVH build_from(std::vector<PrimRef> refs) {
 }
 
 // The tree over `count` boxes (box_of(i) called twice each: once to see whether every box
-// rounds to a finite float box, which picks the reference layout, once into the references); `refs_made` runs
-// once the references hold every box (the array overload frees its boxes there).
+// rounds to a finite float box, which picks the reference layout, once into the references);
+// `refs_made` runs once the references hold every box (the array overload frees its boxes
+// there).
 template <class BoxOf>
 BVH build_over(std::size_t count, const BoxOf& box_of, const std::function<void()>& refs_made = {}) {
   if (count == 0) return BVH{};

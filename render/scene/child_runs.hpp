@@ -13,8 +13,8 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <iterator>
+#include <utility>
 
 #include "render/scene/chunked_vector.hpp"
 
@@ -37,7 +37,7 @@ class ChildRuns {
     }
     runs_.push_back(Run{c.node, 1, c.transform, c.loc});
   }
-  // How many entries the placements take (for --stats and the tests).
+  // How many entries the placements take (the tests check the runs).
   std::size_t run_count() const { return runs_.size(); }
   void clear() {
     runs_.clear();

@@ -7,9 +7,9 @@
 // (its data and the allocator's 16 bytes) and is described less often by the million.
 //
 // Read it as the variant it stands for: index() is ShapeGeometry's, shape_if<T>() and
-// shape_get<T>() give the kind's data, visit_shape() calls f with it (const T&, never the box),
-// value() copies it out as a ShapeGeometry. The renderer's own arrays (World) hold the plain
-// kinds: nothing is boxed where rays are traced.
+// shape_get<T>() give the kind's data, visit_shape() calls f with it (const T&, never the box).
+// The renderer's own arrays (World) hold the plain kinds: nothing is boxed where rays are
+// traced.
 #pragma once
 
 #include <cstddef>
@@ -81,17 +81,10 @@ class StoredGeometryOf {
     else
       return p ? &**p : nullptr;
   }
-  template <class T>
-  T* get_if() {
-    return const_cast<T*>(std::as_const(*this).template get_if<T>());
-  }
   // f(const T&) for the kind held.
   template <class F>
   decltype(auto) visit(F&& f) const {
     return std::visit([&](const auto& s) -> decltype(auto) { return f(stored_detail::unbox(s)); }, v_);
-  }
-  Geometry value() const {
-    return visit([](const auto& g) { return Geometry(g); });
   }
 
  private:
@@ -108,10 +101,6 @@ class StoredGeometryOf {
 // The std::get_if / std::get / std::visit of a stored geometry.
 template <class T, class G>
 const T* shape_if(const StoredGeometryOf<G>& g) {
-  return g.template get_if<T>();
-}
-template <class T, class G>
-T* shape_if(StoredGeometryOf<G>& g) {
   return g.template get_if<T>();
 }
 template <class T, class G>

@@ -59,7 +59,6 @@ inline constexpr std::array<ShapeInfo, kShapeKindCount> kShapeInfos =
     detail::shape_infos(std::make_index_sequence<kShapeKindCount>());
 
 inline constexpr std::string_view shape_name(std::size_t kind) { return kShapeInfos[kind].name; }
-inline std::string_view shape_name(const ShapeGeometry& g) { return kShapeInfos[g.index()].name; }
 inline std::string_view shape_name(const StoredGeometry& g) { return kShapeInfos[g.index()].name; }
 
 // The kind named `name`, or nullptr.
