@@ -7,6 +7,7 @@
 #include <new>
 
 #include <sys/mman.h>
+#include <unistd.h>
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -38,7 +39,8 @@ inline void release_free_memory(std::size_t items) {
 // back free chunks the same way).
 template <class T>
 void release_pages(T* first, T* last) {
-  constexpr std::uintptr_t kPage = 4096;
+  // The system's page (4 KB here, 64 KB on some arm64 kernels, where 4 KB steps are refused).
+  static const std::uintptr_t kPage = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
   const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(first) + kPage - 1) & ~(kPage - 1);
   const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(last) & ~(kPage - 1);
   if (to > from) ::madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);

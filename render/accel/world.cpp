@@ -94,7 +94,7 @@ void World::reserve_shape_arrays(const SceneDesc& scene, const FlatScene& flat) 
   for (const FlatShape& fs : flat.shapes)
     if (fs.shape < scene.shapes.size()) ++count[scene.shapes[fs.shape].geometry.index()];
   [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (std::get<I>(shapes_).reserve(kPrimKind<ShapeKind<I>> == kPrimKind<MeshRef> ? 0 : count[I]), ...);
+    (std::get<I>(shapes_).reserve(std::is_same_v<ShapeKind<I>, MeshRef> ? 0 : count[I]), ...);
   }(std::make_index_sequence<kShapeKindCount>{});
 }
 
