@@ -107,7 +107,7 @@ class Indexer {
       }
       case ast::StmtKind::Include: {
         const auto& inc = static_cast<const ast::IncludeStmt&>(s);
-        out_.includes.push_back(IncludeRef{inc.path, begin, std::max(begin, line_end(begin))});
+        out_.includes.push_back(IncludeRef{std::string(inc.path), begin, std::max(begin, line_end(begin))});
         break;
       }
       case ast::StmtKind::ExprStmt: {

@@ -1,17 +1,20 @@
 // The typed abstract syntax tree of an rts scene program. The parser builds it from the
 // PEGTL grammar; the evaluator walks it; the S-expression printer (ast_printer.hpp) shows it.
-// Every node carries the SourceLoc of its first character. Nodes are owned by unique_ptrs
-// whose deleter only runs the node's destructor: the memory is the program's NodeArena's,
-// freed all at once with the Program. Identifiers are interned Symbols (pointer comparison,
+// Every node carries the SourceLoc of its first character. Nodes, their child lists and
+// their strings live in the program's NodeArena and are freed all at once with the Program
+// (no node has a destructor or a virtual-table pointer: `kind` says what it is). Identifiers are interned Symbols (pointer comparison,
 // no string hashing at run time).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -26,26 +29,65 @@ Symbol intern(std::string_view name);
 struct Expr;
 struct Stmt;
 
-// Runs a node's destructor and leaves its memory to the arena it came from.
-struct NodeDestroy {
-  template <class T>
-  void operator()(T* node) const noexcept {
-    node->~T();
-  }
-};
+// A link from a node to another node of the same program. Nodes do not own each other:
+// their memory is the program's NodeArena's and goes with it, and no node has anything to
+// destroy (its lists and strings live in the same arena), so a link is a bare pointer.
 template <class T>
-using NodePtr = std::unique_ptr<T, NodeDestroy>;
+class NodePtr {
+ public:
+  NodePtr() = default;
+  NodePtr(std::nullptr_t) {}
+  explicit NodePtr(T* node) : node_(node) {}
+  template <class U, class = std::enable_if_t<std::is_convertible_v<U*, T*>>>
+  NodePtr(NodePtr<U> other) : node_(other.get()) {}
+
+  T* get() const { return node_; }
+  T& operator*() const { return *node_; }
+  T* operator->() const { return node_; }
+  explicit operator bool() const { return node_ != nullptr; }
+  friend bool operator==(NodePtr a, std::nullptr_t) { return a.node_ == nullptr; }
+  friend bool operator!=(NodePtr a, std::nullptr_t) { return a.node_ != nullptr; }
+
+ private:
+  T* node_ = nullptr;
+};
 using ExprPtr = NodePtr<Expr>;
 using StmtPtr = NodePtr<Stmt>;
-using StmtList = std::vector<StmtPtr>;
+
+// A node's children, in order: a run of elements in the arena (read-only once built).
+template <class T>
+class NodeList {
+ public:
+  NodeList() = default;
+  NodeList(const T* first, uint32_t count) : first_(first), count_(count) {}
+
+  const T* begin() const { return first_; }
+  const T* end() const { return first_ + count_; }
+  std::size_t size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  const T& operator[](std::size_t i) const { return first_[i]; }
+  const T& at(std::size_t i) const {
+    if (i >= count_) throw std::out_of_range("NodeList::at");
+    return first_[i];
+  }
+  const T& front() const { return first_[0]; }
+  const T& back() const { return first_[count_ - 1]; }
+
+ private:
+  const T* first_ = nullptr;
+  uint32_t count_ = 0;
+};
+using StmtList = NodeList<StmtPtr>;
 
 // Where a program's nodes live: blocks taken from the heap and handed out in order, never
 // freed one by one. Profile finding (issue 24, heaptrack of `rts parse` on a generated scene):
 // a statement of ~70 bytes became about 14 heap blocks, each with the allocator's header and
-// rounding (930k allocations for 5 MB of text, the peak 12.6 times the file); nodes are most
-// of them. The blocks grow from kFirstBlock to kLargestBlock, so that a small include costs
-// little. Whoever holds the nodes must hold the arena longer (Program, ParseState: the arena
-// is declared before the nodes, so it is destroyed after them).
+// rounding (930k allocations for 5 MB of text, the peak 12.6 times the file); nodes, their
+// child vectors and their virtual-table pointers were most of them. Nodes, their lists and
+// their strings now all come from here, and nothing in the arena has a destructor: a
+// program is freed block by block. The blocks grow from kFirstBlock to kLargestBlock, so
+// that a small include costs little. Whoever holds the nodes must hold the arena as long
+// (Program, ParseState).
 class NodeArena {
  public:
   NodeArena() = default;
@@ -54,9 +96,27 @@ class NodeArena {
 
   template <class T, class... Args>
   NodePtr<T> make(Args&&... args) {
+    static_assert(std::is_trivially_destructible_v<T>, "an AST node has nothing to destroy");
     static_assert(alignof(T) <= alignof(std::max_align_t), "an AST node needs no over-alignment");
     void* at = allocate(sizeof(T), alignof(T));
     return NodePtr<T>(new (at) T(std::forward<Args>(args)...));
+  }
+  // The list of `get(x)` for each x in [first, last), in the arena.
+  template <class T, class It, class Get>
+  NodeList<T> list(It first, It last, Get get) {
+    static_assert(std::is_trivially_destructible_v<T>, "a node's list has nothing to destroy");
+    const auto count = static_cast<std::size_t>(last - first);
+    if (count == 0) return {};
+    T* at = static_cast<T*>(allocate(count * sizeof(T), alignof(T)));
+    for (std::size_t k = 0; first != last; ++first, ++k) new (at + k) T(get(*first));
+    return NodeList<T>(at, static_cast<uint32_t>(count));
+  }
+  // A copy of `text` in the arena (a view that lives as long as the arena).
+  std::string_view text(std::string_view text) {
+    if (text.empty()) return {};
+    void* at = allocate(text.size(), 1);
+    std::memcpy(at, text.data(), text.size());
+    return {static_cast<const char*>(at), text.size()};
   }
   // Bytes taken from the heap (the blocks' sizes).
   std::size_t reserved() const { return reserved_; }
@@ -95,7 +155,6 @@ struct Expr {
   ExprKind kind;
   SourceLoc loc;
   explicit Expr(ExprKind k, SourceLoc l) : kind(k), loc(l) {}
-  virtual ~Expr() = default;
 };
 
 struct NumberExpr : Expr {
@@ -103,8 +162,8 @@ struct NumberExpr : Expr {
   NumberExpr(SourceLoc l, double v) : Expr(ExprKind::Number, l), value(v) {}
 };
 struct StringExpr : Expr {
-  std::string value;  // escapes already decoded
-  StringExpr(SourceLoc l, std::string v) : Expr(ExprKind::String, l), value(std::move(v)) {}
+  std::string_view value;  // escapes already decoded; the text is in the arena
+  StringExpr(SourceLoc l, std::string_view v) : Expr(ExprKind::String, l), value(v) {}
 };
 struct BoolExpr : Expr {
   bool value;
@@ -119,12 +178,12 @@ struct NameExpr : Expr {
 };
 // <x, y, z> (the grammar allows 2 to 4 components; the evaluator decides what it accepts)
 struct VectorExpr : Expr {
-  std::vector<ExprPtr> components;
+  NodeList<ExprPtr> components;
   explicit VectorExpr(SourceLoc l) : Expr(ExprKind::Vector, l) {}
 };
 // [a, b, c]
 struct ListExpr : Expr {
-  std::vector<ExprPtr> elements;
+  NodeList<ExprPtr> elements;
   explicit ListExpr(SourceLoc l) : Expr(ExprKind::List, l) {}
 };
 
@@ -160,7 +219,7 @@ struct Argument {
 };
 struct CallExpr : Expr {
   ExprPtr callee;  // usually a NameExpr
-  std::vector<Argument> args;
+  NodeList<Argument> args;
   CallExpr(SourceLoc l, ExprPtr c) : Expr(ExprKind::Call, l), callee(std::move(c)) {}
 };
 // xs[i]
@@ -187,7 +246,7 @@ struct BlockItem {
   SourceLoc loc;
 };
 struct BlockBody {
-  std::vector<BlockItem> items;
+  NodeList<BlockItem> items;
   SourceLoc open_loc;  // the '{'
 };
 
@@ -226,7 +285,6 @@ struct Stmt {
   StmtKind kind;
   SourceLoc loc;
   explicit Stmt(StmtKind k, SourceLoc l) : kind(k), loc(l) {}
-  virtual ~Stmt() = default;
 };
 
 struct Body {
@@ -257,7 +315,7 @@ struct AssignStmt : Stmt {
 struct IfStmt : Stmt {
   ExprPtr cond;
   Body then_body;
-  std::unique_ptr<Body> else_body;  // null when there is no else
+  const Body* else_body = nullptr;  // in the arena; null when there is no else
   IfStmt(SourceLoc l, ExprPtr c) : Stmt(StmtKind::If, l), cond(std::move(c)) {}
 };
 
@@ -285,7 +343,7 @@ struct Param {
 // macro name(a, b = 2) { ... }
 struct MacroStmt : Stmt {
   Symbol name;
-  std::vector<Param> params;
+  NodeList<Param> params;
   Body body;
   MacroStmt(SourceLoc l, Symbol n) : Stmt(StmtKind::Macro, l), name(n) {}
 };
@@ -303,8 +361,8 @@ struct ContinueStmt : Stmt {
 
 // include "file.rts"  (resolved and parsed by the evaluator when executed)
 struct IncludeStmt : Stmt {
-  std::string path;
-  IncludeStmt(SourceLoc l, std::string p) : Stmt(StmtKind::Include, l), path(std::move(p)) {}
+  std::string_view path;  // in the arena
+  IncludeStmt(SourceLoc l, std::string_view p) : Stmt(StmtKind::Include, l), path(p) {}
 };
 
 // An expression used as a statement: an object to place, a macro call, ...
@@ -313,7 +371,7 @@ struct ExprStmt : Stmt {
   ExprStmt(SourceLoc l, ExprPtr e) : Stmt(StmtKind::ExprStmt, l), expr(std::move(e)) {}
 };
 
-// A parsed file. The arena is declared before the statements: destroyed after them.
+// A parsed file: its statements are in its arena.
 struct Program {
   const SourceFile* file = nullptr;
   std::unique_ptr<NodeArena> arena;

@@ -23,7 +23,7 @@ struct NamedBody {
   const Body* body;
 };
 struct ParamList {
-  const std::vector<Param>* params;
+  const NodeList<Param>* params;
 };
 using NodeRef = std::variant<const Expr*, const Stmt*, const BlockItem*, const Argument*,
                              const Param*, NamedBody, ParamList>;
@@ -204,7 +204,7 @@ Form describe_stmt(const Stmt& s) {
       Form f = form("if", s.loc);
       f.parts.push_back(child(i.cond.get()));
       f.parts.push_back(child(NamedBody{"then", &i.then_body}));
-      if (i.else_body) f.parts.push_back(child(NamedBody{"else", i.else_body.get()}));
+      if (i.else_body) f.parts.push_back(child(NamedBody{"else", i.else_body}));
       return f;
     }
     case StmtKind::For: {

@@ -55,24 +55,23 @@ Sized<T> pop(std::vector<Sized<T>>& v) {
   return x;
 }
 
-// Moves the pieces pushed on `stack` since `mark` into `out`, in order, first passing each
-// to `check` (which may throw); returns their tallest height (0 when there are none).
+// Moves the pieces pushed on `stack` since `mark` into a list in the arena, in order, first
+// passing each to `check` (which may throw); returns their tallest height (0 when there are none).
 template <typename T, typename Check>
-uint32_t collect(std::vector<Sized<T>>& stack, uint32_t mark, std::vector<T>& out, Check check) {
+uint32_t collect(ParseState& st, std::vector<Sized<T>>& stack, uint32_t mark, NodeList<T>& out, Check check) {
   uint32_t tallest = 0;
-  out.reserve(stack.size() - mark);
   for (std::size_t i = mark; i < stack.size(); ++i) {
     check(stack[i].node);
     tallest = std::max(tallest, stack[i].height);
-    out.push_back(std::move(stack[i].node));
   }
+  out = st.arena->list<T>(stack.begin() + mark, stack.end(), [](const Sized<T>& piece) { return piece.node; });
   stack.resize(mark);
   return tallest;
 }
 
 template <typename T>
-uint32_t collect(std::vector<Sized<T>>& stack, uint32_t mark, std::vector<T>& out) {
-  return collect(stack, mark, out, [](const T&) {});
+uint32_t collect(ParseState& st, std::vector<Sized<T>>& stack, uint32_t mark, NodeList<T>& out) {
+  return collect(st, stack, mark, out, [](const T&) {});
 }
 
 void append_utf8(std::string& out, uint32_t cp) {
@@ -156,7 +155,7 @@ std::string decode_string(ParseState& st) {
 }
 
 void push_string(ParseState& st, SourceLoc quote_loc) {
-  push_expr(st, st.arena->make<StringExpr>(quote_loc, decode_string(st)), 1);
+  push_expr(st, st.arena->make<StringExpr>(quote_loc, st.arena->text(decode_string(st))), 1);
 }
 
 void push_bool(ParseState& st, SourceLoc loc, bool value) {
@@ -189,14 +188,14 @@ Open close_bracket(ParseState& st) {
 void finish_list(ParseState& st) {
   Open o = close_bracket(st);
   auto list = st.arena->make<ListExpr>(o.loc);
-  uint32_t h = collect(st.exprs, o.mark, list->elements);
+  uint32_t h = collect(st, st.exprs, o.mark, list->elements);
   push_expr(st, std::move(list), h + 1);
 }
 
 void finish_vector(ParseState& st) {
   Open o = close_bracket(st);
   auto vec = st.arena->make<VectorExpr>(o.loc);
-  uint32_t h = collect(st.exprs, o.mark, vec->components);
+  uint32_t h = collect(st, st.exprs, o.mark, vec->components);
   push_expr(st, std::move(vec), h + 1);
 }
 
@@ -205,7 +204,7 @@ void finish_call(ParseState& st) {
   Sized<ExprPtr> callee = pop_expr(st);
   auto call = st.arena->make<CallExpr>(callee.node->loc, std::move(callee.node));
   std::optional<SourceLoc> first_named;
-  uint32_t h = std::max(callee.height, collect(st.args, o.mark, call->args, [&](const Argument& a) {
+  uint32_t h = std::max(callee.height, collect(st, st.args, o.mark, call->args, [&](const Argument& a) {
     if (a.name) {
       if (!first_named) first_named = a.loc;
     } else if (first_named) {
@@ -230,7 +229,7 @@ void finish_block_body(ParseState& st) {
   Open o = close_bracket(st);
   BlockBody body;
   body.open_loc = o.loc;
-  uint32_t h = collect(st.items, o.mark, body.items);
+  uint32_t h = collect(st, st.items, o.mark, body.items);
   st.block_bodies.push_back({std::move(body), h});
 }
 
@@ -238,16 +237,16 @@ void finish_body(ParseState& st) {
   Open o = close_bracket(st);
   Body body;
   body.open_loc = o.loc;
-  uint32_t h = collect(st.stmts, o.mark, body.stmts);
+  uint32_t h = collect(st, st.stmts, o.mark, body.stmts);
   st.bodies.push_back({std::move(body), h});
 }
 
 void finish_params(ParseState& st) {
   Open o = close_bracket(st);
-  std::vector<Param> list;
+  NodeList<Param> list;
   std::unordered_map<Symbol, SourceLoc> seen;
   std::optional<SourceLoc> first_default;
-  uint32_t h = collect(st.params, o.mark, list, [&](const Param& p) {
+  uint32_t h = collect(st, st.params, o.mark, list, [&](const Param& p) {
     if (auto [it, inserted] = seen.try_emplace(p.name, p.loc); !inserted) {
       LanguageError e(p.loc, fmt::format("duplicate parameter '{}'", *p.name));
       e.diag.notes.push_back(Note{it->second, "first declared here"});
@@ -376,12 +375,12 @@ void build_assign(ParseState& st) {
 }
 
 void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {
-  std::unique_ptr<Body> else_body;
+  const Body* else_body = nullptr;
   uint32_t h = 0;
   if (st.has_else) {
     Sized<Body> e = pop(st.bodies);
     h = e.height;
-    else_body = std::make_unique<Body>(std::move(e.node));
+    else_body = st.arena->make<Body>(e.node).get();
   }
   st.has_else = false;
   Sized<Body> then_body = pop(st.bodies);
@@ -389,7 +388,7 @@ void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {
   h = std::max({h, then_body.height, cond.height}) + 1;
   auto stmt = st.arena->make<IfStmt>(loc, std::move(cond.node));
   stmt->then_body = std::move(then_body.node);
-  stmt->else_body = std::move(else_body);
+  stmt->else_body = else_body;
   if (!as_else_body) {
     push_stmt(st, std::move(stmt), h);
     return;
@@ -397,7 +396,8 @@ void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {
   // `else if`: the nested if is the only statement of the else body.
   Body body;
   body.open_loc = loc;
-  body.stmts.push_back(std::move(stmt));
+  const StmtPtr only[] = {stmt};
+  body.stmts = st.arena->list<StmtPtr>(std::begin(only), std::end(only), [](StmtPtr s) { return s; });
   st.bodies.push_back({std::move(body), checked_height(st, h + 1, loc)});
 }
 
@@ -428,7 +428,7 @@ void build_param(ParseState& st) {
 
 void build_macro(ParseState& st, SourceLoc loc) {
   Sized<Body> body = pop(st.bodies);
-  Sized<std::vector<Param>> params = pop(st.param_lists);
+  Sized<NodeList<Param>> params = pop(st.param_lists);
   NamePiece name = pop_name(st);
   auto stmt = st.arena->make<MacroStmt>(loc, name.name);
   stmt->params = std::move(params.node);
@@ -450,7 +450,7 @@ void build_continue(ParseState& st, SourceLoc loc) {
 }
 
 void build_include(ParseState& st, SourceLoc loc) {
-  push_stmt(st, st.arena->make<IncludeStmt>(loc, std::move(st.include_path)), 1);
+  push_stmt(st, st.arena->make<IncludeStmt>(loc, st.arena->text(st.include_path)), 1);
   st.include_path.clear();
 }
 

@@ -58,15 +58,14 @@ struct ParseState {
   uint32_t max_height;  // of the syntax tree
   uint32_t depth = 0;  // current nesting of brackets, bodies and prefix operators
 
-  // The nodes' memory, handed to the Program at the end; declared before the stacks that hold
-  // nodes, so that a parse that fails destroys them first.
+  // The nodes' memory, handed to the Program at the end.
   std::unique_ptr<ast::NodeArena> arena = std::make_unique<ast::NodeArena>();
   std::vector<Sized<ast::ExprPtr>> exprs;
   std::vector<Sized<ast::StmtPtr>> stmts;
   std::vector<Sized<ast::BlockItem>> items;
   std::vector<Sized<ast::Argument>> args;
   std::vector<Sized<ast::Param>> params;
-  std::vector<Sized<std::vector<ast::Param>>> param_lists;
+  std::vector<Sized<ast::NodeList<ast::Param>>> param_lists;
   std::vector<Sized<ast::Body>> bodies;
   std::vector<Sized<ast::BlockBody>> block_bodies;
   std::vector<NamePiece> names;

@@ -74,9 +74,8 @@ ast::Program parse(const SourceFile& file, const ParseLimits& limits) {
 
   ast::Program program;
   program.file = &file;
-  program.stmts.reserve(st.stmts.size());
-  for (auto& s : st.stmts) program.stmts.push_back(std::move(s.node));
-  // Last, once no node is left on st's stacks (nothing after this can throw).
+  program.stmts = st.arena->list<ast::StmtPtr>(st.stmts.begin(), st.stmts.end(),
+                                               [](const auto& piece) { return piece.node; });
   program.arena = std::move(st.arena);
   return program;
 }

@@ -86,7 +86,7 @@ Value Interpreter::eval(const ast::Expr& e) {
     case ast::ExprKind::Number:
       return Value::number(static_cast<const ast::NumberExpr&>(e).value);
     case ast::ExprKind::String:
-      return Value::string(static_cast<const ast::StringExpr&>(e).value);
+      return Value::string(std::string(static_cast<const ast::StringExpr&>(e).value));
     case ast::ExprKind::Bool:
       return Value::boolean(static_cast<const ast::BoolExpr&>(e).value);
     case ast::ExprKind::None:

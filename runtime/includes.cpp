@@ -65,7 +65,11 @@ bool Includes::is_open(const std::string& canonical) const {
   return false;
 }
 
-Includes::Found Includes::find(const ast::IncludeStmt& s) {
+Includes::Found Includes::find(const ast::IncludeStmt& stmt) {
+  struct {
+    SourceLoc loc;
+    std::string path;
+  } s{stmt.loc, std::string(stmt.path)};
   fs::path including_dir = fs::path(s.loc.file->path()).parent_path();
   std::vector<fs::path> candidates;
   if (fs::path(s.path).is_absolute()) {
