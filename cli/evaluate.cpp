@@ -34,7 +34,7 @@ void print_error(const render::SourceRef& where, const std::string& message, con
                  DiagnosticSink& sink) {
   if (where.file && *where.file) {
     if (const SourceFile* f = sources.find(where.file)) {
-      sink.error(SourceLoc{f, where.line, where.col}, message);
+      sink.error(SourceLoc::at(f, where.line, where.col), message);
       return;
     }
     std::cerr << fmt::format("{}:{}:{}: error: {}\n", where.file, where.line, where.col, message);

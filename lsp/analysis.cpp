@@ -23,7 +23,7 @@ Analysis analyze(const std::string& path, const std::string& text, const LineInd
   a.sources = std::make_unique<SourceManager>();
   a.file = a.sources->add(path, text);
   auto error_at_start = [&](std::string message) {
-    a.diagnostics.push_back(Diagnostic{Severity::Error, SourceLoc{a.file, 1, 1}, std::move(message), {}});
+    a.diagnostics.push_back(Diagnostic{Severity::Error, SourceLoc::at(a.file, 1, 1), std::move(message), {}});
   };
   if (std::size_t bad = find_invalid_utf8(text); bad != std::string::npos) {
     // The parser would refuse it the same way; say where.
@@ -36,7 +36,7 @@ Analysis analyze(const std::string& path, const std::string& text, const LineInd
         ++col;
       }
     }
-    a.diagnostics.push_back(Diagnostic{Severity::Error, SourceLoc{a.file, line, col},
+    a.diagnostics.push_back(Diagnostic{Severity::Error, SourceLoc::at(a.file, line, col),
                                        "the text is not valid UTF-8 (or contains a NUL byte) here", {}});
     return a;
   }

@@ -364,8 +364,8 @@ nlohmann::json Server::formatting(Document& doc) {
   try {
     formatted = format_source(file);
   } catch (const LanguageError& e) {
-    throw RequestFailed(fmt::format("cannot format a scene that does not parse: {}:{}: {}", e.diag.loc.line,
-                                    e.diag.loc.col, e.diag.message));
+    throw RequestFailed(fmt::format("cannot format a scene that does not parse: {}:{}: {}", e.diag.loc.line(),
+                                    e.diag.loc.col(), e.diag.message));
   }
   if (formatted == text) return json::array();
   return json::array({{{"range", range_of(doc, 0, text.size())}, {"newText", formatted}}});

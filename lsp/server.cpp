@@ -271,8 +271,8 @@ nlohmann::json Server::diagnostic_to_json(const Document& doc, const Diagnostic&
   // The buffer's own line index, built once: a 10 MB buffer is not rescanned per diagnostic.
   auto bytes_of = [&](const SourceFile& f, SourceLoc loc) {
     std::size_t begin =
-        &f == a.file ? doc.lines.offset_of_loc(loc.line, loc.col) : LineIndex(f.text()).offset_of_loc(loc.line, loc.col);
-    return std::pair{begin, loc.line == 0 ? begin : token_end(f.text(), begin)};
+        &f == a.file ? doc.lines.offset_of_loc(loc.line(), loc.col()) : LineIndex(f.text()).offset_of_loc(loc.line(), loc.col());
+    return std::pair{begin, loc.line() == 0 ? begin : token_end(f.text(), begin)};
   };
   auto location = [&](const SourceFile& f, std::size_t b, std::size_t e) {
     if (&f != a.file) return location_in(f, b, e);
@@ -281,25 +281,25 @@ nlohmann::json Server::diagnostic_to_json(const Document& doc, const Diagnostic&
   json related = json::array();
   std::string message = d.message;
   std::size_t begin = 0, end = 0;
-  if (d.loc.file == a.file || !d.loc.file) {
-    if (d.loc.file) std::tie(begin, end) = bytes_of(*a.file, d.loc);
+  if (d.loc.file() == a.file || !d.loc.file()) {
+    if (d.loc.file()) std::tie(begin, end) = bytes_of(*a.file, d.loc);
   } else {
     // In an included file: shown at the include (the outermost note in this buffer), with the
     // place itself as related information.
-    auto [b, e] = bytes_of(*d.loc.file, d.loc);
-    related.push_back({{"location", location(*d.loc.file, b, e)}, {"message", d.message}});
+    auto [b, e] = bytes_of(*d.loc.file(), d.loc);
+    related.push_back({{"location", location(*d.loc.file(), b, e)}, {"message", d.message}});
     for (auto n = d.notes.rbegin(); n != d.notes.rend(); ++n)
-      if (n->loc.file == a.file) {
+      if (n->loc.file() == a.file) {
         std::tie(begin, end) = bytes_of(*a.file, n->loc);
         break;
       }
-    message = d.message + " (in " + d.loc.file->path() + ")";
+    message = d.message + " (in " + d.loc.file()->path() + ")";
   }
   if (end == begin && begin < a.file->text().size() && a.file->text()[begin] != '\n') ++end;
   for (const Note& n : d.notes) {
-    if (!n.loc.file) continue;
-    auto [b, e] = bytes_of(*n.loc.file, n.loc);
-    related.push_back({{"location", location(*n.loc.file, b, e)}, {"message", n.message}});
+    if (!n.loc.file()) continue;
+    auto [b, e] = bytes_of(*n.loc.file(), n.loc);
+    related.push_back({{"location", location(*n.loc.file(), b, e)}, {"message", n.message}});
   }
   json out = {{"range", range_of(doc, begin, end)},
               {"severity", d.severity == Severity::Error     ? kSeverityError

@@ -12,7 +12,7 @@ class Indexer {
  public:
   Indexer(std::string_view text, const LineIndex& lines, SymbolIndex& out) : text_(text), lines_(lines), out_(out) {}
 
-  std::size_t at(SourceLoc loc) const { return lines_.offset_of_loc(loc.line, loc.col); }
+  std::size_t at(SourceLoc loc) const { return lines_.offset_of_loc(loc.line(), loc.col()); }
   // The end of the body whose '{' is at `open` (one past its '}').
   std::size_t body_end(SourceLoc open) const {
     std::size_t close = matching_close(text_, at(open));

@@ -321,7 +321,7 @@ class Printer {
   void location(SourceLoc loc, bool is_leaf) {
     if (!locations_ || !loc.valid()) return;
     if (!is_leaf) buf_ += ' ';
-    buf_ += fmt::format("@{}:{}", loc.line, loc.col);
+    buf_ += fmt::format("@{}:{}", loc.line(), loc.col());
   }
 
   bool flat(const Form& f) {

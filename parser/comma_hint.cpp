@@ -34,8 +34,8 @@ const std::vector<Positional>& positional_forms() {
 constexpr std::size_t kMaxRewrite = 160;
 
 std::size_t offset_of(const SourceFile& f, SourceLoc loc) {
-  std::string_view line = f.line_text(loc.line);
-  return static_cast<std::size_t>(line.data() - f.text().data()) + loc.col - 1;
+  std::string_view line = f.line_text(loc.line());
+  return static_cast<std::size_t>(line.data() - f.text().data()) + loc.col() - 1;
 }
 
 std::string trim_collapse(std::string_view s) {
@@ -114,7 +114,7 @@ Diagnostic comma_in_block_error(const SourceFile& file, SourceLoc open, std::siz
   std::vector<std::string> parts = top_level_parts(text, brace);
 
   Diagnostic d;
-  d.loc = SourceLoc{&file, 0, 0};
+  d.loc = SourceLoc::whole(&file);
   std::string rewrite;
   if (named) {
     d.message = "properties are separated by spaces or newlines, not commas";

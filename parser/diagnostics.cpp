@@ -27,16 +27,16 @@ void print(std::ostream& out, bool color, Severity sev, SourceLoc loc, const std
   const char* sev_color = !color ? "" : sev == Severity::Error ? "\x1b[1;31m"
                                    : sev == Severity::Warning ? "\x1b[1;35m" : "\x1b[1;36m";
   if (loc.valid()) {
-    out << bold << loc.file->path() << ':' << loc.line << ':' << loc.col << ":" << reset << ' ';
-  } else if (loc.file) {
-    out << bold << loc.file->path() << ":" << reset << ' ';
+    out << bold << loc.file()->path() << ':' << loc.line() << ':' << loc.col() << ":" << reset << ' ';
+  } else if (loc.file()) {
+    out << bold << loc.file()->path() << ":" << reset << ' ';
   } else {
     out << "rts: ";
   }
   out << sev_color << severity_name(sev) << ':' << reset << ' ' << message << '\n';
   if (!with_source || !loc.valid()) return;
-  std::string_view text = loc.file->line_text(loc.line);
-  std::size_t upto = std::min<std::size_t>(loc.col > 0 ? loc.col - 1 : 0, text.size());
+  std::string_view text = loc.file()->line_text(loc.line());
+  std::size_t upto = std::min<std::size_t>(loc.col() > 0 ? loc.col() - 1 : 0, text.size());
   // A long line (a generated scene's 900 KB list) is shown as a window around the column.
   const char* before = "";
   const char* after = "";

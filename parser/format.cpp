@@ -40,8 +40,8 @@ class MarkCollector {
 
  private:
   std::size_t offset(SourceLoc loc) const {
-    std::string_view line = file_.line_text(loc.line);
-    return static_cast<std::size_t>(line.data() - file_.text().data()) + loc.col - 1;
+    std::string_view line = file_.line_text(loc.line());
+    return static_cast<std::size_t>(line.data() - file_.text().data()) + loc.col() - 1;
   }
 
   void stmt(const Stmt& s) {

@@ -141,7 +141,7 @@ std::string decode_string(ParseState& st) {
         std::from_chars(hex.data(), hex.data() + hex.size(), cp, 16);
         if (cp > kMaxCodePoint || (cp >= kSurrogateFirst && cp <= kSurrogateLast)) {
           SourceLoc at = st.string_body_loc;
-          at.col += static_cast<uint32_t>(escape_start);
+          at = at.advanced(static_cast<int32_t>(escape_start));
           throw LanguageError(at, fmt::format("'\\u{{{}}}' is not a valid Unicode code point", hex));
         }
         append_utf8(out, cp);

@@ -19,7 +19,7 @@ struct action : pegtl::nothing<Rule> {};
 
 template <typename Input>
 SourceLoc at(const Input& in, const ParseState& st) {
-  return st.loc(in.iterator());
+  return st.loc(in.begin());
 }
 
 template <typename Input>

@@ -66,7 +66,7 @@ struct control : pegtl::normal<Rule> {
     constexpr pegtl::rewind_mode mode = has_message ? pegtl::rewind_mode::required : M;
     if constexpr (counts_nesting<Rule>) {
       if (st.depth >= st.limits.max_nesting)
-        throw_nesting_too_deep(st.loc(in.iterator()), st.limits.max_nesting);
+        throw_nesting_too_deep(st.loc(in.current()), st.limits.max_nesting);
       ++st.depth;
       struct Leave {
         ParseState& s;
@@ -81,10 +81,10 @@ struct control : pegtl::normal<Rule> {
   template <typename ParseInput>
   [[noreturn]] static void raise(const ParseInput& in, ParseState& st) {
     static_assert(has_message, "every rule under must<> needs a message in grammar/errors.hpp");
-    SourceLoc at = in.empty() ? after_last_token(*st.file) : st.loc(in.iterator());
+    SourceLoc at = in.empty() ? after_last_token(*st.file) : st.loc(in.current());
     std::string message = g::error_message<Rule>;
     if constexpr (std::is_same_v<Rule, g::block_comment_rest>) {
-      at.col -= 2;  // point at the `/*` that was never closed, not just after it
+      at = at.advanced(-2);  // point at the `/*` that was never closed, not just after it
     }
     if constexpr (std::is_same_v<Rule, g::end_of_input>) {
       message += ", found " + describe_found(in.current(), in.end());

@@ -88,9 +88,9 @@ struct ParseState {
   // Interned names by their spelling in the source text (views into file->text()).
   std::unordered_map<std::string_view, ast::Symbol> symbols;
 
-  template <typename Iterator>
-  SourceLoc loc(const Iterator& it) const {
-    return SourceLoc{file, static_cast<uint32_t>(it.line), static_cast<uint32_t>(it.column)};
+  // The location of a character of the text being parsed.
+  SourceLoc loc(const char* at) const {
+    return SourceLoc::at_offset(file, static_cast<std::size_t>(at - file->text().data()));
   }
 
   ast::Symbol symbol(std::string_view spelling) {

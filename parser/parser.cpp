@@ -36,12 +36,8 @@ SourceLoc after_last_token(const SourceFile& file) {
   std::string_view text = file.text();
   std::size_t end = text.size();
   while (end > 0 && grammar::is_blank(text[end - 1])) --end;
-  if (end == 0) return SourceLoc{&file, 1, 1};
   // text[end - 1] ends the last token (or comment) and is not a newline.
-  std::size_t newline = text.rfind('\n', end - 1);
-  std::size_t line_start = newline == std::string_view::npos ? 0 : newline + 1;
-  auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n');
-  return SourceLoc{&file, static_cast<uint32_t>(line), static_cast<uint32_t>(end - line_start + 1)};
+  return SourceLoc::at_offset(&file, end);
 }
 
 }  // namespace parse_detail
@@ -50,7 +46,7 @@ ast::Program parse(const SourceFile& file, const ParseLimits& limits) {
   namespace pegtl = tao::pegtl;
   using parse_detail::ParseState;
   const std::string& text = file.text();
-  pegtl::memory_input<pegtl::tracking_mode::eager, pegtl::eol::lf_crlf> in(
+  pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf> in(
       text.data(), text.data() + text.size(), "");
   ParseState st(file, limits);
   // Rough sizes for a typical scene (one statement per ~50 bytes, a few pieces each).
@@ -68,7 +64,7 @@ ast::Program parse(const SourceFile& file, const ParseLimits& limits) {
     // Every must<> failure is raised by parse_control as a LanguageError; this is a
     // safety net for anything PEGTL itself might report.
     const auto& p = e.positions().front();
-    throw LanguageError(SourceLoc{&file, static_cast<uint32_t>(p.line), static_cast<uint32_t>(p.column)},
+    throw LanguageError(SourceLoc::at(&file, static_cast<uint32_t>(p.line), static_cast<uint32_t>(p.column)),
                         std::string(e.message()));
   }
 

@@ -1,15 +1,75 @@
 #include "parser/source.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <new>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 
 #include <fmt/format.h>
 
 namespace rts {
 
+namespace {
+
+// Which SourceFile a SourceLoc's number names: a two-level table read without a lock (the
+// language server analyses on several threads). Numbers are handed out in order and never
+// reused, so a location outliving its file finds null, never another file; 2^32 - 1 files
+// per process. Both levels are calloc'd: their untouched pages are the system's shared zero
+// page, so a run that loads a few files pays a few pages for the table, not a megabyte.
+class FileTable {
+ public:
+  FileTable() : chunks_(static_cast<Chunk*>(std::calloc(kChunkSize, sizeof(Chunk)))) {
+    if (!chunks_) throw std::bad_alloc();
+  }
+  uint32_t add(const SourceFile* f) {
+    std::lock_guard lock(mutex_);
+    if (next_ == 0) throw SourceError("error: too many source files loaded in one process");
+    const uint32_t id = next_++;
+    std::atomic_ref<Chunk> slot(chunks_[id >> kChunkBits]);
+    Chunk chunk = slot.load(std::memory_order_relaxed);
+    if (!chunk) {
+      chunk = static_cast<Chunk>(std::calloc(kChunkSize, sizeof(const SourceFile*)));
+      if (!chunk) throw std::bad_alloc();
+      slot.store(chunk, std::memory_order_release);
+    }
+    std::atomic_ref<const SourceFile*>(chunk[id & kChunkMask]).store(f, std::memory_order_release);
+    return id;
+  }
+  void remove(uint32_t id) {
+    if (Chunk chunk = std::atomic_ref<Chunk>(chunks_[id >> kChunkBits]).load(std::memory_order_acquire))
+      std::atomic_ref<const SourceFile*>(chunk[id & kChunkMask]).store(nullptr, std::memory_order_release);
+  }
+  const SourceFile* find(uint32_t id) const {
+    Chunk chunk = std::atomic_ref<Chunk>(chunks_[id >> kChunkBits]).load(std::memory_order_acquire);
+    return chunk ? std::atomic_ref<const SourceFile*>(chunk[id & kChunkMask]).load(std::memory_order_acquire)
+                 : nullptr;
+  }
+
+ private:
+  using Chunk = const SourceFile**;
+  static constexpr uint32_t kChunkBits = 16;
+  static constexpr uint32_t kChunkSize = 1u << kChunkBits;
+  static constexpr uint32_t kChunkMask = kChunkSize - 1;
+  std::mutex mutex_;
+  uint32_t next_ = 1;  // 0 means "no file"
+  Chunk* chunks_;
+};
+
+FileTable& file_table() {
+  static FileTable* t = new FileTable;  // never destroyed: locations outlive static teardown
+  return *t;
+}
+
+}  // namespace
+
 SourceFile::SourceFile(std::string path, std::string text)
     : path_(std::move(path)), text_(std::move(text)) {
+  if (text_.size() > kMaxSize)
+    throw SourceError(fmt::format("{}: error: file is larger than {} bytes, the most rts reads", path_, kMaxSize));
   line_starts_.push_back(0);
   // memchr finds newlines a word at a time; scenes can be tens of megabytes.
   const char* begin = text_.data();
@@ -20,6 +80,12 @@ SourceFile::SourceFile(std::string path, std::string text)
     p = static_cast<const char*>(nl) + 1;
     line_starts_.push_back(static_cast<uint32_t>(p - begin));
   }
+  id_ = file_table().add(this);
+}
+
+SourceFile::~SourceFile() {
+  file_table().remove(id_);
+  if (source_detail::line_cache.file_id == id_) source_detail::line_cache = {};
 }
 
 std::string_view SourceFile::line_text(uint32_t line) const {
@@ -29,6 +95,52 @@ std::string_view SourceFile::line_text(uint32_t line) const {
   std::string_view s(text_.data() + begin, end - begin);
   while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.remove_suffix(1);
   return s;
+}
+
+uint32_t SourceFile::line_start(uint32_t line) const {
+  if (line == 0) return 0;
+  if (line > line_starts_.size()) return static_cast<uint32_t>(text_.size());
+  return line_starts_[line - 1];
+}
+
+uint32_t SourceFile::line_of(uint32_t offset) const {
+  auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  return static_cast<uint32_t>(it - line_starts_.begin());  // line_starts_[0] == 0: at least 1
+}
+
+SourceLoc SourceLoc::at(const SourceFile* file, uint32_t line, uint32_t col) {
+  if (!file) return {};
+  if (line == 0) return whole(file);
+  if (line > file->line_count()) line = file->line_count() + 1;  // past the end: the end
+  const uint64_t offset = uint64_t{file->line_start(line)} + (col > 0 ? col - 1 : 0);
+  return at_offset(file, static_cast<std::size_t>(offset));
+}
+
+SourceLoc SourceLoc::at_offset(const SourceFile* file, std::size_t offset) {
+  if (!file) return {};
+  SourceLoc l;
+  l.file_id_ = file->id();
+  l.offset_ = static_cast<uint32_t>(std::min<std::size_t>(offset, SourceFile::kMaxSize));
+  return l;
+}
+
+SourceLoc SourceLoc::whole(const SourceFile* file) {
+  SourceLoc l;
+  if (file) l.file_id_ = file->id();
+  return l;
+}
+
+const SourceFile* SourceLoc::find_file() const { return file_id_ ? file_table().find(file_id_) : nullptr; }
+
+uint32_t SourceLoc::resolve() const {
+  if (!valid()) return 0;
+  const SourceFile* f = file_table().find(file_id_);
+  if (!f) return 0;
+  const uint32_t line = f->line_of(offset_);
+  source_detail::line_cache = source_detail::LineCache{
+      file_id_, f->line_start(line), line < f->line_count() ? f->line_start(line + 1) : static_cast<uint32_t>(SourceFile::kMaxSize + 1),
+      line, f};
+  return line;
 }
 
 std::size_t find_invalid_utf8(std::string_view t) {

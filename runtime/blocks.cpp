@@ -171,7 +171,7 @@ Value Interpreter::define_object(const std::string& kind, SourceLoc loc, const s
   placement_.record(v.id, shape ? ObjectCount{1, 0} : ObjectCount{0, 1});
   for (const render::SceneWarning& w : builder_.take_warnings()) {
     const SourceFile* file = includes_.file_named(w.where.file);
-    warnings_.warning(file ? SourceLoc{file, w.where.line, w.where.col} : loc, w.message);
+    warnings_.warning(file ? SourceLoc::at(file, w.where.line, w.where.col) : loc, w.message);
   }
   return v;
 }

@@ -228,7 +228,7 @@ Value print(BuiltinCall& c) {
     text += c.in.text_of(c.args[i], c.call.loc);
   }
   const SourceLoc& l = c.call.loc;
-  std::cerr << fmt::format("{}:{}:{}: print: {}\n", l.file ? l.file->path() : "", l.line, l.col, text);
+  std::cerr << fmt::format("{}:{}:{}: print: {}\n", l.file() ? l.file()->path() : "", l.line(), l.col(), text);
   return Value::none();
 }
 

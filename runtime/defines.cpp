@@ -10,7 +10,7 @@ void Defines::parse(const std::vector<Define>& defines, Includes& files) {
     const ast::Program& p =
         files.parse_text(fmt::format("<define {}>", d.name), fmt::format("let {} = {}", d.name, d.value), f);
     if (p.stmts.size() != 1 || p.stmts[0]->kind != ast::StmtKind::Let)
-      throw LanguageError(SourceLoc{f, 1, 1}, fmt::format("define '{}={}' is not a single value", d.name, d.value));
+      throw LanguageError(SourceLoc::at(f, 1, 1), fmt::format("define '{}={}' is not a single value", d.name, d.value));
     entries_.push_back(Entry{ast::intern(d.name), static_cast<const ast::LetStmt&>(*p.stmts[0]).value.get(),
                              d.name + "=" + d.value});
   }
@@ -29,7 +29,7 @@ const ast::Expr* Defines::take(ast::Symbol name) {
 void Defines::warn_unmatched(const SourceFile& main, DiagnosticSink& warnings) const {
   for (const Entry& d : entries_)
     if (!d.used)
-      warnings.warning(SourceLoc{&main, 0, 0},
+      warnings.warning(SourceLoc::whole(&main),
                        fmt::format("define '{}' matches no top-level 'let {}' in this file", d.text, *d.name));
 }
 

@@ -70,7 +70,7 @@ Includes::Found Includes::find(const ast::IncludeStmt& stmt) {
     SourceLoc loc;
     std::string path;
   } s{stmt.loc, std::string(stmt.path)};
-  fs::path including_dir = fs::path(s.loc.file->path()).parent_path();
+  fs::path including_dir = fs::path(s.loc.file()->path()).parent_path();
   std::vector<fs::path> candidates;
   if (fs::path(s.path).is_absolute()) {
     candidates.emplace_back(s.path);

@@ -30,8 +30,8 @@ Interpreter::Interpreter(SourceManager& sources, const EvalOptions& options, Dia
 void Interpreter::fail(SourceLoc loc, std::string message) const { throw LanguageError(loc, std::move(message)); }
 
 render::SourceRef Interpreter::ref(SourceLoc loc) {
-  if (!loc.file) return {};
-  return render::SourceRef{loc.file->path().c_str(), loc.line, loc.col};
+  if (!loc.file()) return {};
+  return render::SourceRef{loc.file()->path().c_str(), loc.line(), loc.col()};
 }
 
 void Interpreter::add_notes(Diagnostic& d) const {
@@ -56,7 +56,7 @@ void Interpreter::add_notes(Diagnostic& d) const {
 LanguageError Interpreter::from_scene_error(const render::SceneError& e) const {
   Diagnostic d;
   d.message = e.what();
-  if (const SourceFile* file = includes_.file_named(e.where.file)) d.loc = SourceLoc{file, e.where.line, e.where.col};
+  if (const SourceFile* file = includes_.file_named(e.where.file)) d.loc = SourceLoc::at(file, e.where.line, e.where.col);
   add_notes(d);
   return LanguageError(std::move(d));
 }

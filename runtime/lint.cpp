@@ -19,7 +19,7 @@ std::string declared_file(const std::vector<Property>& props) {
 
 void warn_unused(std::span<const Binding> globals, const SourceFile& main, DiagnosticSink& warnings) {
   for (const Binding& b : globals) {
-    if (b.used || b.loc.file != &main) continue;
+    if (b.used || b.loc.file() != &main) continue;
     std::string what, file;
     bool built = false;  // shapes and lights other than meshes are built (and checked) when declared
     switch (b.value.type) {

@@ -15,7 +15,7 @@ using render::Vec3;
 
 SourceLoc locate(const SourceManager& sources, const render::SourceRef& where) {
   if (where.file && *where.file)
-    if (const SourceFile* f = sources.find(where.file)) return SourceLoc{f, where.line, where.col};
+    if (const SourceFile* f = sources.find(where.file)) return SourceLoc::at(f, where.line, where.col);
   return {};
 }
 
@@ -144,7 +144,7 @@ std::vector<Diagnostic> scene_warnings(const EvalResult& result, const SourceMan
     out.push_back(std::move(d));
   }
   // A black image with no word of why is a trap (a library file rendered by mistake).
-  SourceLoc whole_file{main, 0, 0};
+  SourceLoc whole_file = SourceLoc::whole(main);
   if (result.world_shapes == 0)
     out.push_back({Severity::Warning, whole_file, "the scene places no objects: the image shows only the background", {}});
   else if (result.world_lights == 0 && !path_lit(result.scene, integrator))

@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   try {
     once = rts::format_source(*file);
   } catch (const rts::LanguageError& e) {
-    if (e.diag.loc.file != file) std::abort();
+    if (e.diag.loc.file() != file) std::abort();
     rts::fuzz::check_error(e);
     return 0;
   } catch (const std::logic_error&) {

@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     std::ostringstream out;
     rts::print_ast(out, program, true);
   } catch (const rts::LanguageError& e) {
-    if (e.diag.loc.file != file) std::abort();
+    if (e.diag.loc.file() != file) std::abort();
     rts::fuzz::check_error(e);
   }
   return 0;

@@ -87,8 +87,8 @@ inline std::string write_input(const std::string& name, const uint8_t* data, std
 // An error's location must point into the file it names (a caret past the text is a bug).
 inline void check_location(const SourceLoc& loc) {
   if (!loc.valid()) return;
-  if (loc.line > loc.file->line_count() || loc.col < 1 ||
-      loc.col > loc.file->line_text(loc.line).size() + 1)
+  if (loc.line() > loc.file()->line_count() || loc.col() < 1 ||
+      loc.col() > loc.file()->line_text(loc.line()).size() + 1)
     std::abort();
 }
 

@@ -66,11 +66,11 @@ TEST_CASE("mutated golden scenes parse or fail cleanly", "[fuzz]") {
       } catch (const rts::LanguageError& e) {
         ++failed;
         INFO("input:\n" << text);
-        REQUIRE(e.diag.loc.file == file);
-        REQUIRE(e.diag.loc.line >= 1);
-        REQUIRE(e.diag.loc.line <= file->line_count());
-        REQUIRE(e.diag.loc.col >= 1);
-        REQUIRE(e.diag.loc.col <= file->line_text(e.diag.loc.line).size() + 1);
+        REQUIRE(e.diag.loc.file() == file);
+        REQUIRE(e.diag.loc.line() >= 1);
+        REQUIRE(e.diag.loc.line() <= file->line_count());
+        REQUIRE(e.diag.loc.col() >= 1);
+        REQUIRE(e.diag.loc.col() <= file->line_text(e.diag.loc.line()).size() + 1);
         REQUIRE_FALSE(e.diag.message.empty());
       }
     }

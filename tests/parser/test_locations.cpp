@@ -1,4 +1,5 @@
-// Every node carries the 1-based line and byte column of its first character.
+// Every node carries the 1-based line and byte column of its first character, as a SourceLoc
+// (a file number and a byte offset; line and column are resolved from the file's line table).
 #include <catch2/catch.hpp>
 
 #include "parser_test_support.hpp"
@@ -9,8 +10,8 @@ namespace ast = rts::ast;
 namespace {
 void check_at(const rts::SourceLoc& loc, uint32_t line, uint32_t col) {
   CHECK(loc.valid());
-  CHECK(loc.line == line);
-  CHECK(loc.col == col);
+  CHECK(loc.line() == line);
+  CHECK(loc.col() == col);
 }
 }  // namespace
 
@@ -20,7 +21,7 @@ TEST_CASE("statements, names and operators carry their locations", "[locations]"
   auto& let = static_cast<ast::LetStmt&>(*p.program.stmts[0]);
   check_at(let.loc, 2, 3);
   check_at(let.name_loc, 2, 8);
-  CHECK(let.loc.file == p.file);
+  CHECK(let.loc.file() == p.file);
   auto& mul = static_cast<ast::BinaryExpr&>(*let.value);
   check_at(mul.loc, 2, 16);     // a binary node starts where its left operand starts
   check_at(mul.op_loc, 2, 18);  // the operator itself
@@ -79,4 +80,55 @@ TEST_CASE("macro parameters and strings", "[locations]") {
   check_at(m.params[0].loc, 1, 9);
   check_at(m.params[1].loc, 1, 12);
   check_at(m.params[1].default_value->loc, 1, 16);
+}
+
+TEST_CASE("a SourceLoc is 8 bytes and resolves its line and column through its file", "[locations]") {
+  static_assert(sizeof(rts::SourceLoc) == 8);
+  rts::SourceManager sources;
+  const rts::SourceFile* a = sources.add("a.rts", "one\ntwo\r\n\nfour");
+  const rts::SourceFile* b = sources.add("b.rts", "x\n  y\n");
+  CHECK(a->id() != b->id());
+  // Alternating between files and lines: the per-thread cache of the last line must not leak
+  // one file's line into another's.
+  for (int round = 0; round < 3; ++round) {
+    check_at(rts::SourceLoc::at(a, 2, 3), 2, 3);
+    check_at(rts::SourceLoc::at(b, 2, 3), 2, 3);
+    check_at(rts::SourceLoc::at_offset(a, 0), 1, 1);
+    check_at(rts::SourceLoc::at_offset(a, 4), 2, 1);
+    check_at(rts::SourceLoc::at_offset(a, 9), 3, 1);     // the empty line after "two\r\n"
+    check_at(rts::SourceLoc::at_offset(a, 10), 4, 1);
+    check_at(rts::SourceLoc::at_offset(a, 14), 4, 5);    // the end of the text: after "four"
+    check_at(rts::SourceLoc::at_offset(b, 4), 2, 3);
+  }
+  CHECK(rts::SourceLoc::at(b, 2, 3).file() == b);
+  CHECK(rts::SourceLoc::at(a, 2, 3) == rts::SourceLoc::at_offset(a, 6));
+  CHECK(rts::SourceLoc::at(a, 2, 3).advanced(-2) == rts::SourceLoc::at(a, 2, 1));
+  // A column at the end of a line (a caret after its last character) stays on that line.
+  check_at(rts::SourceLoc::at(a, 1, 4), 1, 4);
+
+  const rts::SourceLoc none;
+  CHECK_FALSE(none.valid());
+  CHECK(none.file() == nullptr);
+  CHECK(none.line() == 0);
+  CHECK(none.col() == 0);
+  const rts::SourceLoc whole = rts::SourceLoc::whole(b);
+  CHECK_FALSE(whole.valid());
+  CHECK(whole.file() == b);
+  CHECK(whole.line() == 0);
+  CHECK(rts::SourceLoc::at(b, 0, 0) == whole);
+}
+
+TEST_CASE("a SourceLoc whose file is gone resolves to nothing, never to another file", "[locations]") {
+  rts::SourceLoc stale;
+  {
+    rts::SourceManager gone;
+    stale = rts::SourceLoc::at(gone.add("gone.rts", "let a = 1\nlet b = 2\n"), 2, 5);
+    check_at(stale, 2, 5);  // resolved (and cached) while the file lives
+  }
+  rts::SourceManager later;
+  const rts::SourceFile* f = later.add("later.rts", "let a = 1\nlet b = 2\n");
+  check_at(rts::SourceLoc::at(f, 2, 5), 2, 5);
+  CHECK(stale.file() == nullptr);
+  CHECK(stale.line() == 0);
+  CHECK(stale.col() == 0);
 }

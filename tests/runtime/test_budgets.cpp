@@ -32,13 +32,13 @@ TEST_CASE("a doubling macro recursion ends at the step budget, naming the macro"
   CHECK(d.message.find("more than 10000 steps") != std::string::npos);
   CHECK(d.message.find("calls to macro 'f'") != std::string::npos);
   CHECK(d.message.find("--max-steps") != std::string::npos);
-  CHECK(d.loc.line == 2);
+  CHECK(d.loc.line() == 2);
 }
 
 TEST_CASE("doubling a list or a string ends at the step budget", "[budgets]") {
   Diagnostic list = eval_diagnostic("let xs = [1]\nfor i in 0 .. 64 { xs = xs + xs }\n", with_steps(1'000'000));
   CHECK(list.message.find("list elements built") != std::string::npos);
-  CHECK(list.loc.line == 2);
+  CHECK(list.loc.line() == 2);
   Diagnostic str = eval_diagnostic("let s = \"ab\"\nfor i in 0 .. 64 { s = s + s }\n", with_steps(1'000'000));
   CHECK(str.message.find("string bytes built") != std::string::npos);
   Diagnostic fmt = eval_diagnostic("let s = \"ab\"\nfor i in 0 .. 64 { s = format(\"{}{}\", s, s) }\n",
@@ -79,7 +79,7 @@ TEST_CASE("groups are counted as they expand, before anything is built", "[budge
       o);
   CHECK(d.message.find("this group expands to 1024 objects, more than the limit of 1000") != std::string::npos);
   CHECK(d.message.find("--max-objects") != std::string::npos);
-  CHECK(d.loc.line == 3);
+  CHECK(d.loc.line() == 3);
   // Placing a group that fits many times over still counts every copy.
   Diagnostic w = eval_diagnostic(
       "let g = group { sphere { radius = 1 } sphere { radius = 2 } }\nfor i in 0 .. 600 { g translate <i, 0, 0> }\n", o);
@@ -89,13 +89,13 @@ TEST_CASE("groups are counted as they expand, before anything is built", "[budge
       "let g = group { sphere { radius = 1 } point_light { position = <0, 5, 0> } }\n"
       "for i in 0 .. 501 { g translate <i, 0, 0> }\n", o);
   CHECK(l.message.find("more than 1000 objects once its groups are expanded") != std::string::npos);
-  CHECK(l.loc.line == 2);
+  CHECK(l.loc.line() == 2);
   Diagnostic c = eval_diagnostic(
       "for i in 0 .. 300 { sphere { radius = 1 } }\n"
       "let d = difference { sphere { radius = 1 } sphere { radius = 0.5 } }\n"
       "for i in 0 .. 701 { d translate <i, 0, 0> }\n", o);
   CHECK(c.message.find("more than 1000 objects") != std::string::npos);
-  CHECK(c.loc.line == 3);
+  CHECK(c.loc.line() == 3);
   CHECK(eval_text("let g = group { sphere { radius = 1 } point_light { position = <0, 5, 0> } }\n"
                   "for i in 0 .. 500 { g translate <i, 0, 0> }\n", o).roots.size() == 500);
 }
@@ -106,7 +106,7 @@ TEST_CASE("the memory budget stops a list before it is built", "[budgets]") {
   Diagnostic d = eval_diagnostic("let xs = [1]\nfor i in 0 .. 64 { xs = xs + xs }\n", o);
   CHECK(d.message.find("memory limit of 256 MiB") != std::string::npos);
   CHECK(d.message.find("--max-memory") != std::string::npos);
-  CHECK(d.loc.line == 2);
+  CHECK(d.loc.line() == 2);
 }
 
 TEST_CASE("the memory budget reaches OBJ loading: a mesh too big for it is a located error", "[budgets]") {
@@ -137,7 +137,7 @@ TEST_CASE("the memory budget reaches OBJ loading: a mesh too big for it is a loc
   fs::remove_all(dir);
   CHECK(message.find("mesh file big.obj") != std::string::npos);
   CHECK(message.find("--max-memory") != std::string::npos);
-  CHECK(loc.line == 2);
+  CHECK(loc.line() == 2);
 }
 
 TEST_CASE("area light samples above the cap are clamped with a located warning", "[budgets]") {

@@ -10,8 +10,8 @@ using rts::test::eval_error;
 TEST_CASE("undefined names suggest a close binding", "[errors]") {
   Diagnostic d = eval_diagnostic("let radius = 1\nsphere { radius = raduis }");
   CHECK(d.message == "undefined name 'raduis'; did you mean 'radius'?");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 19);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 19);
 }
 
 TEST_CASE("errors inside macros carry one note per active call, innermost first", "[errors]") {
@@ -20,21 +20,21 @@ TEST_CASE("errors inside macros carry one note per active call, innermost first"
       "macro outer() { return inner(1) }\n"
       "let y = outer()\n");
   CHECK(d.message == "division by zero");
-  CHECK(d.loc.line == 1);
+  CHECK(d.loc.line() == 1);
   REQUIRE(d.notes.size() == 2);
   CHECK(d.notes[0].message == "in call to macro 'inner' from here");
-  CHECK(d.notes[0].loc.line == 2);
+  CHECK(d.notes[0].loc.line() == 2);
   CHECK(d.notes[1].message == "in call to macro 'outer' from here");
-  CHECK(d.notes[1].loc.line == 3);
+  CHECK(d.notes[1].loc.line() == 3);
 }
 
 TEST_CASE("builder errors become located language errors", "[errors]") {
   Diagnostic d = eval_diagnostic("macro ball(r) { sphere { radius = r  centre = <0,0,0> } }\nball(1)");
   CHECK(d.message == "unknown property 'centre' for sphere; did you mean 'center'? (sphere takes material, center, radius, casts_shadow)");
-  CHECK(d.loc.line == 1);
-  CHECK(d.loc.col == 38);
+  CHECK(d.loc.line() == 1);
+  CHECK(d.loc.col() == 38);
   REQUIRE(d.notes.size() == 1);
-  CHECK(d.notes[0].loc.line == 2);
+  CHECK(d.notes[0].loc.line() == 2);
   CHECK(eval_diagnostic("sphere { }").message == "sphere needs property 'radius'");
   CHECK(eval_diagnostic("sphere { radius = \"big\" }").message ==
         "property 'radius' of sphere expects a number, got a string");
@@ -98,9 +98,9 @@ TEST_CASE("a name declared twice in a scope of many names is still found", "[err
   for (int i = 0; i < 100; ++i) lets += "let v" + std::to_string(i) + " = " + std::to_string(i) + "\n";
   Diagnostic d = eval_diagnostic(lets + "let v7 = 1\n");
   CHECK(d.message.find("'v7' is already defined") == 0);
-  CHECK(d.loc.line == 101);
+  CHECK(d.loc.line() == 101);
   REQUIRE(d.notes.size() == 1);
-  CHECK(d.notes[0].loc.line == 8);
+  CHECK(d.notes[0].loc.line() == 8);
   // Each iteration's body is a new scope with the same start: the same 40 names again are fine.
   std::string body;
   for (int i = 0; i < 40; ++i) body += " let w" + std::to_string(i) + " = i\n";
@@ -108,9 +108,9 @@ TEST_CASE("a name declared twice in a scope of many names is still found", "[err
   // ... and a duplicate inside such a body is found in every iteration's scope.
   Diagnostic in_loop = eval_diagnostic(lets + "for i in 0 .. 3 {\n" + body + " let w3 = 0\n}\n");
   CHECK(in_loop.message.find("'w3' is already defined") == 0);
-  CHECK(in_loop.notes.at(0).loc.line == 105);
+  CHECK(in_loop.notes.at(0).loc.line() == 105);
   // A global defined after a big loop scope was popped is checked against the globals.
   Diagnostic after = eval_diagnostic(lets + "for i in 0 .. 2 {\n" + body + "}\nlet v99 = 0\n");
   CHECK(after.message.find("'v99' is already defined") == 0);
-  CHECK(after.notes.at(0).loc.line == 100);
+  CHECK(after.notes.at(0).loc.line() == 100);
 }

@@ -87,9 +87,9 @@ EvalOptions options_for(const std::string& text) {
 std::string where(const SourceLoc& loc, const fs::path& scene) {
   if (!loc.valid()) return "";
   std::string file;
-  if (fs::path(loc.file->path()) != scene)
-    file = fs::path(loc.file->path()).lexically_relative(scene.parent_path()).generic_string() + ":";
-  return fmt::format("{}{}:{}: ", file, loc.line, loc.col);
+  if (fs::path(loc.file()->path()) != scene)
+    file = fs::path(loc.file()->path()).lexically_relative(scene.parent_path()).generic_string() + ":";
+  return fmt::format("{}{}:{}: ", file, loc.line(), loc.col());
 }
 
 // A line-by-line diff, enough to see what changed.

@@ -207,7 +207,7 @@ TEST_CASE("bad height_field parameters are located errors", "[shapes][height_fie
   CHECK(d.message == "height_field takes either 'file' or 'function', not both");
   d = eval_diagnostic(std::string(kRamp) + "height_field { function = ramp\n  water_level = 2 }");
   CHECK(d.message == "property 'water_level' of height_field must be from 0 to 1, got 2");
-  CHECK(d.loc.line == 3);
+  CHECK(d.loc.line() == 3);
   d = eval_diagnostic(std::string(kRamp) + "height_field { function = ramp  resolution = 1 }");
   CHECK(d.message.find("property 'resolution' of height_field must be a whole number from 2 to 16384") == 0);
   d = eval_diagnostic(std::string(kRamp) + "height_field { function = ramp  resolution = [4, 2.5] }");
@@ -218,6 +218,6 @@ TEST_CASE("bad height_field parameters are located errors", "[shapes][height_fie
   // until fuzz_eval met an imported scene without its image).
   d = eval_diagnostic("height_field {\n  file = \"no_such_height_field.png\" }");
   CHECK(d.message.find("cannot read image 'no_such_height_field.png'") == 0);
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 3);
 }

@@ -299,7 +299,7 @@ TEST_CASE("what a compiled function may not do is a located error", "[patterns]"
   };
   Diagnostic d = diag("for i in 0 .. 3 { }\nreturn 1");
   CHECK(d.message.starts_with("a compiled function (a pattern or isosurface macro) may hold only"));
-  CHECK(d.loc.line == 2);
+  CHECK(d.loc.line() == 2);
   CHECK(diag("return p").message == "macro 'f' returns a vector; a pattern function returns a number");
   CHECK(diag("let s = \"text\"\nreturn 1").message.starts_with("this expression cannot be compiled"));
   CHECK(diag("return print(1)").message.starts_with("'print' cannot be called in a compiled function"));

@@ -2,6 +2,7 @@
 // render` and the language server show about an evaluated scene.
 #include <catch2/catch.hpp>
 
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,17 +13,19 @@
 namespace {
 
 struct Checked {
+  std::unique_ptr<rts::SourceManager> sources;  // the files the warnings' locations point into
   std::vector<rts::Diagnostic> warnings;
   std::string text;  // as the sink prints them
 };
 
 Checked check(const std::string& scene) {
-  rts::SourceManager sources;
+  Checked c;
+  c.sources = std::make_unique<rts::SourceManager>();
+  rts::SourceManager& sources = *c.sources;
   const rts::SourceFile* file = sources.add("test.rts", scene);
   std::ostringstream ignored;
   rts::DiagnosticSink eval_sink(ignored);
   rts::EvalResult r = rts::evaluate_source(sources, *file, rts::EvalOptions{}, eval_sink);
-  Checked c;
   c.warnings = rts::scene_warnings(r, sources, file);
   for (const rts::Diagnostic& d : c.warnings) c.text += rts::format_diagnostic(d);
   return c;
@@ -36,10 +39,10 @@ TEST_CASE("a camera inside a closed shape is a warning at the camera, with the s
   Checked c = check("camera { position = <0, 1, 0>  look_at = <0, 0, 5> }\n" + kLit + "sphere { radius = 3 }\n");
   REQUIRE(c.warnings.size() == 1);
   CHECK(c.warnings[0].severity == rts::Severity::Warning);
-  CHECK(c.warnings[0].loc.line == 1);
+  CHECK(c.warnings[0].loc.line() == 1);
   CHECK(c.text.find("the camera is inside a sphere") != std::string::npos);
   REQUIRE(c.warnings[0].notes.size() == 1);
-  CHECK(c.warnings[0].notes[0].loc.line == 3);
+  CHECK(c.warnings[0].notes[0].loc.line() == 3);
 }
 
 TEST_CASE("the inside test follows the placement's transform and each shape's extent", "[warnings]") {

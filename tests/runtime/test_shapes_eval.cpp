@@ -140,8 +140,8 @@ TEST_CASE("bad isosurface parameters are located errors", "[shapes]") {
   CHECK(d.message.find("isosurface needs property 'function'") == 0);
   d = eval_diagnostic("isosurface {\n  function = 3 }");
   CHECK(d.message == "property 'function' of isosurface expects a macro of one point, got a number");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 3);
   d = eval_diagnostic("macro f(p) { return p.x }\nisosurface { function = f  max_gradient = 0 }");
   CHECK(d.message == "property 'max_gradient' of isosurface must be > 0, got 0");
   d = eval_diagnostic("macro f(p) { return p.x }\nisosurface { function = f  contained_by = cylinder { from = <0,0,0> to = <0,1,0> radius = 1 } }");
@@ -213,8 +213,8 @@ TEST_CASE("bad blob parameters are located errors", "[shapes]") {
   CHECK(d.message == "property 'threshold' of blob must be > 0, got 0");
   d = eval_diagnostic("blob {\n  spheres = [[<0, 0, 0>, -1, 1]] }");
   CHECK(d.message == "blob spheres entry 1: the radius must be > 0, got -1");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 3);
   d = eval_diagnostic("blob { spheres = [[<0, 0, 0>, 1, 0]] }");
   CHECK(d.message == "blob spheres entry 1: the strength must be a non-zero number, got 0");
   d = eval_diagnostic("blob { spheres = [[<0, 0, 0>, 1]] }");
@@ -241,16 +241,16 @@ TEST_CASE("a sor from the language: pairs or vectors, open, and bad points are l
 
   Diagnostic d = eval_diagnostic("sor {\n  points = [[1, 0], [1, 1], [1, 2]] }");
   CHECK(d.message == "sor needs at least 4 points (the first and last set the end slopes), got 3");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 3);
   d = eval_diagnostic("sor {\n  points = [[1, 0], [1, 1], [1, 1], [1, 2]] }");
   CHECK(d.message == "sor point 3 [1, 1]: the heights must increase from point 2 to point 3, but 1 follows 1");
-  CHECK(d.loc.line == 2);
+  CHECK(d.loc.line() == 2);
   d = eval_diagnostic("sor { points = [[1, 0], [1, 2], [1, 1], [1, 3]] }");
   CHECK(d.message == "sor point 3 [1, 1]: the heights must increase from point 2 to point 3, but 1 follows 2");
   d = eval_diagnostic("sor {\n  points = [[1, 0], [-0.5, 1], [1, 2], [1, 3]] }");
   CHECK(d.message == "sor point 2 [-0.5, 1]: the radius must be >= 0");
-  CHECK(d.loc.line == 2);
+  CHECK(d.loc.line() == 2);
   d = eval_diagnostic("sor { points = [[1, 1], [1, 0], [1, 1], [1, 2]] }");
   CHECK(d.message == "sor points 1 and 3 must differ in height (they set the bottom slope)");
   d = eval_diagnostic("sor { points = [[1, 0], [1], [1, 1], [1, 2]] }");
@@ -275,22 +275,22 @@ TEST_CASE("a lathe from the language: a closed profile is a CSG operand, bad poi
 
   Diagnostic d = eval_diagnostic("lathe {\n  points = [[1, 0]] }");
   CHECK(d.message == "lathe needs at least 2 points, got 1");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 3);
   d = eval_diagnostic("lathe {\n  points = [[1, 0], [-1, 1]] }");
   CHECK(d.message == "lathe point 2 [-1, 1]: the radius must be >= 0");
-  CHECK(d.loc.line == 2);
+  CHECK(d.loc.line() == 2);
   d = eval_diagnostic("lathe {\n  spline = \"cubic\"  points = [[1, 0], [0, 0], [1, 1]] }");
   CHECK(d.message == "a lathe with a cubic spline needs at least 4 points (the first and last are control points), "
                      "got 3");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 21);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 21);
   d = eval_diagnostic("lathe { spline = \"bezier\"  points = [[0, 0], [1, 0], [1, 1], [0, 1], [0, 2]] }");
   CHECK(d.message.find("a lathe with a bezier spline needs a multiple of 4 points") == 0);
   d = eval_diagnostic("lathe {\n  spline = \"nurbs\"  points = [[0, 0], [1, 1]] }");
   CHECK(d.message == "lathe spline \"nurbs\" is not one of \"linear\", \"quadratic\", \"cubic\", \"bezier\"");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 3);
   // A cubic's first and last points only shape the curve: they may have r < 0, the others not.
   s = eval_text("lathe { spline = \"cubic\"  points = [[-1, -1], [0, 0], [1, 0.5], [0, 1], [-1, 2]] }\n");
   g = shape_if<render::Lathe>(s.shapes.at(0).geometry);
@@ -328,31 +328,31 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
 
   Diagnostic d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0]] }");
   CHECK(d.message == "prism needs at least 3 points, got 2");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 3);
   d = eval_diagnostic("prism { points = [[0, 0], [1, 0, 2], [0, 1]] }");
   CHECK(d.message == "prism point 2 must be a pair [x, z]");
   d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  height1 = 2  height2 = 2 }");
   CHECK(d.message == "prism height1 and height2 must differ (both are 2)");
-  CHECK(d.loc.line == 3);
-  CHECK(d.loc.col == 16);
+  CHECK(d.loc.line() == 3);
+  CHECK(d.loc.col() == 16);
   d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  spline = \"bezier\" }");
   CHECK(d.message == "a prism with a bezier spline needs a multiple of 4 points (4 per segment: end, control, "
                      "control, end), got 3");
-  CHECK(d.loc.line == 2);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 2);
+  CHECK(d.loc.col() == 3);
   d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  spline = \"smooth\" }");
   CHECK(d.message == "prism spline \"smooth\" is not one of \"linear\", \"quadratic\", \"cubic\", \"bezier\"");
-  CHECK(d.loc.line == 3);
-  CHECK(d.loc.col == 3);
+  CHECK(d.loc.line() == 3);
+  CHECK(d.loc.col() == 3);
   d = eval_diagnostic("prism {\n  points = [[0, 1], [0, 0], [1, 0], [0, 1], [1, 1]]\n  spline = \"quadratic\" }");
   CHECK(d.message == "prism: the quadratic outline from point 2 does not close (a later point must repeat point 2)");
-  CHECK(d.loc.line == 2);
+  CHECK(d.loc.line() == 2);
   s = eval_text("prism { spline = \"quadratic\"  points = [[0, 1], [0, 0], [1, 0], [0, 1], [0, 0]] }\n");
   CHECK(shape_get<render::Prism>(s.shapes.at(0).geometry)->curves.size() == 3);
   d = eval_diagnostic("prism {\n  points = [[0, 0], [1, 0], [0, 1]]\n  sweep = \"radial\" }");
   CHECK(d.message == "prism sweep \"radial\" is not one of \"linear\" or \"conic\"");
-  CHECK(d.loc.line == 3);
+  CHECK(d.loc.line() == 3);
   s = eval_text("prism { points = [[0, 0], [1, 0], [0, 1]]  sweep = \"conic\"  height1 = 0.5 }\n");
   CHECK(shape_get<render::Prism>(s.shapes.at(0).geometry)->conic);
   d = eval_diagnostic("prism { height1 = 0 }");
