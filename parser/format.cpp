@@ -39,10 +39,7 @@ class MarkCollector {
   }
 
  private:
-  std::size_t offset(SourceLoc loc) const {
-    std::string_view line = file_.line_text(loc.line());
-    return static_cast<std::size_t>(line.data() - file_.text().data()) + loc.col() - 1;
-  }
+  std::size_t offset(SourceLoc loc) const { return loc.offset(); }
 
   void stmt(const Stmt& s) {
     marks_.item_starts.insert(offset(s.loc));
@@ -94,6 +91,10 @@ class MarkCollector {
     if (e == nullptr) return;
     switch (e->kind) {
       case ExprKind::Number:
+        // A negative literal is written as a minus before a number (parser/node_builders.cpp).
+        if (const std::size_t at = offset(e->loc); at < file_.text().size() && file_.text()[at] == '-')
+          marks_.unary_ops.insert(at);
+        break;
       case ExprKind::String:
       case ExprKind::Bool:
       case ExprKind::None:

@@ -269,6 +269,20 @@ void finish_params(ParseState& st) {
 // ---------------------------------------------------------------------------------------
 void build_unary(ParseState& st, SourceLoc op_loc, UnaryOp op) {
   Sized<ExprPtr> operand = pop_expr(st);
+  // A minus written before a number literal makes a negative literal, not a node above it:
+  // vectors of negative coordinates are most of a generated scene's numbers, and the value
+  // is the one negation would give (the operand is complete: `-2^2` negates the power). A
+  // literal that is already negative (`--2`) keeps its operator.
+  // The literal's node is this parse's alone: it becomes the negative literal in place.
+  if (op == UnaryOp::Neg && operand.node->kind == ExprKind::Number) {
+    auto& number = static_cast<NumberExpr&>(*operand.node);
+    if (!std::signbit(number.value)) {
+      number.value = -number.value;
+      number.loc = op_loc;
+      push_expr(st, operand.node, operand.height);
+      return;
+    }
+  }
   push_expr(st, st.arena->make<UnaryExpr>(op_loc, op, std::move(operand.node)), operand.height + 1);
 }
 

@@ -64,7 +64,10 @@ TEST_CASE("operator precedence and associativity", "[ast]") {
   CHECK(one("let x = a / b % c") == "(let x (% (/ a b) c))");
   CHECK(one("let x = 2 ^ 3 ^ 2") == "(let x (^ 2 (^ 3 2)))");
   CHECK(one("let x = -2 ^ 2") == "(let x (neg (^ 2 2)))");
-  CHECK(one("let x = 2 ^ -1") == "(let x (^ 2 (neg 1)))");
+  CHECK(one("let x = 2 ^ -1") == "(let x (^ 2 -1))");  // a minus before a literal: a negative literal
+  CHECK(one("let x = --2") == "(let x (neg -2))");      // only once
+  CHECK(one("let x = -(2)") == "(let x -2)");
+  CHECK(one("let x = -0") == "(let x -0)");
   CHECK(one("let x = - -a") == "(let x (neg (neg a)))");
   CHECK(one("let x = +a") == "(let x (pos a))");
   CHECK(one("let x = not a == b") == "(let x (not (== a b)))");
@@ -80,13 +83,13 @@ TEST_CASE("ranges", "[ast]") {
   CHECK(one("let r = 0 .. 20") == "(let r (range .. 0 20))");
   CHECK(one("let r = 0..20") == "(let r (range .. 0 20))");
   CHECK(one("let r = 0 ..= 1 step 0.25") == "(let r (range ..= 0 1 step 0.25))");
-  CHECK(one("let r = a + 1 .. b * 2 step -1") == "(let r (range .. (+ a 1) (* b 2) step (neg 1)))");
+  CHECK(one("let r = a + 1 .. b * 2 step -1") == "(let r (range .. (+ a 1) (* b 2) step -1))");
   CHECK(one("let r = 0 .. 3 == x") == "(let r (== (range .. 0 3) x))");
 }
 
 TEST_CASE("vectors and lists", "[ast]") {
   CHECK(one("let v = <1, 2>") == "(let v (vec 1 2))");
-  CHECK(one("let v = <-1, 2 * x, f(y)>") == "(let v (vec (neg 1) (* 2 x) (call f y)))");
+  CHECK(one("let v = <-1, 2 * x, f(y)>") == "(let v (vec -1 (* 2 x) (call f y)))");
   CHECK(one("let v = <1, 2, 3, 4>") == "(let v (vec 1 2 3 4))");
   CHECK(one("let v = <(a > b), 0, 0>") == "(let v (vec (> a b) 0 0))");
   CHECK(one("let xs = []") == "(let xs (list))");
@@ -124,7 +127,7 @@ TEST_CASE("blocks: properties and statements keep their order", "[ast]") {
   CHECK(one("group { column(-2, 0, 3) sphere { radius = 1 } }") ==
         "(expr\n"
         "    (block group\n"
-        "      (expr (call column (neg 2) 0 3))\n"
+        "      (expr (call column -2 0 3))\n"
         "      (expr\n"
         "        (block sphere\n"
         "          (prop radius 1)))))");

@@ -113,6 +113,9 @@ TEST_CASE("every scene in the repository formats to the same tree, idempotently"
 TEST_CASE("layout: indentation, spacing, blank lines", "[format]") {
   CHECK(fmt("sphere{center=<0,1,0> radius=1}") == "sphere { center = <0, 1, 0>  radius = 1 }\n");
   CHECK(fmt("let  x=-1+ 2*f( a ,b=3 )[0].y") == "let x = -1 + 2 * f(a, b = 3)[0].y\n");
+  // Negative literals are numbers in the AST (no unary node): their minus still binds tight.
+  CHECK(fmt("let v=<1,-2,- 3>\nlet w = a - -2 - 3*-x\nlet z=--2\nlet r=-(2)") ==
+        "let v = <1, -2, -3>\nlet w = a - -2 - 3 * -x\nlet z = --2\nlet r = -(2)\n");
   CHECK(fmt("\n\n\nlet a = 1\n\n\n\nlet b = a - -2\n\n") == "let a = 1\n\nlet b = a - -2\n");
   CHECK(fmt("group {\n\n  sphere {\n radius = 1\n  }\n\n}\n") ==
         "group {\n    sphere {\n        radius = 1\n    }\n}\n");
