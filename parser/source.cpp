@@ -1,5 +1,7 @@
 #include "parser/source.hpp"
 
+#include "parser/position_space.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
@@ -8,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <shared_mutex>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -15,53 +19,23 @@ namespace rts {
 
 namespace {
 
-// Which SourceFile a SourceLoc's number names: a two-level table read without a lock (the
-// language server analyses on several threads). Numbers are handed out in order and never
-// reused, so a location outliving its file finds null, never another file; 2^32 - 1 files
-// per process. Both levels are calloc'd: their untouched pages are the system's shared zero
-// page, so a run that loads a few files pays a few pages for the table, not a megabyte.
-class FileTable {
- public:
-  FileTable() : chunks_(static_cast<Chunk*>(std::calloc(kChunkSize, sizeof(Chunk)))) {
-    if (!chunks_) throw std::bad_alloc();
-  }
-  uint32_t add(const SourceFile* f) {
-    std::lock_guard lock(mutex_);
-    if (next_ == 0) throw SourceError("error: too many source files loaded in one process");
-    const uint32_t id = next_++;
-    std::atomic_ref<Chunk> slot(chunks_[id >> kChunkBits]);
-    Chunk chunk = slot.load(std::memory_order_relaxed);
-    if (!chunk) {
-      chunk = static_cast<Chunk>(std::calloc(kChunkSize, sizeof(const SourceFile*)));
-      if (!chunk) throw std::bad_alloc();
-      slot.store(chunk, std::memory_order_release);
-    }
-    std::atomic_ref<const SourceFile*>(chunk[id & kChunkMask]).store(f, std::memory_order_release);
-    return id;
-  }
-  void remove(uint32_t id) {
-    if (Chunk chunk = std::atomic_ref<Chunk>(chunks_[id >> kChunkBits]).load(std::memory_order_acquire))
-      std::atomic_ref<const SourceFile*>(chunk[id & kChunkMask]).store(nullptr, std::memory_order_release);
-  }
-  const SourceFile* find(uint32_t id) const {
-    Chunk chunk = std::atomic_ref<Chunk>(chunks_[id >> kChunkBits]).load(std::memory_order_acquire);
-    return chunk ? std::atomic_ref<const SourceFile*>(chunk[id & kChunkMask]).load(std::memory_order_acquire)
-                 : nullptr;
-  }
-
- private:
-  using Chunk = const SourceFile**;
-  static constexpr uint32_t kChunkBits = 16;
-  static constexpr uint32_t kChunkSize = 1u << kChunkBits;
-  static constexpr uint32_t kChunkMask = kChunkSize - 1;
-  std::mutex mutex_;
-  uint32_t next_ = 1;  // 0 means "no file"
-  Chunk* chunks_;
-};
-
-FileTable& file_table() {
-  static FileTable* t = new FileTable;  // never destroyed: locations outlive static teardown
+source_detail::PositionSpace& positions() {
+  static auto* t = new source_detail::PositionSpace;  // never destroyed: locations outlive static teardown
   return *t;
+}
+
+// Fills this thread's cache with the file and line holding position p; returns the line (0
+// for no place in a live file).
+uint32_t cache_line(uint32_t p) {
+  const uint32_t generation = source_detail::space_generation();
+  auto [f, first] = positions().find(p);
+  if (!f) return 0;
+  const uint32_t file_hi = first + static_cast<uint32_t>(f->text().size()) + 1;
+  const uint32_t line = f->line_of(p - first);
+  const uint32_t line_hi = line < f->line_count() ? first + f->line_start(line + 1) : file_hi;
+  source_detail::line_cache = source_detail::LineCache{first, file_hi, first + f->line_start(line), line_hi,
+                                                       line, generation, f};
+  return line;
 }
 
 }  // namespace
@@ -80,12 +54,12 @@ SourceFile::SourceFile(std::string path, std::string text)
     p = static_cast<const char*>(nl) + 1;
     line_starts_.push_back(static_cast<uint32_t>(p - begin));
   }
-  id_ = file_table().add(this);
+  first_ = positions().add(this, text_.size() + 1);
 }
 
 SourceFile::~SourceFile() {
-  file_table().remove(id_);
-  if (source_detail::line_cache.file_id == id_) source_detail::line_cache = {};
+  positions().remove(first_);
+  if (source_detail::line_cache.file == this) source_detail::line_cache = {};
 }
 
 std::string_view SourceFile::line_text(uint32_t line) const {
@@ -119,28 +93,29 @@ SourceLoc SourceLoc::at(const SourceFile* file, uint32_t line, uint32_t col) {
 SourceLoc SourceLoc::at_offset(const SourceFile* file, std::size_t offset) {
   if (!file) return {};
   SourceLoc l;
-  l.file_id_ = file->id();
-  l.offset_ = static_cast<uint32_t>(std::min<std::size_t>(offset, SourceFile::kMaxSize));
+  l.at_ = file->first_position() + static_cast<uint32_t>(std::min(offset, file->text().size()));
   return l;
 }
 
 SourceLoc SourceLoc::whole(const SourceFile* file) {
   SourceLoc l;
-  if (file) l.file_id_ = file->id();
+  if (file) l.at_ = kWholeFile | file->first_position();
   return l;
 }
 
-const SourceFile* SourceLoc::find_file() const { return file_id_ ? file_table().find(file_id_) : nullptr; }
+const SourceFile* SourceLoc::find_file() const {
+  if (at_ == 0) return nullptr;
+  cache_line(at_ & ~kWholeFile);  // the file's first position is in its first line
+  const source_detail::LineCache& c = source_detail::line_cache;
+  const uint32_t p = at_ & ~kWholeFile;
+  return p >= c.file_lo && p < c.file_hi ? c.file : nullptr;
+}
 
-uint32_t SourceLoc::resolve() const {
-  if (!valid()) return 0;
-  const SourceFile* f = file_table().find(file_id_);
-  if (!f) return 0;
-  const uint32_t line = f->line_of(offset_);
-  source_detail::line_cache = source_detail::LineCache{
-      file_id_, f->line_start(line), line < f->line_count() ? f->line_start(line + 1) : static_cast<uint32_t>(SourceFile::kMaxSize + 1),
-      line, f};
-  return line;
+uint32_t SourceLoc::resolve() const { return valid() ? cache_line(at_) : 0; }
+
+uint32_t SourceLoc::offset() const {
+  const SourceFile* f = file();
+  return f && valid() ? at_ - f->first_position() : 0;
 }
 
 std::size_t find_invalid_utf8(std::string_view t) {

@@ -2,7 +2,11 @@
 // (a file number and a byte offset; line and column are resolved from the file's line table).
 #include <catch2/catch.hpp>
 
+#include "parser/position_space.hpp"
 #include "parser_test_support.hpp"
+
+#include <cstdint>
+#include <utility>
 
 using rts::testing::parse_text;
 namespace ast = rts::ast;
@@ -82,12 +86,12 @@ TEST_CASE("macro parameters and strings", "[locations]") {
   check_at(m.params[1].default_value->loc, 1, 16);
 }
 
-TEST_CASE("a SourceLoc is 8 bytes and resolves its line and column through its file", "[locations]") {
-  static_assert(sizeof(rts::SourceLoc) == 8);
+TEST_CASE("a SourceLoc is 4 bytes and resolves its line and column through its file", "[locations]") {
+  static_assert(sizeof(rts::SourceLoc) == 4);
   rts::SourceManager sources;
   const rts::SourceFile* a = sources.add("a.rts", "one\ntwo\r\n\nfour");
   const rts::SourceFile* b = sources.add("b.rts", "x\n  y\n");
-  CHECK(a->id() != b->id());
+  CHECK(a->first_position() != b->first_position());
   // Alternating between files and lines: the per-thread cache of the last line must not leak
   // one file's line into another's.
   for (int round = 0; round < 3; ++round) {
@@ -131,4 +135,37 @@ TEST_CASE("a SourceLoc whose file is gone resolves to nothing, never to another 
   CHECK(stale.file() == nullptr);
   CHECK(stale.line() == 0);
   CHECK(stale.col() == 0);
+}
+
+TEST_CASE("when the position space runs out, a freed file's positions go to the first gap that fits", "[locations]") {
+  // Files are only named here, never read: the space stores and returns their addresses.
+  const auto* a = reinterpret_cast<const rts::SourceFile*>(std::uintptr_t{0x1000});
+  const auto* b = reinterpret_cast<const rts::SourceFile*>(std::uintptr_t{0x2000});
+  const auto* c = reinterpret_cast<const rts::SourceFile*>(std::uintptr_t{0x3000});
+  rts::source_detail::PositionSpace space(101);  // positions 1 to 100
+  CHECK(space.add(a, 30) == 1);
+  CHECK(space.add(b, 40) == 31);
+  CHECK(space.find(0).first == nullptr);
+  CHECK(space.find(30) == std::pair<const rts::SourceFile*, uint32_t>{a, 1});
+  CHECK(space.find(31) == std::pair<const rts::SourceFile*, uint32_t>{b, 31});
+  CHECK(space.find(70).first == b);
+  CHECK(space.find(71).first == nullptr);
+  space.remove(1);
+  CHECK(space.find(5).first == nullptr);  // gone, and not yet given to another file
+  // 30 fresh positions left: a file of 20 takes them in order while they last.
+  CHECK(space.add(c, 20) == 71);
+  const uint32_t generation = rts::source_detail::space_generation();
+  // 10 fresh positions left: a file of 25 takes the freed gap at 1, and the generation moves
+  // so that no thread's cache keeps naming a's lines.
+  CHECK(space.add(a, 25) == 1);
+  CHECK(rts::source_detail::space_generation() != generation);
+  CHECK(space.find(25).first == a);
+  CHECK(space.find(26).first == nullptr);
+  CHECK(space.add(b, 5) == 91);  // fresh positions first, while any fit
+  CHECK(space.add(c, 5) == 96);
+  CHECK(space.add(b, 5) == 26);  // then the rest of the gap
+  CHECK_THROWS_AS(space.add(c, 1), rts::SourceError);  // full
+  CHECK(space.find(95).first == b);
+  CHECK(space.find(100).first == c);
+  CHECK(space.find(30) == std::pair<const rts::SourceFile*, uint32_t>{b, 26});
 }
