@@ -153,8 +153,8 @@ class Indexer {
   void block_body(const ast::BlockBody& b) {
     const std::size_t end = body_end(b.open_loc);
     for (const ast::BlockItem& item : b.items) {
-      if (item.stmt) stmt(*item.stmt, end, false);
-      expr(item.value.get());
+      if (item.stmt()) stmt(*item.stmt(), end, false);
+      expr(item.value().get());
     }
   }
 

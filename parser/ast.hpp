@@ -238,12 +238,30 @@ struct MemberExpr : Expr {
 
 // The body of a block: `name = value` properties interleaved with statements (objects,
 // macro calls, loops, lets...). Properties and statements keep their source order.
-struct BlockItem {
-  // Exactly one of the two is set.
-  Symbol property = nullptr;  // `property = value`
-  ExprPtr value;
-  StmtPtr stmt;
+class BlockItem {
+ public:
+  static BlockItem property_item(Symbol name, ExprPtr value, SourceLoc loc) {
+    BlockItem item;
+    item.property = name;
+    item.node_ = value.get();
+    item.loc = loc;
+    return item;
+  }
+  static BlockItem statement_item(StmtPtr stmt, SourceLoc loc) {
+    BlockItem item;
+    item.node_ = stmt.get();
+    item.loc = loc;
+    return item;
+  }
+  // One link, told apart by `property` (24 bytes an item, not 32).
+  ExprPtr value() const { return property ? ExprPtr(static_cast<Expr*>(node_)) : ExprPtr(); }
+  StmtPtr stmt() const { return property ? StmtPtr() : StmtPtr(static_cast<Stmt*>(node_)); }
+
+  Symbol property = nullptr;  // `property = value`; null for a statement
   SourceLoc loc;
+
+ private:
+  void* node_ = nullptr;
 };
 struct BlockBody {
   NodeList<BlockItem> items;
@@ -371,10 +389,11 @@ struct ExprStmt : Stmt {
   ExprStmt(SourceLoc l, ExprPtr e) : Stmt(StmtKind::ExprStmt, l), expr(std::move(e)) {}
 };
 
-// A parsed file: its statements are in its arena.
+// A parsed file: its nodes are in its arena, the list of its own statements beside it.
 struct Program {
   const SourceFile* file = nullptr;
   std::unique_ptr<NodeArena> arena;
+  std::vector<StmtPtr> top_level;  // what `stmts` lists (a vector's buffer survives a move)
   StmtList stmts;
 };
 

@@ -256,10 +256,10 @@ struct Describe {
   Form operator()(const Expr* e) const { return describe_expr(*e); }
   Form operator()(const Stmt* s) const { return describe_stmt(*s); }
   Form operator()(const BlockItem* item) const {
-    if (item->stmt) return describe_stmt(*item->stmt);
+    if (item->stmt()) return describe_stmt(*item->stmt());
     Form f = form("prop", item->loc);
     f.parts.push_back(atom(*item->property));
-    f.parts.push_back(child(item->value.get()));
+    f.parts.push_back(child(item->value().get()));
     return f;
   }
   Form operator()(const Argument* a) const {

@@ -82,8 +82,8 @@ class MarkCollector {
   void block(const BlockBody& body) {
     for (const BlockItem& item : body.items) {
       marks_.item_starts.insert(offset(item.loc));
-      if (item.stmt) stmt(*item.stmt);
-      else expr(item.value.get());
+      if (item.stmt()) stmt(*item.stmt());
+      else expr(item.value().get());
     }
   }
 

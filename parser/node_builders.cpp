@@ -33,7 +33,11 @@ void push_expr(ParseState& st, ExprPtr e, uint32_t height) {
 
 void push_stmt(ParseState& st, StmtPtr s, uint32_t height) {
   SourceLoc loc = s->loc;
-  st.stmts.push_back({std::move(s), checked_height(st, height, loc)});
+  checked_height(st, height, loc);
+  // Outside every bracket a statement is the program's own: nothing will collect it into a
+  // body, so it goes straight to the program's list (no height, no second copy at the end).
+  if (st.opens.empty()) st.top_level.push_back(s);
+  else st.stmts.push_back({s, height});
 }
 
 Sized<ExprPtr> pop_expr(ParseState& st) {
@@ -356,19 +360,12 @@ void build_positional_arg(ParseState& st) {
 void build_property(ParseState& st) {
   Sized<ExprPtr> value = pop_expr(st);
   NamePiece name = pop_name(st);
-  BlockItem item;
-  item.property = name.name;
-  item.value = std::move(value.node);
-  item.loc = name.loc;
-  st.items.push_back({std::move(item), value.height + 1});
+  st.items.push_back({BlockItem::property_item(name.name, value.node, name.loc), value.height + 1});
 }
 
 void build_block_statement(ParseState& st) {
   Sized<StmtPtr> stmt = pop(st.stmts);
-  BlockItem item;
-  item.loc = stmt.node->loc;
-  item.stmt = std::move(stmt.node);
-  st.items.push_back({std::move(item), stmt.height + 1});
+  st.items.push_back({BlockItem::statement_item(stmt.node, stmt.node->loc), stmt.height + 1});
 }
 
 // ---------------------------------------------------------------------------------------

@@ -61,7 +61,8 @@ struct ParseState {
   // The nodes' memory, handed to the Program at the end.
   std::unique_ptr<ast::NodeArena> arena = std::make_unique<ast::NodeArena>();
   std::vector<Sized<ast::ExprPtr>> exprs;
-  std::vector<Sized<ast::StmtPtr>> stmts;
+  std::vector<Sized<ast::StmtPtr>> stmts;  // statements inside brackets, to be collected
+  std::vector<ast::StmtPtr> top_level;     // the program's own statements, in order
   std::vector<Sized<ast::BlockItem>> items;
   std::vector<Sized<ast::Argument>> args;
   std::vector<Sized<ast::Param>> params;

@@ -3,6 +3,7 @@
 #include "parser/parser.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <tao/pegtl.hpp>
@@ -52,7 +53,8 @@ ast::Program parse(const SourceFile& file, const ParseLimits& limits) {
   // Rough sizes for a typical scene (one statement per ~50 bytes, a few pieces each).
   constexpr std::size_t kBytesPerStatement = 64;
   constexpr std::size_t kStackReserve = 64;
-  st.stmts.reserve(text.size() / kBytesPerStatement + kStackReserve);
+  st.top_level.reserve(text.size() / kBytesPerStatement + kStackReserve);
+  st.stmts.reserve(kStackReserve);
   st.exprs.reserve(kStackReserve);
   st.items.reserve(kStackReserve);
   st.names.reserve(kStackReserve);
@@ -70,8 +72,10 @@ ast::Program parse(const SourceFile& file, const ParseLimits& limits) {
 
   ast::Program program;
   program.file = &file;
-  program.stmts = st.arena->list<ast::StmtPtr>(st.stmts.begin(), st.stmts.end(),
-                                               [](const auto& piece) { return piece.node; });
+  // Every bracket closed, so every statement is the program's own (parse_detail::push_stmt).
+  if (!st.stmts.empty()) throw std::logic_error("parser: statements left inside a closed bracket");
+  program.top_level = std::move(st.top_level);
+  program.stmts = ast::StmtList(program.top_level.data(), static_cast<uint32_t>(program.top_level.size()));
   program.arena = std::move(st.arena);
   return program;
 }

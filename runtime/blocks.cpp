@@ -47,9 +47,9 @@ void Interpreter::collect_properties(const ast::BlockBody& body, std::vector<Pro
   push_scope();
   for (const ast::BlockItem& item : body.items) {
     if (item.property) {
-      set_or_add(props, Property{item.property, eval(*item.value), item.loc});
+      set_or_add(props, Property{item.property, eval(*item.value()), item.loc});
     } else {
-      exec(*item.stmt);
+      exec(*item.stmt());
     }
   }
   pop_scope();

@@ -139,14 +139,14 @@ TEST_CASE("name = value is a property in a block body but an assignment in a sta
   auto& block = static_cast<ast::BlockExpr&>(*stmt.expr);
   REQUIRE(block.body.items.size() == 3);
   CHECK(*block.body.items[0].property == "r");
-  CHECK(block.body.items[0].stmt == nullptr);
-  REQUIRE(block.body.items[1].stmt);
-  auto& cond = static_cast<ast::IfStmt&>(*block.body.items[1].stmt);
+  CHECK(block.body.items[0].stmt() == nullptr);
+  REQUIRE(block.body.items[1].stmt());
+  auto& cond = static_cast<ast::IfStmt&>(*block.body.items[1].stmt());
   REQUIRE(cond.then_body.stmts.size() == 1);
   CHECK(cond.then_body.stmts[0]->kind == ast::StmtKind::Assign);
-  REQUIRE(block.body.items[2].stmt);
+  REQUIRE(block.body.items[2].stmt());
   CHECK(block.body.items[2].property == nullptr);
-  auto& add = static_cast<ast::AssignStmt&>(*block.body.items[2].stmt);
+  auto& add = static_cast<ast::AssignStmt&>(*block.body.items[2].stmt());
   CHECK(add.op == ast::AssignOp::Add);
 }
 

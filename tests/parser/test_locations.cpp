@@ -42,10 +42,10 @@ TEST_CASE("blocks, bodies and items", "[locations]") {
   check_at(group.body.open_loc, 1, 7);
   REQUIRE(group.body.items.size() == 1);
   check_at(group.body.items[0].loc, 2, 3);
-  auto& inner = static_cast<ast::ExprStmt&>(*group.body.items[0].stmt);
+  auto& inner = static_cast<ast::ExprStmt&>(*group.body.items[0].stmt());
   auto& sphere = static_cast<ast::BlockExpr&>(*inner.expr);
   check_at(sphere.body.items[0].loc, 2, 12);  // the property name
-  check_at(sphere.body.items[0].value->loc, 2, 21);
+  check_at(sphere.body.items[0].value()->loc, 2, 21);
   auto& loop = static_cast<ast::ForStmt&>(*p.program.stmts[1]);
   check_at(loop.loc, 4, 1);
   check_at(loop.var_loc, 4, 5);
