@@ -176,11 +176,56 @@ struct NameExpr : Expr {
   Symbol name;
   NameExpr(SourceLoc l, Symbol n) : Expr(ExprKind::Name, l), name(n) {}
 };
+// A vector's components: a list of links, or, when every component is a number literal and
+// the literals lie one after another in the arena (they were parsed one after another), the
+// literals themselves, with no list of links (issue 24: `<1, -2, 3>` is most of a generated
+// scene's vectors; the list was 24 of their 96 bytes). Reads as a list of ExprPtr either way.
+class ComponentList {
+ public:
+  class iterator {
+   public:
+    iterator(const ComponentList* list, std::size_t i) : list_(list), i_(i) {}
+    ExprPtr operator*() const { return (*list_)[i_]; }
+    iterator& operator++() {
+      ++i_;
+      return *this;
+    }
+    bool operator!=(const iterator& o) const { return i_ != o.i_; }
+    bool operator==(const iterator& o) const { return i_ == o.i_; }
+
+   private:
+    const ComponentList* list_;
+    std::size_t i_;
+  };
+
+  ComponentList() = default;
+  explicit ComponentList(NodeList<ExprPtr> links) : first_(links.begin()), count_(static_cast<uint32_t>(links.size())) {}
+  // `count` number literals at consecutive addresses from `first`.
+  ComponentList(const NumberExpr* first, uint32_t count) : first_(first), count_(count), literals_(true) {}
+
+  std::size_t size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  bool literals() const { return literals_; }
+  ExprPtr operator[](std::size_t i) const;
+  iterator begin() const { return {this, 0}; }
+  iterator end() const { return {this, count_}; }
+
+ private:
+  const void* first_ = nullptr;
+  uint32_t count_ = 0;
+  bool literals_ = false;
+};
+
 // <x, y, z> (the grammar allows 2 to 4 components; the evaluator decides what it accepts)
 struct VectorExpr : Expr {
-  NodeList<ExprPtr> components;
+  ComponentList components;
   explicit VectorExpr(SourceLoc l) : Expr(ExprKind::Vector, l) {}
 };
+
+inline ExprPtr ComponentList::operator[](std::size_t i) const {
+  if (literals_) return ExprPtr(const_cast<NumberExpr*>(static_cast<const NumberExpr*>(first_) + i));
+  return static_cast<const ExprPtr*>(first_)[i];
+}
 // [a, b, c]
 struct ListExpr : Expr {
   NodeList<ExprPtr> elements;

@@ -196,10 +196,30 @@ void finish_list(ParseState& st) {
   push_expr(st, std::move(list), h + 1);
 }
 
+// Whether the pieces from `mark` on are number literals at consecutive addresses (parsed one
+// after another into the same arena block).
+bool consecutive_literals(const ParseState& st, uint32_t mark) {
+  if (mark >= st.exprs.size() || st.exprs[mark].node->kind != ExprKind::Number) return false;
+  const auto* first = static_cast<const NumberExpr*>(st.exprs[mark].node.get());
+  for (std::size_t k = 1; mark + k < st.exprs.size(); ++k)
+    if (st.exprs[mark + k].node.get() != first + k) return false;  // also rules out other kinds
+  return true;
+}
+
 void finish_vector(ParseState& st) {
   Open o = close_bracket(st);
   auto vec = st.arena->make<VectorExpr>(o.loc);
-  uint32_t h = collect(st, st.exprs, o.mark, vec->components);
+  uint32_t h = 0;
+  if (consecutive_literals(st, o.mark)) {
+    const auto count = static_cast<uint32_t>(st.exprs.size() - o.mark);
+    vec->components = ComponentList(static_cast<const NumberExpr*>(st.exprs[o.mark].node.get()), count);
+    h = 1;
+    st.exprs.resize(o.mark);
+  } else {
+    NodeList<ExprPtr> links;
+    h = collect(st, st.exprs, o.mark, links);
+    vec->components = ComponentList(links);
+  }
   push_expr(st, std::move(vec), h + 1);
 }
 

@@ -96,6 +96,31 @@ TEST_CASE("vectors and lists", "[ast]") {
   CHECK(one("let xs = [1, [2, 3],]") == "(let xs (list 1 (list 2 3)))");
 }
 
+TEST_CASE("a vector of number literals keeps the literals, not a list of links to them", "[ast]") {
+  auto p = parse_text("let a = <1.5, -2, 3e2>\nlet b = <1, +2, 3>\nlet c = <x, 2, 3>\n");
+  REQUIRE(p.program.stmts.size() == 3);
+  auto vec = [&](int k) -> const ast::VectorExpr& {
+    return static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts[k]).value);
+  };
+  const ast::ComponentList& a = vec(0).components;
+  CHECK(a.literals());
+  REQUIRE(a.size() == 3);
+  const double expected[] = {1.5, -2, 300};
+  std::size_t k = 0;
+  for (const ast::ExprPtr& c : a) {  // read as links all the same
+    REQUIRE(c->kind == ast::ExprKind::Number);
+    CHECK(static_cast<const ast::NumberExpr&>(*c).value == expected[k]);
+    CHECK(c.get() == a[k].get());
+    ++k;
+  }
+  CHECK(k == 3);
+  CHECK(a[1]->loc.col() == 15);  // the minus
+  CHECK_FALSE(vec(1).components.literals());  // +2 is an operator above a literal
+  CHECK_FALSE(vec(2).components.literals());
+  CHECK(vec(2).components[0]->kind == ast::ExprKind::Name);
+  CHECK(static_cast<const ast::NumberExpr&>(*vec(2).components[2]).value == 3);
+}
+
 TEST_CASE("calls, indexing and members", "[ast]") {
   CHECK(one("f()") == "(expr (call f))");
   CHECK(one("column(1, 2, h = 3)") == "(expr (call column 1 2 (named h 3)))");
