@@ -2,12 +2,14 @@
 // PEGTL grammar; the evaluator walks it; the S-expression printer (ast_printer.hpp) shows it.
 // Every node carries the SourceLoc of its first character. Nodes, their child lists and
 // their strings live in the program's NodeArena and are freed all at once with the Program
-// (no node has a destructor or a virtual-table pointer: `kind` says what it is). Identifiers are interned Symbols (pointer comparison,
+// (no node has a destructor or a virtual-table pointer: `kind` says what it is). Identifiers are interned Symbols (number comparison,
 // no string hashing at run time).
 #pragma once
 
 #include <cstddef>
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <cstring>
 #include <memory>
 #include <new>
@@ -22,8 +24,35 @@
 
 namespace rts::ast {
 
-// An interned identifier: two Symbols are equal iff they point at the same string.
-using Symbol = const std::string*;
+// An interned identifier, 4 bytes: two Symbols are equal iff they name the same string.
+// The number indexes one process-wide table of the interned strings (never freed), read
+// without a lock; `*symbol` is the name. Half a pointer, because names are in most nodes
+// (issue 24: block items, names, arguments).
+class Symbol {
+ public:
+  Symbol() = default;
+  Symbol(std::nullptr_t) {}
+  const std::string& operator*() const { return *name(); }
+  const std::string* operator->() const { return name(); }
+  explicit operator bool() const { return id_ != 0; }
+  uint32_t id() const { return id_; }
+  friend bool operator==(Symbol a, Symbol b) { return a.id_ == b.id_; }
+  friend bool operator!=(Symbol a, Symbol b) { return a.id_ != b.id_; }
+  friend bool operator==(Symbol a, std::nullptr_t) { return a.id_ == 0; }
+  friend bool operator!=(Symbol a, std::nullptr_t) { return a.id_ != 0; }
+
+ private:
+  friend Symbol intern(std::string_view name);
+  static constexpr uint32_t kChunkBits = 12;
+  static constexpr uint32_t kChunkSize = 1u << kChunkBits;
+  static const std::string*** chunks();  // [id >> kChunkBits][id & (kChunkSize - 1)]
+  const std::string* name() const {
+    const std::string** chunk =
+        std::atomic_ref<const std::string**>(chunks()[id_ >> kChunkBits]).load(std::memory_order_acquire);
+    return chunk[id_ & (kChunkSize - 1)];
+  }
+  uint32_t id_ = 0;  // 0: no symbol
+};
 Symbol intern(std::string_view name);
 
 struct Expr;
@@ -259,8 +288,8 @@ struct RangeExpr : Expr {
 // f(a, b, name = c): positional arguments first, then named ones.
 struct Argument {
   Symbol name = nullptr;  // null for a positional argument
+  SourceLoc loc;          // beside the name: 16 bytes, not 24
   ExprPtr value;
-  SourceLoc loc;
 };
 struct CallExpr : Expr {
   ExprPtr callee;  // usually a NameExpr
@@ -400,8 +429,8 @@ struct WhileStmt : Stmt {
 
 struct Param {
   Symbol name;
-  ExprPtr default_value;  // null when the parameter is required
   SourceLoc loc;
+  ExprPtr default_value;  // null when the parameter is required
 };
 // macro name(a, b = 2) { ... }
 struct MacroStmt : Stmt {
@@ -449,3 +478,8 @@ const char* to_string(TransformOp op);
 const char* to_string(AssignOp op);
 
 }  // namespace rts::ast
+
+template <>
+struct std::hash<rts::ast::Symbol> {
+  std::size_t operator()(rts::ast::Symbol s) const noexcept { return std::hash<uint32_t>{}(s.id()); }
+};

@@ -368,13 +368,13 @@ void build_block(ParseState& st) {
 void build_named_arg(ParseState& st) {
   Sized<ExprPtr> value = pop_expr(st);
   NamePiece name = pop_name(st);
-  st.args.push_back({Argument{name.name, std::move(value.node), name.loc}, value.height + 1});
+  st.args.push_back({Argument{name.name, name.loc, value.node}, value.height + 1});
 }
 
 void build_positional_arg(ParseState& st) {
   Sized<ExprPtr> value = pop_expr(st);
   SourceLoc loc = value.node->loc;
-  st.args.push_back({Argument{nullptr, std::move(value.node), loc}, value.height + 1});
+  st.args.push_back({Argument{nullptr, loc, value.node}, value.height + 1});
 }
 
 void build_property(ParseState& st) {
@@ -454,7 +454,7 @@ void build_param(ParseState& st) {
   if (st.has_default) value = pop_expr(st);
   st.has_default = false;
   NamePiece name = pop_name(st);
-  st.params.push_back({Param{name.name, std::move(value.node), name.loc}, value.height + 1});
+  st.params.push_back({Param{name.name, name.loc, value.node}, value.height + 1});
 }
 
 void build_macro(ParseState& st, SourceLoc loc) {

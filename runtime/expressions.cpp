@@ -17,9 +17,9 @@ constexpr std::size_t kInlineArgs = 8;
 }  // namespace
 
 uint32_t Interpreter::find_builtin(ast::Symbol name) {
-  // Symbols are interned pointers: a direct-mapped cache on the pointer answers repeated
+  // Symbols are interned numbers: a direct-mapped cache on the number answers repeated
   // calls (sin, cos... in loops) without hashing.
-  BuiltinCacheEntry& slot = builtin_cache_[(reinterpret_cast<std::uintptr_t>(name) >> 4) % kBuiltinCacheSize];
+  BuiltinCacheEntry& slot = builtin_cache_[name.id() % kBuiltinCacheSize];
   if (slot.name == name) return slot.id;
   auto it = builtins_.find(name);
   uint32_t id = it == builtins_.end() ? kNotBuiltin : it->second;

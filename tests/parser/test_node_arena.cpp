@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "parser/ast.hpp"
@@ -63,4 +64,32 @@ TEST_CASE("a parse that fails part-way frees the nodes it built", "[ast]") {
   // Under the sanitizers: no use after free (the stacks' nodes go before their arena) and no leak.
   CHECK_FALSE(error_of("let a = [1, 2, <3, 4, 5>]\nsphere { center = <0, 1, 0> radius = \"a long string to own\" ").empty());
   CHECK_FALSE(error_of("macro f(p) { return <p.x, p.y + 1, 2 * (3 + 4)> }\nlet b = f(<1, 2, 3>) +").empty());
+}
+
+TEST_CASE("symbols are 4-byte numbers naming their interned strings, from any thread", "[ast]") {
+  static_assert(sizeof(ast::Symbol) == 4);
+  const ast::Symbol a = ast::intern("symbol_test_alpha");
+  const ast::Symbol b = ast::intern("symbol_test_beta");
+  CHECK(a != b);
+  CHECK(a == ast::intern(std::string("symbol_test_") + "alpha"));
+  CHECK(*a == "symbol_test_alpha");
+  CHECK(a->size() == 17);
+  CHECK(std::hash<ast::Symbol>{}(a) != std::hash<ast::Symbol>{}(b));
+  const ast::Symbol none;
+  CHECK_FALSE(none);
+  CHECK(none == nullptr);
+  CHECK(a != nullptr);
+  // More names than one table chunk holds, interned from two threads at once: each keeps its
+  // number and its name.
+  std::vector<ast::Symbol> first(6000), second(6000);
+  std::thread other([&] {
+    for (int i = 0; i < 6000; ++i) second[i] = ast::intern("symbol_test_t2_" + std::to_string(i));
+  });
+  for (int i = 0; i < 6000; ++i) first[i] = ast::intern("symbol_test_t1_" + std::to_string(i));
+  other.join();
+  for (int i = 0; i < 6000; i += 599) {
+    CHECK(*first[i] == "symbol_test_t1_" + std::to_string(i));
+    CHECK(*second[i] == "symbol_test_t2_" + std::to_string(i));
+    CHECK(first[i] == ast::intern("symbol_test_t1_" + std::to_string(i)));
+  }
 }
