@@ -1,17 +1,11 @@
 #include "parser/source.hpp"
 
-#include "parser/position_space.hpp"
-
 #include <algorithm>
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
-#include <shared_mutex>
-#include <utility>
+
+#include "parser/position_space.hpp"
 
 #include <fmt/format.h>
 
