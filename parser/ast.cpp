@@ -5,9 +5,8 @@
 #include <cstdlib>
 #include <mutex>
 #include <new>
-#include <unordered_map>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 
 namespace rts::ast {
 namespace {

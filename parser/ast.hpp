@@ -2,15 +2,15 @@
 // PEGTL grammar; the evaluator walks it; the S-expression printer (ast_printer.hpp) shows it.
 // Every node carries the SourceLoc of its first character. Nodes, their child lists and
 // their strings live in the program's NodeArena and are freed all at once with the Program
-// (no node has a destructor or a virtual-table pointer: `kind` says what it is). Identifiers are interned Symbols (number comparison,
-// no string hashing at run time).
+// (no node has a destructor or a virtual-table pointer: `kind` says what it is).
+// Identifiers are interned Symbols (number comparison, no string hashing at run time).
 #pragma once
 
-#include <cstddef>
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -327,7 +327,7 @@ class BlockItem {
     item.loc = loc;
     return item;
   }
-  // One link, told apart by `property` (24 bytes an item, not 32).
+  // One link, told apart by `property` (16 bytes an item with the 4-byte symbol, not 32).
   ExprPtr value() const { return property ? ExprPtr(static_cast<Expr*>(node_)) : ExprPtr(); }
   StmtPtr stmt() const { return property ? StmtPtr() : StmtPtr(static_cast<Stmt*>(node_)); }
 

@@ -66,20 +66,17 @@ bool Includes::is_open(const std::string& canonical) const {
 }
 
 Includes::Found Includes::find(const ast::IncludeStmt& stmt) {
-  struct {
-    SourceLoc loc;
-    std::string path;
-  } s{stmt.loc, std::string(stmt.path)};
-  fs::path including_dir = fs::path(s.loc.file()->path()).parent_path();
+  const std::string path(stmt.path);
+  fs::path including_dir = fs::path(stmt.loc.file()->path()).parent_path();
   std::vector<fs::path> candidates;
-  if (fs::path(s.path).is_absolute()) {
-    candidates.emplace_back(s.path);
-  } else if (!names_standard_library(s.path)) {
-    candidates.push_back(including_dir / s.path);
-    for (const std::string& dir : options_.include_paths) candidates.push_back(fs::path(dir) / s.path);
+  if (fs::path(path).is_absolute()) {
+    candidates.emplace_back(path);
+  } else if (!names_standard_library(path)) {
+    candidates.push_back(including_dir / path);
+    for (const std::string& dir : options_.include_paths) candidates.push_back(fs::path(dir) / path);
   }
   // Then the standard library (docs/library.md): after the scene's own files, so they win.
-  for (fs::path& c : standard_library_candidates(stdlib_dir(), s.path)) candidates.push_back(std::move(c));
+  for (fs::path& c : standard_library_candidates(stdlib_dir(), path)) candidates.push_back(std::move(c));
   std::error_code ec;
   const fs::path* found = nullptr;
   for (const fs::path& c : candidates) {
@@ -89,11 +86,11 @@ Includes::Found Includes::find(const ast::IncludeStmt& stmt) {
     }
     // A directory, FIFO or device of that name is named as such (reading a FIFO would block).
     if (std::string kind = render::non_regular_kind(c.string()); !kind.empty())
-      fail(s.loc, fmt::format("cannot include '{}': '{}' is {}, not a scene file", s.path, c.string(), kind));
+      fail(stmt.loc, fmt::format("cannot include '{}': '{}' is {}, not a scene file", path, c.string(), kind));
   }
   if (!found) {
-    if (names_standard_library(s.path))
-      fail(s.loc, fmt::format("cannot find include file '{}' in the standard library{}", s.path,
+    if (names_standard_library(path))
+      fail(stmt.loc, fmt::format("cannot find include file '{}' in the standard library{}", path,
                               stdlib_dir().empty() ? " (no standard library folder was found: set RTS_STDLIB)"
                                                    : " " + stdlib_dir()));
     std::string where = "next to this file";
@@ -104,15 +101,15 @@ Includes::Found Includes::find(const ast::IncludeStmt& stmt) {
     }
     if (stdlib_dir().empty())
       where += " (nor a standard library: none was found; set RTS_STDLIB to its folder)";
-    else if (fs::path(s.path).extension() == ".inc" && !fs::path(s.path).has_parent_path())
+    else if (fs::path(path).extension() == ".inc" && !fs::path(path).has_parent_path())
       where += fmt::format(" (rts's standard library has no '{}' either; docs/library.md lists its files)",
-                           fs::path(s.path).stem().string());
-    fail(s.loc, fmt::format("cannot find include file '{}' {}", s.path, where));
+                           fs::path(path).stem().string());
+    fail(stmt.loc, fmt::format("cannot find include file '{}' {}", path, where));
   }
   std::string canonical = fs::weakly_canonical(*found, ec).string();
-  if (!read_policy_.allows(found->string())) fail(s.loc, read_policy_.refusal(s.path, found->string()));
+  if (!read_policy_.allows(found->string())) fail(stmt.loc, read_policy_.refusal(path, found->string()));
   if (!is_scene_file_name(canonical))
-    fail(s.loc, fmt::format("cannot include '{}': included files must be scene files named *.rts or *.inc{}", s.path,
+    fail(stmt.loc, fmt::format("cannot include '{}': included files must be scene files named *.rts or *.inc{}", path,
                             canonical != found->lexically_normal().string()
                                 ? fmt::format(" (it leads to '{}')", canonical)
                                 : ""));

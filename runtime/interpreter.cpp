@@ -30,8 +30,9 @@ Interpreter::Interpreter(SourceManager& sources, const EvalOptions& options, Dia
 void Interpreter::fail(SourceLoc loc, std::string message) const { throw LanguageError(loc, std::move(message)); }
 
 render::SourceRef Interpreter::ref(SourceLoc loc) {
-  if (!loc.file()) return {};
-  return render::SourceRef{loc.file()->path().c_str(), loc.line(), loc.col()};
+  const SourceFile* file = loc.file();
+  if (!file) return {};
+  return render::SourceRef{file->path().c_str(), loc.line(), loc.col()};
 }
 
 void Interpreter::add_notes(Diagnostic& d) const {
