@@ -25,7 +25,7 @@ class Indexer {
   }
 
   void stmts(const ast::StmtList& list, std::size_t scope_end, bool top) {
-    for (const ast::StmtPtr& s : list) stmt(*s, scope_end, top);
+    for (const ast::StmtLink& s : list) stmt(*s, scope_end, top);
   }
 
   void body(const ast::Body& b) { stmts(b.stmts, body_end(b.open_loc), false); }
@@ -249,7 +249,7 @@ SymbolIndex index_program(const ast::Program& program, std::string_view text, co
   Indexer ix(text, lines, out);
   // Top-level names reach past the end: kept for a later text that does not parse (typing at
   // the end of the file), they are still visible there.
-  ix.stmts(program.stmts, SIZE_MAX, true);
+  ix.stmts(program.stmts(), SIZE_MAX, true);
   return out;
 }
 

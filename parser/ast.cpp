@@ -1,7 +1,9 @@
 // Symbol interning and operator names for the AST.
 #include "parser/ast.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <mutex>
 #include <new>
@@ -64,6 +66,93 @@ Symbol intern(std::string_view name) {
   }
   s.id_ = id;
   return s;
+}
+
+namespace {
+
+// The short form of a decimal spelling (digits, an optional fraction, an optional exponent):
+// its significant digits as an integer and the power of ten; false when they do not fit.
+bool short_decimal(std::string_view text, int32_t& mantissa, int& exponent) {
+  constexpr int kMaxDigits = 9;  // any 9 digits fit an int32_t
+  uint32_t digits = 0;
+  int significant = 0;    // digits kept (leading zeros are not)
+  int pending_zeros = 0;  // zeros after the last nonzero digit: kept only if one follows
+  int fraction_digits = 0;
+  bool fraction = false;
+  std::size_t i = 0;
+  for (; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '.') {
+      fraction = true;
+      continue;
+    }
+    if (c < '0' || c > '9') break;
+    if (fraction) ++fraction_digits;
+    if (c == '0') {
+      if (significant > 0) ++pending_zeros;
+      continue;
+    }
+    for (; pending_zeros > 0; --pending_zeros) {
+      digits *= 10;
+      if (++significant > kMaxDigits) return false;
+    }
+    digits = digits * 10 + static_cast<uint32_t>(c - '0');
+    if (++significant > kMaxDigits) return false;
+  }
+  int written_exponent = 0;
+  if (i < text.size()) {  // [eE][+-]?digits (the grammar's)
+    int sign = 1;
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) sign = text[i++] == '-' ? -1 : 1;
+    for (; i < text.size(); ++i) {
+      written_exponent = written_exponent * 10 + (text[i] - '0');
+      if (written_exponent > 1000) return false;
+    }
+    written_exponent *= sign;
+  }
+  // Dropped trailing zeros each raise the power by one.
+  const int scale = significant == 0 ? 0 : written_exponent - fraction_digits + pending_zeros;
+  if (scale < -NumberExpr::kMaxExponent || scale > NumberExpr::kMaxExponent) return false;
+  mantissa = static_cast<int32_t>(digits);
+  exponent = scale;
+  return true;
+}
+
+}  // namespace
+
+NodePtr<NumberExpr> make_number(NodeArena& arena, SourceLoc loc, double value, std::string_view spelling) {
+  int32_t mantissa = 0;
+  int exponent = 0;
+  bool found = false;
+  if (value == 0 && std::signbit(value)) return arena.make<NumberExpr>(loc, 0, NumberExpr::kNegativeZero);
+  if (!spelling.empty()) {
+    found = short_decimal(spelling, mantissa, exponent);
+  } else if (std::fabs(value) < 2147483648.0 && value == std::trunc(value)) {
+    mantissa = static_cast<int32_t>(value);
+    found = true;
+  }
+  if (found) {
+    auto n = arena.make<NumberExpr>(loc, mantissa, static_cast<uint8_t>(exponent + NumberExpr::kMaxExponent));
+    // The short form must give the very value: a spelling the scan misread would differ.
+    const double back = n->value();
+    if (std::memcmp(&back, &value, sizeof value) == 0) return n;
+    n->aux = NumberExpr::kWide;  // this node's 12 bytes stay unused; a wide one follows
+  }
+  auto n = arena.make_with_tail<NumberExpr>(sizeof(double), loc, 0, NumberExpr::kWide);
+  std::memcpy(reinterpret_cast<std::byte*>(n.get()) + sizeof(NumberExpr), &value, sizeof value);
+  return n;
+}
+
+void NumberExpr::negate() {
+  if (aux <= 2 * kMaxExponent) {
+    if (mantissa != 0) mantissa = -mantissa;
+    else aux = kNegativeZero;
+  } else if (aux == kNegativeZero) {
+    aux = kMaxExponent;  // +0
+  } else {
+    double v = -value();
+    std::memcpy(reinterpret_cast<std::byte*>(this) + sizeof(NumberExpr), &v, sizeof v);
+  }
 }
 
 const char* to_string(UnaryOp op) {

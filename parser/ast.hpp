@@ -7,6 +7,7 @@
 #pragma once
 
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -58,9 +59,8 @@ Symbol intern(std::string_view name);
 struct Expr;
 struct Stmt;
 
-// A link from a node to another node of the same program. Nodes do not own each other:
-// their memory is the program's NodeArena's and goes with it, and no node has anything to
-// destroy (its lists and strings live in the same arena), so a link is a bare pointer.
+// A pointer to a node, held outside the nodes: on the parser's stacks, in the evaluator's
+// locals, in Program. Nodes do not own each other: their memory is the program's NodeArena's.
 template <class T>
 class NodePtr {
  public:
@@ -83,43 +83,117 @@ class NodePtr {
 using ExprPtr = NodePtr<Expr>;
 using StmtPtr = NodePtr<Stmt>;
 
-// A node's children, in order: a run of elements in the arena (read-only once built).
+// A link held inside the arena (in a node or in a node's list) to something built before it
+// in the same arena: the distance back from the link to its target, 4 bytes instead of a
+// pointer's 8 (issue 24: links were about a third of the arena). The parser builds bottom
+// up, so a node's children, lists and strings always come before it, and the arena hands
+// out addresses upward from one reserved range of at most 4 GiB: every target is below its
+// link and within reach. The distance is only meaningful where the link lies, so a link is
+// never copied: it is read (`get()`, `->`, converted to a NodePtr) or set to a target.
+// Distance 0 is "no target" (nothing links to itself).
+class RawLink {
+ public:
+  RawLink() = default;
+  RawLink(const RawLink&) = delete;
+  RawLink& operator=(const RawLink&) = delete;
+
+  const void* raw() const { return back_ == 0 ? nullptr : target(); }
+  // Where the link points, for a link known to be set (or an empty list's start: the link
+  // itself). No test for "no target": reading through the tree costs one subtraction.
+  const void* target() const { return reinterpret_cast<const void*>(reinterpret_cast<std::uintptr_t>(this) - back_); }
+  void reset(const void* target) {
+    if (target == nullptr) {
+      back_ = 0;
+      return;
+    }
+    const auto self = reinterpret_cast<std::uintptr_t>(this);
+    const auto at = reinterpret_cast<std::uintptr_t>(target);
+    if (at >= self || self - at > UINT32_MAX) unreachable(target);
+    back_ = static_cast<uint32_t>(self - at);
+  }
+
+ private:
+  [[noreturn]] void unreachable(const void* target) const;  // a builder bug: throws logic_error
+  uint32_t back_ = 0;
+};
+
+template <class T>
+class Link : public RawLink {
+ public:
+  Link() = default;
+  Link(std::nullptr_t) {}
+  template <class U, class = std::enable_if_t<std::is_convertible_v<U*, T*>>>
+  Link(NodePtr<U> target) {
+    reset(static_cast<T*>(target.get()));
+  }
+  template <class U, class = std::enable_if_t<std::is_convertible_v<U*, T*>>>
+  Link& operator=(NodePtr<U> target) {
+    reset(static_cast<T*>(target.get()));
+    return *this;
+  }
+
+  T* get() const { return static_cast<T*>(const_cast<void*>(raw())); }
+  T& operator*() const { return *static_cast<T*>(const_cast<void*>(target())); }
+  T* operator->() const { return static_cast<T*>(const_cast<void*>(target())); }
+  explicit operator bool() const { return raw() != nullptr; }
+  operator NodePtr<T>() const { return NodePtr<T>(get()); }
+  friend bool operator==(const Link& a, std::nullptr_t) { return a.raw() == nullptr; }
+  friend bool operator!=(const Link& a, std::nullptr_t) { return a.raw() != nullptr; }
+};
+using ExprLink = Link<Expr>;
+using StmtLink = Link<Stmt>;
+
+// A run of elements just built in the arena, before a node takes it (NodeList).
+template <class T>
+struct ListPiece {
+  T* first = nullptr;
+  uint32_t count = 0;
+};
+
+// A node's children, in order: a run of elements in the arena, linked from the node
+// (read-only once built; 8 bytes).
 template <class T>
 class NodeList {
  public:
   NodeList() = default;
-  NodeList(const T* first, uint32_t count) : first_(first), count_(count) {}
+  explicit NodeList(ListPiece<T> piece) { *this = piece; }
+  NodeList& operator=(ListPiece<T> piece) {
+    first_.reset(piece.first);
+    count_ = piece.count;
+    return *this;
+  }
 
-  const T* begin() const { return first_; }
-  const T* end() const { return first_ + count_; }
+  const T* begin() const { return static_cast<const T*>(first_.target()); }  // empty: [link, link)
+  const T* end() const { return begin() + count_; }
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
-  const T& operator[](std::size_t i) const { return first_[i]; }
+  const T& operator[](std::size_t i) const { return begin()[i]; }
   const T& at(std::size_t i) const {
     if (i >= count_) throw std::out_of_range("NodeList::at");
-    return first_[i];
+    return begin()[i];
   }
-  const T& front() const { return first_[0]; }
-  const T& back() const { return first_[count_ - 1]; }
+  const T& front() const { return begin()[0]; }
+  const T& back() const { return begin()[count_ - 1]; }
 
  private:
-  const T* first_ = nullptr;
+  RawLink first_;
   uint32_t count_ = 0;
 };
-using StmtList = NodeList<StmtPtr>;
+using StmtList = NodeList<StmtLink>;
 
-// Where a program's nodes live: blocks taken from the heap and handed out in order, never
-// freed one by one. Profile finding (issue 24, heaptrack of `rts parse` on a generated scene):
-// a statement of ~70 bytes became about 14 heap blocks, each with the allocator's header and
-// rounding (930k allocations for 5 MB of text, the peak 12.6 times the file); nodes, their
-// child vectors and their virtual-table pointers were most of them. Nodes, their lists and
-// their strings now all come from here, and nothing in the arena has a destructor: a
-// program is freed block by block. The blocks grow from kFirstBlock to kLargestBlock, so
-// that a small include costs little. Whoever holds the nodes must hold the arena as long
-// (Program, ParseState).
+// Where a program's nodes live: one range of address space reserved for the program (so
+// that links can be 4-byte distances, above), its pages committed as the parse reaches
+// them, handed out in order and never freed one by one. Profile finding (issue 24, heaptrack
+// of `rts parse` on a generated scene): a statement of ~70 bytes had become about 14 heap
+// blocks, each with the allocator's header and rounding; nodes, their lists and their
+// strings now all come from here, and nothing in the arena has a destructor. The range is
+// sized from the text to parse (kReservePerTextByte, at most kMaxReserve, less if the
+// address space is limited); a tree that outgrows it is an error. Whoever holds the nodes
+// must hold the arena as long (Program, ParseState).
 class NodeArena {
  public:
-  NodeArena() = default;
+  explicit NodeArena(std::size_t text_size = 0);
+  ~NodeArena();
   NodeArena(const NodeArena&) = delete;
   NodeArena& operator=(const NodeArena&) = delete;
 
@@ -130,15 +204,22 @@ class NodeArena {
     void* at = allocate(sizeof(T), alignof(T));
     return NodePtr<T>(new (at) T(std::forward<Args>(args)...));
   }
-  // The list of `get(x)` for each x in [first, last), in the arena.
+  // A node with `tail` more bytes just after it (NumberExpr's wide form).
+  template <class T, class... Args>
+  NodePtr<T> make_with_tail(std::size_t tail, Args&&... args) {
+    static_assert(std::is_trivially_destructible_v<T>, "an AST node has nothing to destroy");
+    void* at = allocate(sizeof(T) + tail, alignof(T));
+    return NodePtr<T>(new (at) T(std::forward<Args>(args)...));
+  }
+  // The elements T(get(x)) for each x in [first, last), one after another in the arena.
   template <class T, class It, class Get>
-  NodeList<T> list(It first, It last, Get get) {
+  ListPiece<T> list(It first, It last, Get get) {
     static_assert(std::is_trivially_destructible_v<T>, "a node's list has nothing to destroy");
     const auto count = static_cast<std::size_t>(last - first);
     if (count == 0) return {};
     T* at = static_cast<T*>(allocate(count * sizeof(T), alignof(T)));
     for (std::size_t k = 0; first != last; ++first, ++k) new (at + k) T(get(*first));
-    return NodeList<T>(at, static_cast<uint32_t>(count));
+    return {at, static_cast<uint32_t>(count)};
   }
   // A copy of `text` in the arena (a view that lives as long as the arena).
   std::string_view text(std::string_view text) {
@@ -147,29 +228,29 @@ class NodeArena {
     std::memcpy(at, text.data(), text.size());
     return {static_cast<const char*>(at), text.size()};
   }
-  // Bytes taken from the heap (the blocks' sizes).
+  // Bytes of the range in use (committed pages), and the range's size.
+  std::size_t committed() const { return committed_; }
   std::size_t reserved() const { return reserved_; }
 
+  // Address space reserved per byte of text (the densest text, `a+a+a...`, needs about
+  // 22 bytes of nodes per byte; typical scenes 3-5), at least kMinReserve, at most
+  // kMaxReserve (the reach of a link).
+  static constexpr std::size_t kReservePerTextByte = 32;
+  static constexpr std::size_t kMinReserve = std::size_t{64} << 20;
+  static constexpr std::size_t kMaxReserve = std::size_t{4} << 30;
+
  private:
-  static constexpr std::size_t kFirstBlock = 4096;
-  static constexpr std::size_t kLargestBlock = std::size_t{1} << 20;
   void* allocate(std::size_t size, std::size_t align) {
     std::size_t at = (used_ + align - 1) & ~(align - 1);
-    if (blocks_.empty() || at + size > block_size_) {
-      block_size_ = blocks_.empty() ? kFirstBlock : std::min(2 * block_size_, kLargestBlock);
-      if (block_size_ < size) block_size_ = size;
-      blocks_.push_back(std::make_unique<std::max_align_t[]>((block_size_ + sizeof(std::max_align_t) - 1) /
-                                                              sizeof(std::max_align_t)));
-      reserved_ += block_size_;
-      at = 0;
-    }
+    if (at + size > committed_) commit(at + size);
     used_ = at + size;
-    return reinterpret_cast<std::byte*>(blocks_.back().get()) + at;
+    return base_ + at;
   }
-  std::vector<std::unique_ptr<std::max_align_t[]>> blocks_;
-  std::size_t block_size_ = 0;
-  std::size_t used_ = 0;
+  void commit(std::size_t end);  // more pages, or throws when the range is spent
+  std::byte* base_ = nullptr;
   std::size_t reserved_ = 0;
+  std::size_t committed_ = 0;
+  std::size_t used_ = 0;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -182,14 +263,43 @@ enum class ExprKind : uint8_t {
 
 struct Expr {
   ExprKind kind;
+  uint8_t aux = 0;  // a byte of the header a node kind may use (NumberExpr)
   SourceLoc loc;
   explicit Expr(ExprKind k, SourceLoc l) : kind(k), loc(l) {}
 };
 
+// A number literal, 12 bytes (issue 24: numbers were a third of a scene's nodes). Most
+// literals are short decimals: kept as an integer and a power of ten, they give back exactly
+// the double their text gives (both factors are exact doubles and one multiplication or
+// division rounds once: Clinger's fast path, as fast_float takes it). Any other value is
+// kept whole in 8 more bytes just after the node ("wide"). Made by make_number.
 struct NumberExpr : Expr {
-  double value;
-  NumberExpr(SourceLoc l, double v) : Expr(ExprKind::Number, l), value(v) {}
+  static constexpr int kMaxExponent = 22;  // 10^22 is the largest exact power of ten
+  static constexpr uint8_t kNegativeZero = 0xFE;
+  static constexpr uint8_t kWide = 0xFF;
+  static constexpr double kPow10[kMaxExponent + 1] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                     1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+  double value() const {
+    if (aux <= 2 * kMaxExponent) {  // aux is the exponent plus kMaxExponent
+      return aux >= kMaxExponent ? mantissa * kPow10[aux - kMaxExponent] : mantissa / kPow10[kMaxExponent - aux];
+    }
+    if (aux == kNegativeZero) return -0.0;
+    double v;
+    std::memcpy(&v, reinterpret_cast<const std::byte*>(this) + sizeof(NumberExpr), sizeof v);
+    return v;
+  }
+  bool wide() const { return aux == kWide; }
+  void negate();  // in place: the parser folds `-literal`
+
+  int32_t mantissa = 0;  // with the exponent in `aux`; unused when wide
+
+  NumberExpr(SourceLoc l, int32_t m, uint8_t code) : Expr(ExprKind::Number, l), mantissa(m) { aux = code; }
 };
+// A number literal with the value `value`; `spelling`, the literal's text, helps find the
+// short form (a value alone finds it when it is a small integer).
+NodePtr<NumberExpr> make_number(NodeArena& arena, SourceLoc loc, double value, std::string_view spelling = {});
 struct StringExpr : Expr {
   std::string_view value;  // escapes already decoded; the text is in the arena
   StringExpr(SourceLoc l, std::string_view v) : Expr(ExprKind::String, l), value(v) {}
@@ -228,9 +338,18 @@ class ComponentList {
   };
 
   ComponentList() = default;
-  explicit ComponentList(NodeList<ExprPtr> links) : first_(links.begin()), count_(static_cast<uint32_t>(links.size())) {}
+  ComponentList& operator=(ListPiece<ExprLink> links) {
+    first_.reset(links.first);
+    count_ = links.count;
+    literals_ = false;
+    return *this;
+  }
   // `count` number literals at consecutive addresses from `first`.
-  ComponentList(const NumberExpr* first, uint32_t count) : first_(first), count_(count), literals_(true) {}
+  void set_literals(const NumberExpr* first, uint32_t count) {
+    first_.reset(first);
+    count_ = count;
+    literals_ = true;
+  }
 
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
@@ -240,9 +359,9 @@ class ComponentList {
   iterator end() const { return {this, count_}; }
 
  private:
-  const void* first_ = nullptr;
-  uint32_t count_ = 0;
-  bool literals_ = false;
+  RawLink first_;
+  uint32_t count_ : 31 = 0;
+  uint32_t literals_ : 1 = 0;
 };
 
 // <x, y, z> (the grammar allows 2 to 4 components; the evaluator decides what it accepts)
@@ -252,92 +371,106 @@ struct VectorExpr : Expr {
 };
 
 inline ExprPtr ComponentList::operator[](std::size_t i) const {
-  if (literals_) return ExprPtr(const_cast<NumberExpr*>(static_cast<const NumberExpr*>(first_) + i));
-  return static_cast<const ExprPtr*>(first_)[i];
+  if (literals_) return ExprPtr(const_cast<NumberExpr*>(static_cast<const NumberExpr*>(first_.target()) + i));
+  return static_cast<const ExprLink*>(first_.target())[i];
 }
 // [a, b, c]
 struct ListExpr : Expr {
-  NodeList<ExprPtr> elements;
+  NodeList<ExprLink> elements;
   explicit ListExpr(SourceLoc l) : Expr(ExprKind::List, l) {}
 };
 
 enum class UnaryOp : uint8_t { Neg, Plus, Not };
 struct UnaryExpr : Expr {
   UnaryOp op;
-  ExprPtr operand;
-  UnaryExpr(SourceLoc l, UnaryOp o, ExprPtr e) : Expr(ExprKind::Unary, l), op(o), operand(std::move(e)) {}
+  ExprLink operand;
+  UnaryExpr(SourceLoc l, UnaryOp o, ExprPtr e) : Expr(ExprKind::Unary, l), op(o), operand(e) {}
 };
 
 enum class BinaryOp : uint8_t { Add, Sub, Mul, Div, Mod, Pow, Eq, Ne, Lt, Le, Gt, Ge, And, Or };
 struct BinaryExpr : Expr {
   BinaryOp op;
-  ExprPtr lhs, rhs;
   SourceLoc op_loc;  // where the operator is, for "wrong type for operator" errors
+  ExprLink lhs, rhs;
   BinaryExpr(SourceLoc l, BinaryOp o, ExprPtr a, ExprPtr b, SourceLoc ol)
-      : Expr(ExprKind::Binary, l), op(o), lhs(std::move(a)), rhs(std::move(b)), op_loc(ol) {}
+      : Expr(ExprKind::Binary, l), op(o), op_loc(ol), lhs(a), rhs(b) {}
 };
 
 // a .. b (end excluded), a ..= b (end included), optional `step s`
 struct RangeExpr : Expr {
-  ExprPtr from, to, step;  // step may be null
+  ExprLink from, to, step;  // step may be null
   bool inclusive;
   RangeExpr(SourceLoc l, ExprPtr f, ExprPtr t, ExprPtr s, bool inc)
-      : Expr(ExprKind::Range, l), from(std::move(f)), to(std::move(t)), step(std::move(s)), inclusive(inc) {}
+      : Expr(ExprKind::Range, l), from(f), to(t), step(s), inclusive(inc) {}
 };
 
 // f(a, b, name = c): positional arguments first, then named ones.
-struct Argument {
+struct ArgumentPiece {   // on the parser's stack
   Symbol name = nullptr;  // null for a positional argument
-  SourceLoc loc;          // beside the name: 16 bytes, not 24
+  SourceLoc loc;
   ExprPtr value;
 };
+struct Argument {
+  explicit Argument(const ArgumentPiece& p) : name(p.name), loc(p.loc), value(p.value) {}
+  Symbol name = nullptr;  // null for a positional argument
+  SourceLoc loc;
+  ExprLink value;
+};
 struct CallExpr : Expr {
-  ExprPtr callee;  // usually a NameExpr
+  ExprLink callee;  // usually a NameExpr
   NodeList<Argument> args;
-  CallExpr(SourceLoc l, ExprPtr c) : Expr(ExprKind::Call, l), callee(std::move(c)) {}
+  CallExpr(SourceLoc l, ExprPtr c) : Expr(ExprKind::Call, l), callee(c) {}
 };
 // xs[i]
 struct IndexExpr : Expr {
-  ExprPtr object, index;
-  IndexExpr(SourceLoc l, ExprPtr o, ExprPtr i) : Expr(ExprKind::Index, l), object(std::move(o)), index(std::move(i)) {}
+  ExprLink object, index;
+  IndexExpr(SourceLoc l, ExprPtr o, ExprPtr i) : Expr(ExprKind::Index, l), object(o), index(i) {}
 };
 // v.x
 struct MemberExpr : Expr {
-  ExprPtr object;
+  ExprLink object;
   Symbol member;
   SourceLoc member_loc;
   MemberExpr(SourceLoc l, ExprPtr o, Symbol m, SourceLoc ml)
-      : Expr(ExprKind::Member, l), object(std::move(o)), member(m), member_loc(ml) {}
+      : Expr(ExprKind::Member, l), object(o), member(m), member_loc(ml) {}
 };
 
 // The body of a block: `name = value` properties interleaved with statements (objects,
 // macro calls, loops, lets...). Properties and statements keep their source order.
+struct BlockItemPiece {  // on the parser's stack
+  Symbol property = nullptr;
+  SourceLoc loc;
+  void* node = nullptr;  // the value (a property) or the statement
+};
 class BlockItem {
  public:
-  static BlockItem property_item(Symbol name, ExprPtr value, SourceLoc loc) {
-    BlockItem item;
-    item.property = name;
-    item.node_ = value.get();
-    item.loc = loc;
-    return item;
+  static BlockItemPiece property_item(Symbol name, ExprPtr value, SourceLoc loc) {
+    return {name, loc, value.get()};
   }
-  static BlockItem statement_item(StmtPtr stmt, SourceLoc loc) {
-    BlockItem item;
-    item.node_ = stmt.get();
-    item.loc = loc;
-    return item;
-  }
-  // One link, told apart by `property` (16 bytes an item with the 4-byte symbol, not 32).
-  ExprPtr value() const { return property ? ExprPtr(static_cast<Expr*>(node_)) : ExprPtr(); }
-  StmtPtr stmt() const { return property ? StmtPtr() : StmtPtr(static_cast<Stmt*>(node_)); }
+  static BlockItemPiece statement_item(StmtPtr stmt, SourceLoc loc) { return {nullptr, loc, stmt.get()}; }
+  explicit BlockItem(const BlockItemPiece& p) : property(p.property), loc(p.loc) { node_.reset(p.node); }
+
+  // One link, told apart by `property` (12 bytes an item).
+  ExprPtr value() const { return property ? ExprPtr(static_cast<Expr*>(const_cast<void*>(node_.target()))) : ExprPtr(); }
+  StmtPtr stmt() const { return property ? StmtPtr() : StmtPtr(static_cast<Stmt*>(const_cast<void*>(node_.target()))); }
 
   Symbol property = nullptr;  // `property = value`; null for a statement
   SourceLoc loc;
 
  private:
-  void* node_ = nullptr;
+  RawLink node_;
+};
+struct BlockBodyPiece {  // on the parser's stack
+  ListPiece<BlockItem> items;
+  SourceLoc open_loc;
 };
 struct BlockBody {
+  BlockBody() = default;
+  BlockBody& operator=(const BlockBodyPiece& p) {
+    items = p.items;
+    open_loc = p.open_loc;
+    return *this;
+  }
   NodeList<BlockItem> items;
   SourceLoc open_loc;  // the '{'
 };
@@ -350,20 +483,20 @@ struct BlockExpr : Expr {
 };
 // base with { overrides }
 struct WithExpr : Expr {
-  ExprPtr base;
+  ExprLink base;
   BlockBody body;
-  WithExpr(SourceLoc l, ExprPtr b) : Expr(ExprKind::With, l), base(std::move(b)) {}
+  WithExpr(SourceLoc l, ExprPtr b) : Expr(ExprKind::With, l), base(b) {}
 };
 
 enum class TransformOp : uint8_t { Translate, Rotate, Scale, Matrix };
 // object translate <1,0,0>   (postfix, lowest precedence, left-associative)
 struct TransformExpr : Expr {
-  ExprPtr object;
   TransformOp op;
-  ExprPtr arg;
   SourceLoc op_loc;
+  ExprLink object;
+  ExprLink arg;
   TransformExpr(SourceLoc l, ExprPtr o, TransformOp t, ExprPtr a, SourceLoc ol)
-      : Expr(ExprKind::Transform, l), object(std::move(o)), op(t), arg(std::move(a)), op_loc(ol) {}
+      : Expr(ExprKind::Transform, l), op(t), op_loc(ol), object(o), arg(a) {}
 };
 
 // ---------------------------------------------------------------------------------------
@@ -379,7 +512,18 @@ struct Stmt {
   explicit Stmt(StmtKind k, SourceLoc l) : kind(k), loc(l) {}
 };
 
+struct BodyPiece {  // on the parser's stack
+  ListPiece<StmtLink> stmts;
+  SourceLoc open_loc;
+};
 struct Body {
+  Body() = default;
+  explicit Body(const BodyPiece& p) { *this = p; }
+  Body& operator=(const BodyPiece& p) {
+    stmts = p.stmts;
+    open_loc = p.open_loc;
+    return *this;
+  }
   StmtList stmts;
   SourceLoc open_loc;  // the '{'
 };
@@ -387,10 +531,10 @@ struct Body {
 // let name = value
 struct LetStmt : Stmt {
   Symbol name;
-  ExprPtr value;
+  ExprLink value;
   SourceLoc name_loc;
   LetStmt(SourceLoc l, Symbol n, ExprPtr v, SourceLoc nl)
-      : Stmt(StmtKind::Let, l), name(n), value(std::move(v)), name_loc(nl) {}
+      : Stmt(StmtKind::Let, l), name(n), value(v), name_loc(nl) {}
 };
 
 // name = value, name += value, ...
@@ -398,39 +542,45 @@ enum class AssignOp : uint8_t { Set, Add, Sub, Mul, Div };
 struct AssignStmt : Stmt {
   Symbol name;
   AssignOp op;
-  ExprPtr value;
+  ExprLink value;
   AssignStmt(SourceLoc l, Symbol n, AssignOp o, ExprPtr v)
-      : Stmt(StmtKind::Assign, l), name(n), op(o), value(std::move(v)) {}
+      : Stmt(StmtKind::Assign, l), name(n), op(o), value(v) {}
 };
 
 // if c { } else if c2 { } else { }   — `else if` chains are nested IfStmts in else_body
 struct IfStmt : Stmt {
-  ExprPtr cond;
+  ExprLink cond;
   Body then_body;
-  const Body* else_body = nullptr;  // in the arena; null when there is no else
-  IfStmt(SourceLoc l, ExprPtr c) : Stmt(StmtKind::If, l), cond(std::move(c)) {}
+  Link<Body> else_body;  // null when there is no else
+  IfStmt(SourceLoc l, ExprPtr c) : Stmt(StmtKind::If, l), cond(c) {}
 };
 
 // for name in iterable { }
 struct ForStmt : Stmt {
   Symbol var;
   SourceLoc var_loc;
-  ExprPtr iterable;
+  ExprLink iterable;
   Body body;
   ForStmt(SourceLoc l, Symbol v, SourceLoc vl, ExprPtr it)
-      : Stmt(StmtKind::For, l), var(v), var_loc(vl), iterable(std::move(it)) {}
+      : Stmt(StmtKind::For, l), var(v), var_loc(vl), iterable(it) {}
 };
 
 struct WhileStmt : Stmt {
-  ExprPtr cond;
+  ExprLink cond;
   Body body;
-  WhileStmt(SourceLoc l, ExprPtr c) : Stmt(StmtKind::While, l), cond(std::move(c)) {}
+  WhileStmt(SourceLoc l, ExprPtr c) : Stmt(StmtKind::While, l), cond(c) {}
 };
 
-struct Param {
+struct ParamPiece {  // on the parser's stack
   Symbol name;
   SourceLoc loc;
-  ExprPtr default_value;  // null when the parameter is required
+  ExprPtr default_value;
+};
+struct Param {
+  explicit Param(const ParamPiece& p) : name(p.name), loc(p.loc), default_value(p.default_value) {}
+  Symbol name;
+  SourceLoc loc;
+  ExprLink default_value;  // null when the parameter is required
 };
 // macro name(a, b = 2) { ... }
 struct MacroStmt : Stmt {
@@ -441,8 +591,8 @@ struct MacroStmt : Stmt {
 };
 
 struct ReturnStmt : Stmt {
-  ExprPtr value;  // null for a bare `return`
-  ReturnStmt(SourceLoc l, ExprPtr v) : Stmt(StmtKind::Return, l), value(std::move(v)) {}
+  ExprLink value;  // null for a bare `return`
+  ReturnStmt(SourceLoc l, ExprPtr v) : Stmt(StmtKind::Return, l), value(v) {}
 };
 struct BreakStmt : Stmt {
   explicit BreakStmt(SourceLoc l) : Stmt(StmtKind::Break, l) {}
@@ -459,16 +609,19 @@ struct IncludeStmt : Stmt {
 
 // An expression used as a statement: an object to place, a macro call, ...
 struct ExprStmt : Stmt {
-  ExprPtr expr;
-  ExprStmt(SourceLoc l, ExprPtr e) : Stmt(StmtKind::ExprStmt, l), expr(std::move(e)) {}
+  ExprLink expr;
+  ExprStmt(SourceLoc l, ExprPtr e) : Stmt(StmtKind::ExprStmt, l), expr(e) {}
 };
 
-// A parsed file: its nodes are in its arena, the list of its own statements beside it.
+// A parsed file: its nodes are in its arena, the list of its own statements too.
 struct Program {
   const SourceFile* file = nullptr;
   std::unique_ptr<NodeArena> arena;
-  std::vector<StmtPtr> top_level;  // what `stmts` lists (a vector's buffer survives a move)
-  StmtList stmts;
+  const StmtList* top_level = nullptr;  // in the arena; null for an empty program
+  const StmtList& stmts() const {
+    static const StmtList kNone;
+    return top_level ? *top_level : kNone;
+  }
 };
 
 // Names for printing and messages.

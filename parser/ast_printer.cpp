@@ -64,7 +64,7 @@ Part atom(std::string text) { return Part{std::move(text), NodeRef{}, true}; }
 Part child(NodeRef n) { return Part{{}, n, false}; }
 
 void add_body(Form& f, const Body& body) {
-  for (const StmtPtr& s : body.stmts) f.parts.push_back(child(s.get()));
+  for (const StmtLink& s : body.stmts) f.parts.push_back(child(s.get()));
 }
 void add_items(Form& f, const BlockBody& body) {
   for (const BlockItem& item : body.items) f.parts.push_back(child(&item));
@@ -96,7 +96,7 @@ const char* unary_head(UnaryOp op) {
 
 Form describe_expr(const Expr& e) {
   switch (e.kind) {
-    case ExprKind::Number: return leaf(fmt::format("{}", static_cast<const NumberExpr&>(e).value), e.loc);
+    case ExprKind::Number: return leaf(fmt::format("{}", static_cast<const NumberExpr&>(e).value()), e.loc);
     case ExprKind::String: return leaf(quote(static_cast<const StringExpr&>(e).value), e.loc);
     case ExprKind::Bool: return leaf(static_cast<const BoolExpr&>(e).value ? "true" : "false", e.loc);
     case ExprKind::None: return leaf("none", e.loc);
@@ -108,7 +108,7 @@ Form describe_expr(const Expr& e) {
     }
     case ExprKind::List: {
       Form f = form("list", e.loc);
-      for (const ExprPtr& c : static_cast<const ListExpr&>(e).elements) f.parts.push_back(child(c.get()));
+      for (const ExprLink& c : static_cast<const ListExpr&>(e).elements) f.parts.push_back(child(c.get()));
       return f;
     }
     case ExprKind::Unary: {
@@ -204,7 +204,7 @@ Form describe_stmt(const Stmt& s) {
       Form f = form("if", s.loc);
       f.parts.push_back(child(i.cond.get()));
       f.parts.push_back(child(NamedBody{"then", &i.then_body}));
-      if (i.else_body) f.parts.push_back(child(NamedBody{"else", i.else_body}));
+      if (i.else_body) f.parts.push_back(child(NamedBody{"else", i.else_body.get()}));
       return f;
     }
     case StmtKind::For: {
@@ -305,7 +305,7 @@ class Printer {
 
   void program(const Program& p) {
     Form f = form("program", SourceLoc{});
-    for (const StmtPtr& s : p.stmts) f.parts.push_back(child(s.get()));
+    for (const StmtLink& s : p.stmts()) f.parts.push_back(child(s.get()));
     print(f, 0);
     buf_ += '\n';
   }

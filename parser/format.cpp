@@ -35,7 +35,7 @@ class MarkCollector {
   MarkCollector(const SourceFile& file, Marks& marks) : file_(file), marks_(marks) {}
 
   void stmts(const StmtList& list) {
-    for (const StmtPtr& s : list) stmt(*s);
+    for (const StmtLink& s : list) stmt(*s);
   }
 
  private:
@@ -104,7 +104,7 @@ class MarkCollector {
         for (const ExprPtr& c : static_cast<const VectorExpr*>(e)->components) expr(c.get());
         break;
       case ExprKind::List:
-        for (const ExprPtr& c : static_cast<const ListExpr*>(e)->elements) expr(c.get());
+        for (const ExprLink& c : static_cast<const ListExpr*>(e)->elements) expr(c.get());
         break;
       case ExprKind::Unary: {
         const auto* u = static_cast<const UnaryExpr*>(e);
@@ -402,7 +402,7 @@ std::string tree_text(const Program& p) {
 std::string format_source(const SourceFile& file) {
   Program program = parse(file);
   Marks marks;
-  MarkCollector(file, marks).stmts(program.stmts);
+  MarkCollector(file, marks).stmts(program.stmts());
   std::string out = Formatter(file.text(), marks).run();
   if (out == "\n") out.clear();  // an empty file stays empty
 

@@ -61,21 +61,22 @@ Sized<T> pop(std::vector<Sized<T>>& v) {
 
 // Moves the pieces pushed on `stack` since `mark` into a list in the arena, in order, first
 // passing each to `check` (which may throw); returns their tallest height (0 when there are none).
-template <typename T, typename Check>
-uint32_t collect(ParseState& st, std::vector<Sized<T>>& stack, uint32_t mark, NodeList<T>& out, Check check) {
+// `out` is a ListPiece<T> or a node's NodeList<T>; T is built from each piece.
+template <typename T, typename Piece, typename Out, typename Check>
+uint32_t collect(ParseState& st, std::vector<Sized<Piece>>& stack, uint32_t mark, Out& out, Check check) {
   uint32_t tallest = 0;
   for (std::size_t i = mark; i < stack.size(); ++i) {
     check(stack[i].node);
     tallest = std::max(tallest, stack[i].height);
   }
-  out = st.arena->list<T>(stack.begin() + mark, stack.end(), [](const Sized<T>& piece) { return piece.node; });
+  out = st.arena->list<T>(stack.begin() + mark, stack.end(), [](const Sized<Piece>& piece) { return piece.node; });
   stack.resize(mark);
   return tallest;
 }
 
-template <typename T>
-uint32_t collect(ParseState& st, std::vector<Sized<T>>& stack, uint32_t mark, NodeList<T>& out) {
-  return collect(st, stack, mark, out, [](const T&) {});
+template <typename T, typename Piece, typename Out>
+uint32_t collect(ParseState& st, std::vector<Sized<Piece>>& stack, uint32_t mark, Out& out) {
+  return collect<T>(st, stack, mark, out, [](const Piece&) {});
 }
 
 void append_utf8(std::string& out, uint32_t cp) {
@@ -116,7 +117,7 @@ void push_number(ParseState& st, SourceLoc loc, std::string_view text) {
   } else if (ec != std::errc() || end != text.data() + text.size()) {
     throw LanguageError(loc, fmt::format("malformed number '{}'", text));
   }
-  push_expr(st, st.arena->make<NumberExpr>(loc, value), 1);
+  push_expr(st, make_number(*st.arena, loc, value, text), 1);
 }
 
 std::string decode_string(ParseState& st) {
@@ -191,13 +192,16 @@ Open close_bracket(ParseState& st) {
 
 void finish_list(ParseState& st) {
   Open o = close_bracket(st);
-  auto list = st.arena->make<ListExpr>(o.loc);
-  uint32_t h = collect(st, st.exprs, o.mark, list->elements);
-  push_expr(st, std::move(list), h + 1);
+  ListPiece<ExprLink> elements;
+  uint32_t h = collect<ExprLink>(st, st.exprs, o.mark, elements);
+  auto list = st.arena->make<ListExpr>(o.loc);  // after its elements: links reach back only
+  list->elements = elements;
+  push_expr(st, list, h + 1);
 }
 
 // Whether the pieces from `mark` on are number literals at consecutive addresses (parsed one
 // after another into the same arena block).
+// A wide literal (NumberExpr) is longer than the stride, so one can only come last.
 bool consecutive_literals(const ParseState& st, uint32_t mark) {
   if (mark >= st.exprs.size() || st.exprs[mark].node->kind != ExprKind::Number) return false;
   const auto* first = static_cast<const NumberExpr*>(st.exprs[mark].node.get());
@@ -208,27 +212,30 @@ bool consecutive_literals(const ParseState& st, uint32_t mark) {
 
 void finish_vector(ParseState& st) {
   Open o = close_bracket(st);
-  auto vec = st.arena->make<VectorExpr>(o.loc);
   uint32_t h = 0;
+  NodePtr<VectorExpr> vec;
   if (consecutive_literals(st, o.mark)) {
     const auto count = static_cast<uint32_t>(st.exprs.size() - o.mark);
-    vec->components = ComponentList(static_cast<const NumberExpr*>(st.exprs[o.mark].node.get()), count);
+    const auto* first = static_cast<const NumberExpr*>(st.exprs[o.mark].node.get());
+    vec = st.arena->make<VectorExpr>(o.loc);
+    vec->components.set_literals(first, count);
     h = 1;
     st.exprs.resize(o.mark);
   } else {
-    NodeList<ExprPtr> links;
-    h = collect(st, st.exprs, o.mark, links);
-    vec->components = ComponentList(links);
+    ListPiece<ExprLink> links;
+    h = collect<ExprLink>(st, st.exprs, o.mark, links);
+    vec = st.arena->make<VectorExpr>(o.loc);  // after its list: links reach back only
+    vec->components = links;
   }
-  push_expr(st, std::move(vec), h + 1);
+  push_expr(st, vec, h + 1);
 }
 
 void finish_call(ParseState& st) {
   Open o = close_bracket(st);
   Sized<ExprPtr> callee = pop_expr(st);
-  auto call = st.arena->make<CallExpr>(callee.node->loc, std::move(callee.node));
   std::optional<SourceLoc> first_named;
-  uint32_t h = std::max(callee.height, collect(st, st.args, o.mark, call->args, [&](const Argument& a) {
+  ListPiece<Argument> args;
+  uint32_t h = std::max(callee.height, collect<Argument>(st, st.args, o.mark, args, [&](const ArgumentPiece& a) {
     if (a.name) {
       if (!first_named) first_named = a.loc;
     } else if (first_named) {
@@ -237,7 +244,10 @@ void finish_call(ParseState& st) {
       throw e;
     }
   }));
-  push_expr(st, std::move(call), h + 1);
+  // After its arguments, so that its links reach back to them.
+  auto call = st.arena->make<CallExpr>(callee.node->loc, callee.node);
+  call->args = args;
+  push_expr(st, call, h + 1);
 }
 
 void finish_index(ParseState& st) {
@@ -251,26 +261,26 @@ void finish_index(ParseState& st) {
 
 void finish_block_body(ParseState& st) {
   Open o = close_bracket(st);
-  BlockBody body;
+  BlockBodyPiece body;
   body.open_loc = o.loc;
-  uint32_t h = collect(st, st.items, o.mark, body.items);
+  uint32_t h = collect<BlockItem>(st, st.items, o.mark, body.items);
   st.block_bodies.push_back({std::move(body), h});
 }
 
 void finish_body(ParseState& st) {
   Open o = close_bracket(st);
-  Body body;
+  BodyPiece body;
   body.open_loc = o.loc;
-  uint32_t h = collect(st, st.stmts, o.mark, body.stmts);
+  uint32_t h = collect<StmtLink>(st, st.stmts, o.mark, body.stmts);
   st.bodies.push_back({std::move(body), h});
 }
 
 void finish_params(ParseState& st) {
   Open o = close_bracket(st);
-  NodeList<Param> list;
+  ListPiece<Param> list;
   std::unordered_map<Symbol, SourceLoc> seen;
   std::optional<SourceLoc> first_default;
-  uint32_t h = collect(st, st.params, o.mark, list, [&](const Param& p) {
+  uint32_t h = collect<Param>(st, st.params, o.mark, list, [&](const ParamPiece& p) {
     if (auto [it, inserted] = seen.try_emplace(p.name, p.loc); !inserted) {
       LanguageError e(p.loc, fmt::format("duplicate parameter '{}'", *p.name));
       e.diag.notes.push_back(Note{it->second, "first declared here"});
@@ -300,8 +310,8 @@ void build_unary(ParseState& st, SourceLoc op_loc, UnaryOp op) {
   // The literal's node is this parse's alone: it becomes the negative literal in place.
   if (op == UnaryOp::Neg && operand.node->kind == ExprKind::Number) {
     auto& number = static_cast<NumberExpr&>(*operand.node);
-    if (!std::signbit(number.value)) {
-      number.value = -number.value;
+    if (!std::signbit(number.value())) {
+      number.negate();
       number.loc = op_loc;
       push_expr(st, operand.node, operand.height);
       return;
@@ -350,31 +360,31 @@ void build_member(ParseState& st) {
 }
 
 void build_with(ParseState& st) {
-  Sized<BlockBody> body = pop(st.block_bodies);
+  Sized<BlockBodyPiece> body = pop(st.block_bodies);
   Sized<ExprPtr> base = pop_expr(st);
-  auto with = st.arena->make<WithExpr>(base.node->loc, std::move(base.node));
-  with->body = std::move(body.node);
+  auto with = st.arena->make<WithExpr>(base.node->loc, base.node);
+  with->body = body.node;
   push_expr(st, std::move(with), std::max(base.height, body.height) + 1);
 }
 
 void build_block(ParseState& st) {
-  Sized<BlockBody> body = pop(st.block_bodies);
+  Sized<BlockBodyPiece> body = pop(st.block_bodies);
   NamePiece kind = pop_name(st);
   auto block = st.arena->make<BlockExpr>(kind.loc, kind.name);
-  block->body = std::move(body.node);
+  block->body = body.node;
   push_expr(st, std::move(block), body.height + 1);
 }
 
 void build_named_arg(ParseState& st) {
   Sized<ExprPtr> value = pop_expr(st);
   NamePiece name = pop_name(st);
-  st.args.push_back({Argument{name.name, name.loc, value.node}, value.height + 1});
+  st.args.push_back({ArgumentPiece{name.name, name.loc, value.node}, value.height + 1});
 }
 
 void build_positional_arg(ParseState& st) {
   Sized<ExprPtr> value = pop_expr(st);
   SourceLoc loc = value.node->loc;
-  st.args.push_back({Argument{nullptr, loc, value.node}, value.height + 1});
+  st.args.push_back({ArgumentPiece{nullptr, loc, value.node}, value.height + 1});
 }
 
 void build_property(ParseState& st) {
@@ -406,46 +416,46 @@ void build_assign(ParseState& st) {
 }
 
 void build_if(ParseState& st, SourceLoc loc, bool as_else_body) {
-  const Body* else_body = nullptr;
+  NodePtr<Body> else_body;
   uint32_t h = 0;
   if (st.has_else) {
-    Sized<Body> e = pop(st.bodies);
+    Sized<BodyPiece> e = pop(st.bodies);
     h = e.height;
-    else_body = st.arena->make<Body>(e.node).get();
+    else_body = st.arena->make<Body>(e.node);
   }
   st.has_else = false;
-  Sized<Body> then_body = pop(st.bodies);
+  Sized<BodyPiece> then_body = pop(st.bodies);
   Sized<ExprPtr> cond = pop_expr(st);
   h = std::max({h, then_body.height, cond.height}) + 1;
   auto stmt = st.arena->make<IfStmt>(loc, std::move(cond.node));
-  stmt->then_body = std::move(then_body.node);
+  stmt->then_body = then_body.node;
   stmt->else_body = else_body;
   if (!as_else_body) {
     push_stmt(st, std::move(stmt), h);
     return;
   }
   // `else if`: the nested if is the only statement of the else body.
-  Body body;
+  BodyPiece body;
   body.open_loc = loc;
   const StmtPtr only[] = {stmt};
-  body.stmts = st.arena->list<StmtPtr>(std::begin(only), std::end(only), [](StmtPtr s) { return s; });
+  body.stmts = st.arena->list<StmtLink>(std::begin(only), std::end(only), [](StmtPtr s) { return s; });
   st.bodies.push_back({std::move(body), checked_height(st, h + 1, loc)});
 }
 
 void build_for(ParseState& st, SourceLoc loc) {
-  Sized<Body> body = pop(st.bodies);
+  Sized<BodyPiece> body = pop(st.bodies);
   Sized<ExprPtr> iterable = pop_expr(st);
   NamePiece var = pop_name(st);
-  auto stmt = st.arena->make<ForStmt>(loc, var.name, var.loc, std::move(iterable.node));
-  stmt->body = std::move(body.node);
+  auto stmt = st.arena->make<ForStmt>(loc, var.name, var.loc, iterable.node);
+  stmt->body = body.node;
   push_stmt(st, std::move(stmt), std::max(body.height, iterable.height) + 1);
 }
 
 void build_while(ParseState& st, SourceLoc loc) {
-  Sized<Body> body = pop(st.bodies);
+  Sized<BodyPiece> body = pop(st.bodies);
   Sized<ExprPtr> cond = pop_expr(st);
-  auto stmt = st.arena->make<WhileStmt>(loc, std::move(cond.node));
-  stmt->body = std::move(body.node);
+  auto stmt = st.arena->make<WhileStmt>(loc, cond.node);
+  stmt->body = body.node;
   push_stmt(st, std::move(stmt), std::max(body.height, cond.height) + 1);
 }
 
@@ -454,16 +464,16 @@ void build_param(ParseState& st) {
   if (st.has_default) value = pop_expr(st);
   st.has_default = false;
   NamePiece name = pop_name(st);
-  st.params.push_back({Param{name.name, name.loc, value.node}, value.height + 1});
+  st.params.push_back({ParamPiece{name.name, name.loc, value.node}, value.height + 1});
 }
 
 void build_macro(ParseState& st, SourceLoc loc) {
-  Sized<Body> body = pop(st.bodies);
-  Sized<NodeList<Param>> params = pop(st.param_lists);
+  Sized<BodyPiece> body = pop(st.bodies);
+  Sized<ListPiece<Param>> params = pop(st.param_lists);
   NamePiece name = pop_name(st);
   auto stmt = st.arena->make<MacroStmt>(loc, name.name);
-  stmt->params = std::move(params.node);
-  stmt->body = std::move(body.node);
+  stmt->params = params.node;
+  stmt->body = body.node;
   push_stmt(st, std::move(stmt), std::max(body.height, params.height) + 1);
 }
 

@@ -51,7 +51,10 @@ struct Open {
 
 struct ParseState {
   ParseState(const SourceFile& f, const ParseLimits& l)
-      : file(&f), limits(l), max_height(std::max(kMaxTreeHeight, kTreeLevelsPerNesting * l.max_nesting)) {}
+      : file(&f),
+        limits(l),
+        max_height(std::max(kMaxTreeHeight, kTreeLevelsPerNesting * l.max_nesting)),
+        arena(std::make_unique<ast::NodeArena>(f.text().size())) {}
 
   const SourceFile* file;
   ParseLimits limits;
@@ -59,16 +62,16 @@ struct ParseState {
   uint32_t depth = 0;  // current nesting of brackets, bodies and prefix operators
 
   // The nodes' memory, handed to the Program at the end.
-  std::unique_ptr<ast::NodeArena> arena = std::make_unique<ast::NodeArena>();
+  std::unique_ptr<ast::NodeArena> arena;
   std::vector<Sized<ast::ExprPtr>> exprs;
   std::vector<Sized<ast::StmtPtr>> stmts;  // statements inside brackets, to be collected
   std::vector<ast::StmtPtr> top_level;     // the program's own statements, in order
-  std::vector<Sized<ast::BlockItem>> items;
-  std::vector<Sized<ast::Argument>> args;
-  std::vector<Sized<ast::Param>> params;
-  std::vector<Sized<ast::NodeList<ast::Param>>> param_lists;
-  std::vector<Sized<ast::Body>> bodies;
-  std::vector<Sized<ast::BlockBody>> block_bodies;
+  std::vector<Sized<ast::BlockItemPiece>> items;
+  std::vector<Sized<ast::ArgumentPiece>> args;
+  std::vector<Sized<ast::ParamPiece>> params;
+  std::vector<Sized<ast::ListPiece<ast::Param>>> param_lists;
+  std::vector<Sized<ast::BodyPiece>> bodies;
+  std::vector<Sized<ast::BlockBodyPiece>> block_bodies;
   std::vector<NamePiece> names;
   std::vector<Open> opens;
 

@@ -74,8 +74,13 @@ ast::Program parse(const SourceFile& file, const ParseLimits& limits) {
   program.file = &file;
   // Every bracket closed, so every statement is the program's own (parse_detail::push_stmt).
   if (!st.stmts.empty()) throw std::logic_error("parser: statements left inside a closed bracket");
-  program.top_level = std::move(st.top_level);
-  program.stmts = ast::StmtList(program.top_level.data(), static_cast<uint32_t>(program.top_level.size()));
+  // The program's statements listed in its arena (4 bytes each), after the last of them.
+  if (!st.top_level.empty()) {
+    const ast::ListPiece<ast::StmtLink> list =
+        st.arena->list<ast::StmtLink>(st.top_level.begin(), st.top_level.end(), [](ast::StmtPtr s) { return s; });
+    program.top_level = st.arena->make<ast::StmtList>(list).get();
+  }
+  std::vector<ast::StmtPtr>().swap(st.top_level);
   program.arena = std::move(st.arena);
   return program;
 }

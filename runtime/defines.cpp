@@ -9,9 +9,9 @@ void Defines::parse(const std::vector<Define>& defines, Includes& files) {
     const SourceFile* f = nullptr;
     const ast::Program& p =
         files.parse_text(fmt::format("<define {}>", d.name), fmt::format("let {} = {}", d.name, d.value), f);
-    if (p.stmts.size() != 1 || p.stmts[0]->kind != ast::StmtKind::Let)
+    if (p.stmts().size() != 1 || p.stmts()[0]->kind != ast::StmtKind::Let)
       throw LanguageError(SourceLoc::at(f, 1, 1), fmt::format("define '{}={}' is not a single value", d.name, d.value));
-    entries_.push_back(Entry{ast::intern(d.name), static_cast<const ast::LetStmt&>(*p.stmts[0]).value.get(),
+    entries_.push_back(Entry{ast::intern(d.name), static_cast<const ast::LetStmt&>(*p.stmts()[0]).value.get(),
                              d.name + "=" + d.value});
   }
 }

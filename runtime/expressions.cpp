@@ -84,7 +84,7 @@ double Interpreter::expect_number(const ast::Expr& e, const char* what) {
 Value Interpreter::eval(const ast::Expr& e) {
   switch (e.kind) {
     case ast::ExprKind::Number:
-      return Value::number(static_cast<const ast::NumberExpr&>(e).value);
+      return Value::number(static_cast<const ast::NumberExpr&>(e).value());
     case ast::ExprKind::String:
       return Value::string(std::string(static_cast<const ast::StringExpr&>(e).value));
     case ast::ExprKind::Bool:
@@ -106,7 +106,7 @@ Value Interpreter::eval(const ast::Expr& e) {
       spend(le.elements.size(), e.loc, "list elements built");
       std::vector<Value> items;
       items.reserve(le.elements.size());
-      for (const ast::ExprPtr& x : le.elements) items.push_back(eval(*x));
+      for (const ast::ExprLink& x : le.elements) items.push_back(eval(*x));
       Value list = Value::list(std::move(items));
       check_nesting(list, e.loc);
       return list;

@@ -216,7 +216,7 @@ class FunctionCompiler {
 
   CV expr(const ast::Expr& e, std::vector<Local>& locals, int depth) {
     switch (e.kind) {
-      case ast::ExprKind::Number: return num(constant(static_cast<const ast::NumberExpr&>(e).value, e.loc));
+      case ast::ExprKind::Number: return num(constant(static_cast<const ast::NumberExpr&>(e).value(), e.loc));
       case ast::ExprKind::Bool: return num(constant(static_cast<const ast::BoolExpr&>(e).value ? 1.0 : 0.0, e.loc));
       case ast::ExprKind::Name: return name(static_cast<const ast::NameExpr&>(e), locals);
       case ast::ExprKind::Vector: {

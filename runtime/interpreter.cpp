@@ -97,7 +97,7 @@ void Interpreter::run_program(const ast::Program& program, bool is_main) {
   bool saved_macro = in_macro_;
   loop_depth_ = 0;  // `break` in an included file cannot leave a loop of the includer
   in_macro_ = false;
-  for (const ast::StmtPtr& s : program.stmts) {
+  for (const ast::StmtLink& s : program.stmts()) {
     if (is_main && s->kind == ast::StmtKind::Let) {
       const auto& let = static_cast<const ast::LetStmt&>(*s);
       if (const ast::Expr* define = defines_.take(let.name)) {
@@ -176,7 +176,7 @@ Binding* Interpreter::lookup(ast::Symbol name) {
 // ---------------------------------------------------------------------------------------
 
 Flow Interpreter::exec_list(const ast::StmtList& stmts) {
-  for (const ast::StmtPtr& s : stmts) {
+  for (const ast::StmtLink& s : stmts) {
     Flow f = exec(*s);
     if (f != Flow::Normal) return f;
   }

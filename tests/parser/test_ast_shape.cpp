@@ -2,6 +2,12 @@
 // docs/language.md) and, for a few nodes, through the typed fields directly.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <utility>
+
 #include "parser_test_support.hpp"
 
 using rts::testing::ast_of;
@@ -39,12 +45,12 @@ TEST_CASE("literals", "[ast]") {
 
 TEST_CASE("string escapes are decoded in the AST and re-escaped in the print", "[ast]") {
   auto p = parse_text(R"(let s = "a\nb\t\"q\" \\ \u{41}\u{e9}\u{1F600}")");
-  auto& let = static_cast<ast::LetStmt&>(*p.program.stmts.at(0));
+  auto& let = static_cast<ast::LetStmt&>(*p.program.stmts().at(0));
   auto& str = static_cast<ast::StringExpr&>(*let.value);
   CHECK(str.value == "a\nb\t\"q\" \\ A\xc3\xa9\xf0\x9f\x98\x80");
   CHECK(one(R"(let s = "a\nb\0c\rd")") == R"((let s "a\nb\0c\rd"))");
   auto nul = parse_text(R"(let s = "x\0y")");
-  CHECK(static_cast<ast::StringExpr&>(*static_cast<ast::LetStmt&>(*nul.program.stmts[0]).value).value ==
+  CHECK(static_cast<ast::StringExpr&>(*static_cast<ast::LetStmt&>(*nul.program.stmts()[0]).value).value ==
         std::string("x\0y", 3));
 }
 
@@ -98,9 +104,9 @@ TEST_CASE("vectors and lists", "[ast]") {
 
 TEST_CASE("a vector of number literals keeps the literals, not a list of links to them", "[ast]") {
   auto p = parse_text("let a = <1.5, -2, 3e2>\nlet b = <1, +2, 3>\nlet c = <x, 2, 3>\n");
-  REQUIRE(p.program.stmts.size() == 3);
+  REQUIRE(p.program.stmts().size() == 3);
   auto vec = [&](int k) -> const ast::VectorExpr& {
-    return static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts[k]).value);
+    return static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[k]).value);
   };
   const ast::ComponentList& a = vec(0).components;
   CHECK(a.literals());
@@ -109,7 +115,7 @@ TEST_CASE("a vector of number literals keeps the literals, not a list of links t
   std::size_t k = 0;
   for (const ast::ExprPtr& c : a) {  // read as links all the same
     REQUIRE(c->kind == ast::ExprKind::Number);
-    CHECK(static_cast<const ast::NumberExpr&>(*c).value == expected[k]);
+    CHECK(static_cast<const ast::NumberExpr&>(*c).value() == expected[k]);
     CHECK(c.get() == a[k].get());
     ++k;
   }
@@ -118,7 +124,43 @@ TEST_CASE("a vector of number literals keeps the literals, not a list of links t
   CHECK_FALSE(vec(1).components.literals());  // +2 is an operator above a literal
   CHECK_FALSE(vec(2).components.literals());
   CHECK(vec(2).components[0]->kind == ast::ExprKind::Name);
-  CHECK(static_cast<const ast::NumberExpr&>(*vec(2).components[2]).value == 3);
+  CHECK(static_cast<const ast::NumberExpr&>(*vec(2).components[2]).value() == 3);
+}
+
+TEST_CASE("a number literal gives exactly its text's double, short or wide", "[ast]") {
+  // {spelling, kept short (12 bytes) rather than wide}: the value must be strtod's, bit for bit.
+  const std::pair<const char*, bool> cases[] = {
+      {"0", true},          {"0.0", true},        {"1", true},           {"1000", true},
+      {"0.499", true},      {"10.50", true},      {"100.0e2", true},     {"000123.4500", true},
+      {".5", true},         {"2.5E+4", true},     {"0.1", true},         {"123456789", true},
+      {"1e22", true},       {"1e-22", true},      {"0.000000000000000000000001", false},
+      {"1e23", false},      {"1e-23", false},     {"1234567890", true}, {"1234567891", false}, {"3.141592653589793", false},
+      {"4294967296", false}, {"1e-320", false},    {"1.7976931348623157e308", false},
+      {"9007199254740993", false},                {"0e999", true},
+  };
+  for (const auto& [spelling, short_form] : cases) {
+    CAPTURE(spelling);
+    auto p = parse_text(std::string("let a = ") + spelling + "\nlet b = -" + spelling + "\n");
+    for (int k = 0; k < 2; ++k) {
+      const auto& n = static_cast<const ast::NumberExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[k]).value);
+      REQUIRE(n.kind == ast::ExprKind::Number);
+      const double want = (k == 0 ? 1 : -1) * std::strtod(spelling, nullptr);
+      const double got = n.value();
+      CHECK(std::memcmp(&got, &want, sizeof got) == 0);  // -0 included
+      CHECK(n.wide() == !short_form);
+    }
+  }
+  // A vector's literals are read at the short form's stride: a wide one can only come last.
+  auto p = parse_text("let a = <1, 2, 3.141592653589793>\nlet b = <3.141592653589793, 2, -0>\n");
+  const auto& a = static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[0]).value);
+  const auto& b = static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[1]).value);
+  CHECK(a.components.literals());
+  CHECK_FALSE(b.components.literals());
+  const double pi = 3.141592653589793;
+  CHECK(static_cast<const ast::NumberExpr&>(*a.components[2]).value() == pi);
+  CHECK(static_cast<const ast::NumberExpr&>(*b.components[0]).value() == pi);
+  CHECK(static_cast<const ast::NumberExpr&>(*b.components[1]).value() == 2);
+  CHECK(std::signbit(static_cast<const ast::NumberExpr&>(*b.components[2]).value()));
 }
 
 TEST_CASE("calls, indexing and members", "[ast]") {
@@ -160,7 +202,7 @@ TEST_CASE("blocks: properties and statements keep their order", "[ast]") {
 
 TEST_CASE("name = value is a property in a block body but an assignment in a statement body", "[ast]") {
   auto p = parse_text("sphere { r = 1 if c { r = 2 } r += 3 }");
-  auto& stmt = static_cast<ast::ExprStmt&>(*p.program.stmts.at(0));
+  auto& stmt = static_cast<ast::ExprStmt&>(*p.program.stmts().at(0));
   auto& block = static_cast<ast::BlockExpr&>(*stmt.expr);
   REQUIRE(block.body.items.size() == 3);
   CHECK(*block.body.items[0].property == "r");
@@ -218,7 +260,7 @@ TEST_CASE("if / else if / else", "[ast]") {
         "        (else\n"
         "          (assign x = 3)))))");
   auto p = parse_text("if a { } else if b { }");
-  auto& outer = static_cast<ast::IfStmt&>(*p.program.stmts.at(0));
+  auto& outer = static_cast<ast::IfStmt&>(*p.program.stmts().at(0));
   REQUIRE(outer.else_body);
   REQUIRE(outer.else_body->stmts.size() == 1);
   auto& inner = static_cast<ast::IfStmt&>(*outer.else_body->stmts[0]);

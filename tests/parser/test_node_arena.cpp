@@ -1,7 +1,7 @@
 // NodeArena (parser/ast.hpp): the AST's nodes, their lists and their strings share their
-// program's memory blocks and have nothing to destroy; a program moved elsewhere keeps its
-// nodes, and a parse that fails part-way frees what it had built (the sanitizer builds would
-// report a leak or a use after free).
+// program's range of memory and have nothing to destroy; links inside it are 4-byte
+// distances back; a program moved elsewhere keeps its nodes, and a parse that fails part-way
+// frees what it had built (the sanitizer builds would report a leak or a use after free).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -22,29 +22,64 @@ TEST_CASE("an arena's nodes, lists and texts are aligned, intact and freed with 
   std::vector<ast::NodePtr<ast::NumberExpr>> numbers;
   std::vector<std::string_view> texts;
   for (int i = 0; i < 10000; ++i) {
-    numbers.push_back(arena.make<ast::NumberExpr>(rts::SourceLoc{}, 0.5 * i));
+    numbers.push_back(ast::make_number(arena, rts::SourceLoc{}, 0.5 * i));
     CHECK(reinterpret_cast<std::uintptr_t>(numbers.back().get()) % alignof(ast::NumberExpr) == 0);
     texts.push_back(arena.text(std::string(i % 7 == 0 ? 100 : 3, static_cast<char>('a' + i % 26))));
   }
   for (int i = 0; i < 10000; i += 997) {
-    CHECK(numbers[i]->value == 0.5 * i);
+    CHECK(numbers[i]->value() == 0.5 * i);
     CHECK(numbers[i]->kind == ast::ExprKind::Number);
     CHECK(texts[i] == std::string(i % 7 == 0 ? 100 : 3, static_cast<char>('a' + i % 26)));
   }
-  const ast::NodeList<ast::ExprPtr> list =
-      arena.list<ast::ExprPtr>(numbers.begin() + 10, numbers.begin() + 20, [](auto n) { return ast::ExprPtr(n); });
+  // A list, and a node after it that links to it (a link reaches back only).
+  const ast::ListPiece<ast::ExprLink> piece =
+      arena.list<ast::ExprLink>(numbers.begin() + 10, numbers.begin() + 20, [](auto n) { return ast::ExprPtr(n); });
+  auto holder = arena.make<ast::ListExpr>(rts::SourceLoc{});
+  holder->elements = piece;
+  const ast::NodeList<ast::ExprLink>& list = holder->elements;
   REQUIRE(list.size() == 10);
-  CHECK(reinterpret_cast<std::uintptr_t>(list.begin()) % alignof(ast::ExprPtr) == 0);
-  CHECK(static_cast<const ast::NumberExpr&>(*list[3]).value == 6.5);
+  CHECK(reinterpret_cast<std::uintptr_t>(list.begin()) % alignof(ast::ExprLink) == 0);
+  CHECK(static_cast<const ast::NumberExpr&>(*list[3]).value() == 6.5);
   CHECK(list.back().get() == numbers[19].get());
   CHECK_THROWS_AS(list.at(10), std::out_of_range);
-  const ast::NodeList<ast::ExprPtr> none = arena.list<ast::ExprPtr>(numbers.begin(), numbers.begin(), [](auto n) { return ast::ExprPtr(n); });
-  CHECK(none.empty());
-  CHECK(none.begin() == none.end());
-  // Blocks grow, so 10,000 nodes take a few blocks, not one per node.
-  const std::size_t payload = 10000 * (sizeof(ast::NumberExpr) + 3) + 1500 * 100;
-  CHECK(arena.reserved() >= payload);
-  CHECK(arena.reserved() < 2 * payload + (std::size_t{1} << 20));
+  auto empty = arena.make<ast::ListExpr>(rts::SourceLoc{});
+  empty->elements = arena.list<ast::ExprLink>(numbers.begin(), numbers.begin(), [](auto n) { return ast::ExprPtr(n); });
+  CHECK(empty->elements.empty());
+  CHECK(empty->elements.begin() == empty->elements.end());
+  // Pages are committed as the arena fills, not all at once.
+  const std::size_t payload = 10000 * sizeof(ast::NumberExpr) + 1500 * 100 + 10000 * 3;  // at least
+  CHECK(arena.committed() >= payload);
+  CHECK(arena.committed() < 2 * payload + (std::size_t{1} << 20));
+  CHECK(arena.reserved() >= ast::NodeArena::kMinReserve);
+}
+
+TEST_CASE("links are 4 bytes and reach back only; a tree that outgrows its range is an error", "[ast]") {
+  static_assert(sizeof(ast::ExprLink) == 4);
+  static_assert(sizeof(ast::NodeList<ast::ExprLink>) == 8);
+  static_assert(sizeof(ast::BlockItem) == 12);
+  static_assert(sizeof(ast::NumberExpr) == 12 && alignof(ast::NumberExpr) == 4);
+  ast::NodeArena arena;
+  auto number = ast::make_number(arena, rts::SourceLoc{}, 2.0);
+  auto neg = arena.make<ast::UnaryExpr>(rts::SourceLoc{}, ast::UnaryOp::Neg, number);
+  CHECK(neg->operand.get() == number.get());
+  CHECK(static_cast<const ast::NumberExpr&>(*neg->operand).value() == 2.0);
+  CHECK_FALSE(number->wide());
+  ast::ExprPtr copied = neg->operand;  // read out as a pointer, it points where the link does
+  CHECK(copied.get() == number.get());
+  // A link to a node built after it is a builder's bug, caught where it is made.
+  auto later = ast::make_number(arena, rts::SourceLoc{}, 3.0);
+  CHECK_THROWS_AS(neg->operand = later, std::logic_error);
+  auto null_operand = arena.make<ast::UnaryExpr>(rts::SourceLoc{}, ast::UnaryOp::Neg, ast::ExprPtr());
+  CHECK_FALSE(null_operand->operand);
+  CHECK(null_operand->operand == nullptr);
+  // The range of an arena for no text is kMinReserve: more than that is refused with a message.
+  const std::string mib(std::size_t{1} << 20, 'x');
+  try {
+    for (std::size_t i = 0; i <= (ast::NodeArena::kMinReserve >> 20); ++i) arena.text(mib);
+    FAIL("the arena's range did not run out");
+  } catch (const std::length_error& e) {
+    CHECK(std::string(e.what()).find("split the file") != std::string::npos);
+  }
 }
 
 TEST_CASE("a program holds its arena: moved, it keeps its nodes", "[ast]") {
@@ -52,9 +87,9 @@ TEST_CASE("a program holds its arena: moved, it keeps its nodes", "[ast]") {
   REQUIRE(p.program.arena);
   const std::string before = rts::testing::ast_of("let a = [1, 2, <3, 4, 5>]\nsphere { center = <0, 1, 0> radius = a[0] }\n");
   ast::Program moved = std::move(p.program);
-  REQUIRE(moved.stmts.size() == 2);
-  CHECK(moved.stmts[0]->kind == ast::StmtKind::Let);
-  CHECK(moved.stmts[1]->kind == ast::StmtKind::ExprStmt);
+  REQUIRE(moved.stmts().size() == 2);
+  CHECK(moved.stmts()[0]->kind == ast::StmtKind::Let);
+  CHECK(moved.stmts()[1]->kind == ast::StmtKind::ExprStmt);
   std::ostringstream out;
   rts::print_ast(out, moved, false);
   CHECK(out.str() == before);

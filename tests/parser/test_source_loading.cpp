@@ -70,5 +70,5 @@ TEST_CASE("valid files load intact, empty ones too", "[loading]") {
   std::string empty = dir.write("empty.rts", "");
   const rts::SourceFile* e = sources.load(empty);
   CHECK(e->text().empty());
-  CHECK(rts::parse(*e).stmts.empty());
+  CHECK(rts::parse(*e).stmts().empty());
 }
