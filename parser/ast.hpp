@@ -190,6 +190,11 @@ using StmtList = NodeList<StmtLink>;
 // sized from the text to parse (kReservePerTextByte, at most kMaxReserve, less if the
 // address space is limited); a tree that outgrows it is an error. Whoever holds the nodes
 // must hold the arena as long (Program, ParseState).
+// Thrown when a tree outgrows its arena's range (the parser reports it where it stopped).
+struct ArenaFull : std::length_error {
+  using std::length_error::length_error;
+};
+
 class NodeArena {
  public:
   explicit NodeArena(std::size_t text_size = 0);
@@ -228,6 +233,9 @@ class NodeArena {
     std::memcpy(at, text.data(), text.size());
     return {static_cast<const char*>(at), text.size()};
   }
+  // Gives back the part of the range not committed: the arena takes nothing more (the parse
+  // has ended). Under `ulimit -v` a reserved range counts even untouched.
+  void release_unused();
   // Bytes of the range in use (committed pages), and the range's size.
   std::size_t committed() const { return committed_; }
   std::size_t reserved() const { return reserved_; }

@@ -62,6 +62,16 @@ ast::Program parse(const SourceFile& file, const ParseLimits& limits) {
 
   try {
     pegtl::parse<grammar::program, parse_detail::action, parse_detail::control>(in, st);
+  } catch (const ast::ArenaFull& e) {
+    // PEGTL has rewound the input by now; the latest piece built is where the parse stopped.
+    SourceLoc at = SourceLoc::at_offset(&file, 0);
+    auto later = [&](SourceLoc l) {
+      if (l.valid() && l.offset() > at.offset()) at = l;
+    };
+    if (!st.top_level.empty()) later(st.top_level.back()->loc);
+    if (!st.exprs.empty()) later(st.exprs.back().node->loc);
+    if (!st.opens.empty()) later(st.opens.back().loc);
+    throw LanguageError(at, e.what());
   } catch (const pegtl::parse_error& e) {
     // Every must<> failure is raised by parse_control as a LanguageError; this is a
     // safety net for anything PEGTL itself might report.
@@ -81,6 +91,7 @@ ast::Program parse(const SourceFile& file, const ParseLimits& limits) {
     program.top_level = st.arena->make<ast::StmtList>(list).get();
   }
   std::vector<ast::StmtPtr>().swap(st.top_level);
+  st.arena->release_unused();
   program.arena = std::move(st.arena);
   return program;
 }

@@ -51,6 +51,11 @@ TEST_CASE("an arena's nodes, lists and texts are aligned, intact and freed with 
   CHECK(arena.committed() >= payload);
   CHECK(arena.committed() < 2 * payload + (std::size_t{1} << 20));
   CHECK(arena.reserved() >= ast::NodeArena::kMinReserve);
+  // When the parse ends, the range shrinks to what it holds; the nodes stay.
+  arena.release_unused();
+  CHECK(arena.reserved() == arena.committed());
+  CHECK(numbers[9999]->value() == 0.5 * 9999);
+  CHECK(list.back().get() == numbers[19].get());
 }
 
 TEST_CASE("links are 4 bytes and reach back only; a tree that outgrows its range is an error", "[ast]") {
