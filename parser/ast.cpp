@@ -120,27 +120,20 @@ bool short_decimal(std::string_view text, int32_t& mantissa, int& exponent) {
 
 }  // namespace
 
-NodePtr<NumberExpr> make_number(NodeArena& arena, SourceLoc loc, double value, std::string_view spelling) {
-  int32_t mantissa = 0;
-  int exponent = 0;
-  bool found = false;
+NodePtr<NumberExpr> make_number(NodeArena& arena, SourceLoc loc, double value) {
   if (value == 0 && std::signbit(value)) return arena.make<NumberExpr>(loc, 0, NumberExpr::kNegativeZero);
-  if (!spelling.empty()) {
-    found = short_decimal(spelling, mantissa, exponent);
-  } else if (std::fabs(value) < 2147483648.0 && value == std::trunc(value)) {
-    mantissa = static_cast<int32_t>(value);
-    found = true;
-  }
-  if (found) {
-    auto n = arena.make<NumberExpr>(loc, mantissa, static_cast<uint8_t>(exponent + NumberExpr::kMaxExponent));
-    // The short form must give the very value: a spelling the scan misread would differ.
-    const double back = n->value();
-    if (std::memcmp(&back, &value, sizeof value) == 0) return n;
-    n->aux = NumberExpr::kWide;  // this node's 12 bytes stay unused; a wide one follows
-  }
+  if (std::fabs(value) < 2147483648.0 && value == std::trunc(value))
+    return arena.make<NumberExpr>(loc, static_cast<int32_t>(value), NumberExpr::kMaxExponent);
   auto n = arena.make_with_tail<NumberExpr>(sizeof(double), loc, 0, NumberExpr::kWide);
   std::memcpy(reinterpret_cast<std::byte*>(n.get()) + sizeof(NumberExpr), &value, sizeof value);
   return n;
+}
+
+NodePtr<NumberExpr> make_short_number(NodeArena& arena, SourceLoc loc, std::string_view spelling) {
+  int32_t mantissa = 0;
+  int exponent = 0;
+  if (!short_decimal(spelling, mantissa, exponent)) return nullptr;
+  return arena.make<NumberExpr>(loc, mantissa, static_cast<uint8_t>(exponent + NumberExpr::kMaxExponent));
 }
 
 void NumberExpr::negate() {

@@ -305,9 +305,12 @@ struct NumberExpr : Expr {
 
   NumberExpr(SourceLoc l, int32_t m, uint8_t code) : Expr(ExprKind::Number, l), mantissa(m) { aux = code; }
 };
-// A number literal with the value `value`; `spelling`, the literal's text, helps find the
-// short form (a value alone finds it when it is a small integer).
-NodePtr<NumberExpr> make_number(NodeArena& arena, SourceLoc loc, double value, std::string_view spelling = {});
+// A number literal with the value `value` (short when it is a small integer).
+NodePtr<NumberExpr> make_number(NodeArena& arena, SourceLoc loc, double value);
+// The literal a decimal spelling (the grammar's: digits, fraction, exponent) gives, when its
+// short form exists (at most 9 significant digits, a power of ten within 10^±22); null
+// otherwise. Its value is then exact without a decimal-to-binary conversion.
+NodePtr<NumberExpr> make_short_number(NodeArena& arena, SourceLoc loc, std::string_view spelling);
 struct StringExpr : Expr {
   std::string_view value;  // escapes already decoded; the text is in the arena
   StringExpr(SourceLoc l, std::string_view v) : Expr(ExprKind::String, l), value(v) {}

@@ -107,6 +107,11 @@ constexpr uint32_t kSurrogateLast = 0xDFFF;
 // Leaves
 // ---------------------------------------------------------------------------------------
 void push_number(ParseState& st, SourceLoc loc, std::string_view text) {
+  // Most literals are short decimals: their node needs no conversion (NumberExpr).
+  if (auto n = make_short_number(*st.arena, loc, text)) {
+    push_expr(st, n, 1);
+    return;
+  }
   double value = 0;
   auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec == std::errc::result_out_of_range) {
@@ -117,7 +122,7 @@ void push_number(ParseState& st, SourceLoc loc, std::string_view text) {
   } else if (ec != std::errc() || end != text.data() + text.size()) {
     throw LanguageError(loc, fmt::format("malformed number '{}'", text));
   }
-  push_expr(st, make_number(*st.arena, loc, value, text), 1);
+  push_expr(st, make_number(*st.arena, loc, value), 1);
 }
 
 std::string decode_string(ParseState& st) {
