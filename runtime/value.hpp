@@ -50,18 +50,14 @@ struct Value {
   std::shared_ptr<HeapValue> ref;  // String, List, Material, Texture, Macro, Random; Object: ObjectValue or null
 
   static Value none() { return {}; }
-  static Value number(double x) {
-    Value r;
-    r.type = Type::Number;
-    r.v.x = x;
-    return r;
-  }
-  static Value boolean(bool b) {
-    Value r;
-    r.type = Type::Bool;
-    r.v.x = b ? 1.0 : 0.0;
-    return r;
-  }
+  Value() = default;
+  // Made with each member written once, not zeroed and then partly written again: a value is
+  // moved right after it is made, and a 16-byte load of v.x and v.y that spans two stores
+  // cannot be forwarded from them (perf: a fifth of call_macro's samples on the instruction
+  // after such a load).
+  Value(Type t, glm::dvec3 x) : type(t), v(x) {}
+  static Value number(double x) { return Value(Type::Number, glm::dvec3(x, 0.0, 0.0)); }
+  static Value boolean(bool b) { return Value(Type::Bool, glm::dvec3(b ? 1.0 : 0.0, 0.0, 0.0)); }
   static Value vector(glm::dvec3 x) {
     Value r;
     r.type = Type::Vector;
