@@ -120,12 +120,28 @@ bool short_decimal(std::string_view text, int32_t& mantissa, int& exponent) {
 
 }  // namespace
 
+namespace {
+
+constexpr int32_t kTinyLimit = 1 << 15;  // |m| < 2^15 fits the header's 16 bits
+
+NodePtr<NumberExpr> make_decimal(NodeArena& arena, SourceLoc loc, int32_t mantissa, int exponent) {
+  const int biased = exponent + NumberExpr::kMaxExponent;
+  if (mantissa > -kTinyLimit && mantissa < kTinyLimit)
+    return arena.make<NumberExpr>(loc, static_cast<uint8_t>(NumberExpr::kTiny + biased),
+                                  static_cast<uint16_t>(static_cast<int16_t>(mantissa)));
+  auto n = arena.make_with_tail<NumberExpr>(sizeof(int32_t), loc, static_cast<uint8_t>(NumberExpr::kShort + biased));
+  n->set_tail(mantissa);
+  return n;
+}
+
+}  // namespace
+
 NodePtr<NumberExpr> make_number(NodeArena& arena, SourceLoc loc, double value) {
-  if (value == 0 && std::signbit(value)) return arena.make<NumberExpr>(loc, 0, NumberExpr::kNegativeZero);
+  if (value == 0 && std::signbit(value)) return arena.make<NumberExpr>(loc, NumberExpr::kNegativeZero);
   if (std::fabs(value) < 2147483648.0 && value == std::trunc(value))
-    return arena.make<NumberExpr>(loc, static_cast<int32_t>(value), NumberExpr::kMaxExponent);
-  auto n = arena.make_with_tail<NumberExpr>(sizeof(double), loc, 0, NumberExpr::kWide);
-  std::memcpy(reinterpret_cast<std::byte*>(n.get()) + sizeof(NumberExpr), &value, sizeof value);
+    return make_decimal(arena, loc, static_cast<int32_t>(value), 0);
+  auto n = arena.make_with_tail<NumberExpr>(sizeof(double), loc, NumberExpr::kWide);
+  n->set_tail(value);
   return n;
 }
 
@@ -133,18 +149,19 @@ NodePtr<NumberExpr> make_short_number(NodeArena& arena, SourceLoc loc, std::stri
   int32_t mantissa = 0;
   int exponent = 0;
   if (!short_decimal(spelling, mantissa, exponent)) return nullptr;
-  return arena.make<NumberExpr>(loc, mantissa, static_cast<uint8_t>(exponent + NumberExpr::kMaxExponent));
+  return make_decimal(arena, loc, mantissa, exponent);
 }
 
 void NumberExpr::negate() {
-  if (aux <= 2 * kMaxExponent) {
-    if (mantissa != 0) mantissa = -mantissa;
+  if (aux <= kTiny + 2 * kMaxExponent) {
+    if (aux16 != 0) aux16 = static_cast<uint16_t>(-static_cast<int16_t>(aux16));
     else aux = kNegativeZero;
+  } else if (aux <= kShort + 2 * kMaxExponent) {
+    set_tail(-tail<int32_t>());
   } else if (aux == kNegativeZero) {
-    aux = kMaxExponent;  // +0
+    aux = kTiny + kMaxExponent;  // +0
   } else {
-    double v = -value();
-    std::memcpy(reinterpret_cast<std::byte*>(this) + sizeof(NumberExpr), &v, sizeof v);
+    set_tail(-tail<double>());
   }
 }
 

@@ -271,18 +271,23 @@ enum class ExprKind : uint8_t {
 
 struct Expr {
   ExprKind kind;
-  uint8_t aux = 0;  // a byte of the header a node kind may use (NumberExpr)
+  uint8_t aux = 0;     // header bytes a node kind may use (NumberExpr)
+  uint16_t aux16 = 0;
   SourceLoc loc;
   explicit Expr(ExprKind k, SourceLoc l) : kind(k), loc(l) {}
 };
 
-// A number literal, 12 bytes (issue 24: numbers were a third of a scene's nodes). Most
-// literals are short decimals: kept as an integer and a power of ten, they give back exactly
-// the double their text gives (both factors are exact doubles and one multiplication or
-// division rounds once: Clinger's fast path, as fast_float takes it). Any other value is
-// kept whole in 8 more bytes just after the node ("wide"). Made by make_number.
+// A number literal (issue 24: numbers were a third of a scene's nodes). Most literals are
+// short decimals: kept as an integer and a power of ten, they give back exactly the double
+// their text gives (both factors are exact doubles and one multiplication or division rounds
+// once: Clinger's fast path, as fast_float takes it). Up to four digits (|m| < 2^15, `0.499`,
+// `-38.2`) the integer is in the header and the literal is 8 bytes ("tiny"); up to nine it
+// follows the node in 4 more bytes; any other value is kept whole in 8 more ("wide").
+// `aux` says which, with the power. Made by make_number and make_short_number.
 struct NumberExpr : Expr {
   static constexpr int kMaxExponent = 22;  // 10^22 is the largest exact power of ten
+  static constexpr uint8_t kTiny = 0;      // aux - kTiny - kMaxExponent is the power
+  static constexpr uint8_t kShort = 64;    // aux - kShort - kMaxExponent is the power
   static constexpr uint8_t kNegativeZero = 0xFE;
   static constexpr uint8_t kWide = 0xFF;
   static constexpr double kPow10[kMaxExponent + 1] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
@@ -290,20 +295,37 @@ struct NumberExpr : Expr {
                                                      1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
   double value() const {
-    if (aux <= 2 * kMaxExponent) {  // aux is the exponent plus kMaxExponent
-      return aux >= kMaxExponent ? mantissa * kPow10[aux - kMaxExponent] : mantissa / kPow10[kMaxExponent - aux];
-    }
+    if (aux <= kTiny + 2 * kMaxExponent) return scaled(static_cast<int16_t>(aux16), aux - kTiny);
+    if (aux <= kShort + 2 * kMaxExponent) return scaled(tail<int32_t>(), aux - kShort);
     if (aux == kNegativeZero) return -0.0;
-    double v;
+    return tail<double>();
+  }
+  bool wide() const { return aux == kWide; }
+  bool tiny() const { return aux <= kTiny + 2 * kMaxExponent || aux == kNegativeZero; }
+  void negate();  // in place: the parser folds `-literal`
+
+  NumberExpr(SourceLoc l, uint8_t code, uint16_t tiny_mantissa = 0) : Expr(ExprKind::Number, l) {
+    aux = code;
+    aux16 = tiny_mantissa;
+  }
+
+  template <class T>
+  T tail() const {
+    T v;
     std::memcpy(&v, reinterpret_cast<const std::byte*>(this) + sizeof(NumberExpr), sizeof v);
     return v;
   }
-  bool wide() const { return aux == kWide; }
-  void negate();  // in place: the parser folds `-literal`
+  template <class T>
+  void set_tail(T v) {
+    std::memcpy(reinterpret_cast<std::byte*>(this) + sizeof(NumberExpr), &v, sizeof v);
+  }
 
-  int32_t mantissa = 0;  // with the exponent in `aux`; unused when wide
-
-  NumberExpr(SourceLoc l, int32_t m, uint8_t code) : Expr(ExprKind::Number, l), mantissa(m) { aux = code; }
+ private:
+  // m·10^(biased_exponent - kMaxExponent)
+  static double scaled(double m, int biased_exponent) {
+    return biased_exponent >= kMaxExponent ? m * kPow10[biased_exponent - kMaxExponent]
+                                           : m / kPow10[kMaxExponent - biased_exponent];
+  }
 };
 // A number literal with the value `value` (short when it is a small integer).
 NodePtr<NumberExpr> make_number(NodeArena& arena, SourceLoc loc, double value);
@@ -327,9 +349,9 @@ struct NameExpr : Expr {
   NameExpr(SourceLoc l, Symbol n) : Expr(ExprKind::Name, l), name(n) {}
 };
 // A vector's components: a list of links, or, when every component is a number literal and
-// the literals lie one after another in the arena (they were parsed one after another), the
-// literals themselves, with no list of links (issue 24: `<1, -2, 3>` is most of a generated
-// scene's vectors; the list was 24 of their 96 bytes). Reads as a list of ExprPtr either way.
+// the literals lie one after another in the arena at one stride (they were parsed one after
+// another, all of one size), the literals themselves, with no list of links (issue 24:
+// `<1, -2, 3>` is most of a generated scene's vectors). Reads as a list of ExprPtr either way.
 class ComponentList {
  public:
   class iterator {
@@ -352,27 +374,28 @@ class ComponentList {
   ComponentList& operator=(ListPiece<ExprLink> links) {
     first_.reset(links.first);
     count_ = links.count;
-    literals_ = false;
+    stride_ = 0;
     return *this;
   }
-  // `count` number literals at consecutive addresses from `first`.
-  void set_literals(const NumberExpr* first, uint32_t count) {
+  // `count` number literals `stride` bytes apart from `first` (8, 12 or 16: NumberExpr's
+  // forms; the last may be longer than the stride).
+  void set_literals(const NumberExpr* first, uint32_t count, uint32_t stride) {
     first_.reset(first);
     count_ = count;
-    literals_ = true;
+    stride_ = stride / 4;
   }
 
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
-  bool literals() const { return literals_; }
+  bool literals() const { return stride_ != 0; }
   ExprPtr operator[](std::size_t i) const;
   iterator begin() const { return {this, 0}; }
   iterator end() const { return {this, count_}; }
 
  private:
   RawLink first_;
-  uint32_t count_ : 31 = 0;
-  uint32_t literals_ : 1 = 0;
+  uint32_t count_ : 29 = 0;
+  uint32_t stride_ : 3 = 0;  // in 4-byte units; 0: a list of links
 };
 
 // <x, y, z> (the grammar allows 2 to 4 components; the evaluator decides what it accepts)
@@ -382,7 +405,10 @@ struct VectorExpr : Expr {
 };
 
 inline ExprPtr ComponentList::operator[](std::size_t i) const {
-  if (literals_) return ExprPtr(const_cast<NumberExpr*>(static_cast<const NumberExpr*>(first_.target()) + i));
+  if (stride_ != 0) {
+    const auto* at = static_cast<const std::byte*>(first_.target()) + i * (stride_ * std::size_t{4});
+    return ExprPtr(const_cast<NumberExpr*>(reinterpret_cast<const NumberExpr*>(at)));
+  }
   return static_cast<const ExprLink*>(first_.target())[i];
 }
 // [a, b, c]

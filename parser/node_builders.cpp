@@ -204,26 +204,29 @@ void finish_list(ParseState& st) {
   push_expr(st, list, h + 1);
 }
 
-// Whether the pieces from `mark` on are number literals at consecutive addresses (parsed one
-// after another into the same arena block).
-// A wide literal (NumberExpr) is longer than the stride, so one can only come last.
-bool consecutive_literals(const ParseState& st, uint32_t mark) {
-  if (mark >= st.exprs.size() || st.exprs[mark].node->kind != ExprKind::Number) return false;
-  const auto* first = static_cast<const NumberExpr*>(st.exprs[mark].node.get());
-  for (std::size_t k = 1; mark + k < st.exprs.size(); ++k)
-    if (st.exprs[mark + k].node.get() != first + k) return false;  // also rules out other kinds
-  return true;
+// The stride in bytes when the pieces from `mark` on are number literals one after another
+// in the arena at one stride (they were parsed one after another, all of one of
+// NumberExpr's sizes but maybe the last); 0 when they are not.
+uint32_t literal_stride(const ParseState& st, uint32_t mark) {
+  const std::size_t n = st.exprs.size() - mark;
+  if (mark >= st.exprs.size() || n >= (1u << 29)) return 0;
+  auto address = [&](std::size_t k) { return reinterpret_cast<std::uintptr_t>(st.exprs[mark + k].node.get()); };
+  const std::uintptr_t stride = n == 1 ? sizeof(NumberExpr) : address(1) - address(0);
+  if (stride != 8 && stride != 12 && stride != 16) return 0;
+  for (std::size_t k = 0; k < n; ++k)
+    if (st.exprs[mark + k].node->kind != ExprKind::Number || address(k) != address(0) + k * stride) return 0;
+  return static_cast<uint32_t>(stride);
 }
 
 void finish_vector(ParseState& st) {
   Open o = close_bracket(st);
   uint32_t h = 0;
   NodePtr<VectorExpr> vec;
-  if (consecutive_literals(st, o.mark)) {
+  if (const uint32_t stride = literal_stride(st, o.mark)) {
     const auto count = static_cast<uint32_t>(st.exprs.size() - o.mark);
     const auto* first = static_cast<const NumberExpr*>(st.exprs[o.mark].node.get());
     vec = st.arena->make<VectorExpr>(o.loc);
-    vec->components.set_literals(first, count);
+    vec->components.set_literals(first, count, stride);
     h = 1;
     st.exprs.resize(o.mark);
   } else {

@@ -178,8 +178,24 @@ TEST_CASE("a number literal gives exactly its text's double, short or wide", "[a
     const double want = std::strtod(spellings[i].c_str(), nullptr), got = n.value();
     REQUIRE(std::memcmp(&got, &want, sizeof got) == 0);
   }
-  // A vector's literals are read at the short form's stride: a wide one can only come last.
-  auto p = parse_text("let a = <1, 2, 3.141592653589793>\nlet b = <3.141592653589793, 2, -0>\n");
+  // Four digits or fewer: the 8-byte form.
+  auto tiny = parse_text("let a = 0.499\nlet b = -38.2\nlet c = 32767\nlet d = 32768\nlet e = -0\n");
+  const bool expect_tiny[] = {true, true, true, false, true};
+  for (int k = 0; k < 5; ++k) {
+    CAPTURE(k);
+    CHECK(static_cast<const ast::NumberExpr&>(*static_cast<ast::LetStmt&>(*tiny.program.stmts()[k]).value).tiny() ==
+          expect_tiny[k]);
+  }
+  // A vector's literals are read at the tiny form's stride: a longer one can only come last.
+  auto p = parse_text("let a = <1, 2, 3.141592653589793>\nlet b = <3.141592653589793, 2, -0>\n"
+                      "let c = <1, 123456, 2>\nlet d = <1, 2, 123456>\n");
+  const auto& c = static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[2]).value);
+  const auto& d = static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[3]).value);
+  CHECK_FALSE(c.components.literals());
+  CHECK(d.components.literals());
+  CHECK(static_cast<const ast::NumberExpr&>(*c.components[1]).value() == 123456);
+  CHECK(static_cast<const ast::NumberExpr&>(*c.components[2]).value() == 2);
+  CHECK(static_cast<const ast::NumberExpr&>(*d.components[2]).value() == 123456);
   const auto& a = static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[0]).value);
   const auto& b = static_cast<const ast::VectorExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[1]).value);
   CHECK(a.components.literals());

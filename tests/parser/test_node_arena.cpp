@@ -62,7 +62,7 @@ TEST_CASE("links are 4 bytes and reach back only; a tree that outgrows its range
   static_assert(sizeof(ast::ExprLink) == 4);
   static_assert(sizeof(ast::NodeList<ast::ExprLink>) == 8);
   static_assert(sizeof(ast::BlockItem) == 12);
-  static_assert(sizeof(ast::NumberExpr) == 12 && alignof(ast::NumberExpr) == 4);
+  static_assert(sizeof(ast::NumberExpr) == 8 && alignof(ast::NumberExpr) == 4);
   ast::NodeArena arena;
   auto number = ast::make_number(arena, rts::SourceLoc{}, 2.0);
   auto neg = arena.make<ast::UnaryExpr>(rts::SourceLoc{}, ast::UnaryOp::Neg, number);
