@@ -43,18 +43,21 @@ class Symbol {
   friend bool operator!=(Symbol a, std::nullptr_t) { return a.id_ != 0; }
 
  private:
-  friend Symbol intern(std::string_view name);
+  friend Symbol intern(std::string_view name, uint32_t hash);
+  friend struct SymbolTable;
   static constexpr uint32_t kChunkBits = 12;
   static constexpr uint32_t kChunkSize = 1u << kChunkBits;
-  static const std::string*** chunks();  // [id >> kChunkBits][id & (kChunkSize - 1)]
+  static std::string** chunks();  // the name of id is chunks()[id >> kChunkBits][id & (kChunkSize - 1)]
   const std::string* name() const {
-    const std::string** chunk =
-        std::atomic_ref<const std::string**>(chunks()[id_ >> kChunkBits]).load(std::memory_order_acquire);
-    return chunk[id_ & (kChunkSize - 1)];
+    std::string* chunk = std::atomic_ref<std::string*>(chunks()[id_ >> kChunkBits]).load(std::memory_order_acquire);
+    return chunk + (id_ & (kChunkSize - 1));
   }
   uint32_t id_ = 0;  // 0: no symbol
 };
 Symbol intern(std::string_view name);
+// The same, with the name's symbol_hash already computed (the parser's cache has it).
+Symbol intern(std::string_view name, uint32_t hash);
+uint32_t symbol_hash(std::string_view name);
 
 struct Expr;
 struct Stmt;

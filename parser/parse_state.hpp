@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -89,8 +90,17 @@ struct ParseState {
   SourceLoc string_body_loc;
   std::string include_path;
 
-  // Interned names by their spelling in the source text (views into file->text()).
-  std::unordered_map<std::string_view, ast::Symbol> symbols;
+  // A small cache of interned names by spelling (views into file->text()), direct-mapped by
+  // the name's hash: the names a scene repeats (properties, materials) are found without the
+  // symbol table's lock; a name seen once costs the cache nothing (issue 24: a per-parse map
+  // of every distinct name was 56 bytes a name and a cache miss a lookup).
+  struct CachedSymbol {
+    const char* spelling = nullptr;
+    uint32_t size = 0;
+    ast::Symbol symbol;
+  };
+  static constexpr std::size_t kSymbolCache = 1024;
+  std::unique_ptr<CachedSymbol[]> symbols = std::make_unique<CachedSymbol[]>(kSymbolCache);
 
   // The location of a character of the text being parsed.
   SourceLoc loc(const char* at) const {
@@ -98,9 +108,12 @@ struct ParseState {
   }
 
   ast::Symbol symbol(std::string_view spelling) {
-    auto [it, inserted] = symbols.try_emplace(spelling, nullptr);
-    if (inserted) it->second = ast::intern(spelling);
-    return it->second;
+    const uint32_t hash = ast::symbol_hash(spelling);
+    CachedSymbol& c = symbols[hash & (kSymbolCache - 1)];
+    if (c.size == spelling.size() && c.spelling && std::memcmp(c.spelling, spelling.data(), c.size) == 0)
+      return c.symbol;
+    c = {spelling.data(), static_cast<uint32_t>(spelling.size()), ast::intern(spelling, hash)};
+    return c.symbol;
   }
 };
 
