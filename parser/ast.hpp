@@ -193,6 +193,10 @@ using StmtList = NodeList<StmtLink>;
 // sized from the text to parse (kReservePerTextByte, at most kMaxReserve, less if the
 // address space is limited); a tree that outgrows it is an error. Whoever holds the nodes
 // must hold the arena as long (Program, ParseState).
+// An operator's place further than this from its node's place is kept after the node
+// (operator_place, below).
+inline constexpr uint16_t kFarOperator = 0xFFFF;
+
 // Thrown when a tree outgrows its arena's range (the parser reports it where it stopped).
 struct ArenaFull : std::length_error {
   using std::length_error::length_error;
@@ -218,6 +222,20 @@ class NodeArena {
     static_assert(std::is_trivially_destructible_v<T>, "an AST node has nothing to destroy");
     void* at = allocate(sizeof(T) + tail, alignof(T));
     return NodePtr<T>(new (at) T(std::forward<Args>(args)...));
+  }
+  // A node whose operator is at `op_loc` (BinaryExpr, TransformExpr: operator_place).
+  template <class T, class... Args>
+  NodePtr<T> make_with_operator(SourceLoc op_loc, SourceLoc loc, Args&&... args) {
+    const int64_t distance = loc.bytes_to(op_loc);
+    if (distance >= 0 && distance < kFarOperator) {
+      NodePtr<T> n = make<T>(loc, std::forward<Args>(args)...);
+      n->aux16 = static_cast<uint16_t>(distance);
+      return n;
+    }
+    NodePtr<T> n = make_with_tail<T>(sizeof(SourceLoc), loc, std::forward<Args>(args)...);
+    n->aux16 = kFarOperator;
+    std::memcpy(reinterpret_cast<std::byte*>(n.get()) + sizeof(T), &op_loc, sizeof op_loc);
+    return n;
   }
   // The elements T(get(x)) for each x in [first, last), one after another in the arena.
   template <class T, class It, class Get>
@@ -279,6 +297,15 @@ struct Expr {
   SourceLoc loc;
   explicit Expr(ExprKind k, SourceLoc l) : kind(k), loc(l) {}
 };
+
+// The place of a binary or transform node's operator: `aux16` bytes after the node's own
+// place, or, when it is kFarOperator or more bytes away, a SourceLoc just after the node.
+inline SourceLoc operator_place(const Expr& e, std::size_t node_size) {
+  if (e.aux16 != kFarOperator) return e.loc.advanced(e.aux16);
+  SourceLoc at;
+  std::memcpy(&at, reinterpret_cast<const std::byte*>(&e) + node_size, sizeof at);
+  return at;
+}
 
 // A number literal (issue 24: numbers were a third of a scene's nodes). Most literals are
 // short decimals: kept as an integer and a power of ten, they give back exactly the double
@@ -421,19 +448,25 @@ struct ListExpr : Expr {
 };
 
 enum class UnaryOp : uint8_t { Neg, Plus, Not };
+// The operator is in the header's spare byte and `loc` is where it is: 12 bytes.
 struct UnaryExpr : Expr {
-  UnaryOp op;
+  UnaryOp op() const { return static_cast<UnaryOp>(aux); }
   ExprLink operand;
-  UnaryExpr(SourceLoc l, UnaryOp o, ExprPtr e) : Expr(ExprKind::Unary, l), op(o), operand(e) {}
+  UnaryExpr(SourceLoc l, UnaryOp o, ExprPtr e) : Expr(ExprKind::Unary, l), operand(e) {
+    aux = static_cast<uint8_t>(o);
+  }
 };
 
 enum class BinaryOp : uint8_t { Add, Sub, Mul, Div, Mod, Pow, Eq, Ne, Lt, Le, Gt, Ge, And, Or };
+// The operator in the header, and where it is (for "wrong type for operator" errors) as a
+// distance from `loc` (OperatorPlace): 16 bytes. Made by make_with_operator.
 struct BinaryExpr : Expr {
-  BinaryOp op;
-  SourceLoc op_loc;  // where the operator is, for "wrong type for operator" errors
+  BinaryOp op() const { return static_cast<BinaryOp>(aux); }
+  SourceLoc op_loc() const { return operator_place(*this, sizeof(BinaryExpr)); }
   ExprLink lhs, rhs;
-  BinaryExpr(SourceLoc l, BinaryOp o, ExprPtr a, ExprPtr b, SourceLoc ol)
-      : Expr(ExprKind::Binary, l), op(o), op_loc(ol), lhs(a), rhs(b) {}
+  BinaryExpr(SourceLoc l, BinaryOp o, ExprPtr a, ExprPtr b) : Expr(ExprKind::Binary, l), lhs(a), rhs(b) {
+    aux = static_cast<uint8_t>(o);
+  }
 };
 
 // a .. b (end excluded), a ..= b (end included), optional `step s`
@@ -530,13 +563,15 @@ struct WithExpr : Expr {
 
 enum class TransformOp : uint8_t { Translate, Rotate, Scale, Matrix };
 // object translate <1,0,0>   (postfix, lowest precedence, left-associative)
+// As BinaryExpr: the operator and its place in the header, 16 bytes.
 struct TransformExpr : Expr {
-  TransformOp op;
-  SourceLoc op_loc;
+  TransformOp op() const { return static_cast<TransformOp>(aux); }
+  SourceLoc op_loc() const { return operator_place(*this, sizeof(TransformExpr)); }
   ExprLink object;
   ExprLink arg;
-  TransformExpr(SourceLoc l, ExprPtr o, TransformOp t, ExprPtr a, SourceLoc ol)
-      : Expr(ExprKind::Transform, l), op(t), op_loc(ol), object(o), arg(a) {}
+  TransformExpr(SourceLoc l, ExprPtr o, TransformOp t, ExprPtr a) : Expr(ExprKind::Transform, l), object(o), arg(a) {
+    aux = static_cast<uint8_t>(t);
+  }
 };
 
 // ---------------------------------------------------------------------------------------

@@ -113,13 +113,13 @@ Form describe_expr(const Expr& e) {
     }
     case ExprKind::Unary: {
       const auto& u = static_cast<const UnaryExpr&>(e);
-      Form f = form(unary_head(u.op), e.loc);
+      Form f = form(unary_head(u.op()), e.loc);
       f.parts.push_back(child(u.operand.get()));
       return f;
     }
     case ExprKind::Binary: {
       const auto& b = static_cast<const BinaryExpr&>(e);
-      Form f = form(to_string(b.op), e.loc);
+      Form f = form(to_string(b.op()), e.loc);
       f.parts.push_back(child(b.lhs.get()));
       f.parts.push_back(child(b.rhs.get()));
       return f;
@@ -173,7 +173,7 @@ Form describe_expr(const Expr& e) {
     }
     case ExprKind::Transform: {
       const auto& t = static_cast<const TransformExpr&>(e);
-      Form f = form(to_string(t.op), e.loc);
+      Form f = form(to_string(t.op()), e.loc);
       f.parts.push_back(child(t.object.get()));
       f.parts.push_back(child(t.arg.get()));
       return f;

@@ -108,7 +108,7 @@ class MarkCollector {
         break;
       case ExprKind::Unary: {
         const auto* u = static_cast<const UnaryExpr*>(e);
-        if (u->op != UnaryOp::Not) marks_.unary_ops.insert(offset(u->loc));
+        if (u->op() != UnaryOp::Not) marks_.unary_ops.insert(offset(u->loc));
         expr(u->operand.get());
         break;
       }

@@ -75,6 +75,11 @@ class SourceLoc {
     if (valid()) l.at_ = static_cast<uint32_t>(static_cast<int64_t>(at_) + bytes);
     return l;
   }
+  // How many bytes `later` lies after this place, or -1 when either is not a place (for a node
+  // that keeps a second place as a short distance from its first; both in one file).
+  int64_t bytes_to(SourceLoc later) const {
+    return valid() && later.valid() ? static_cast<int64_t>(later.at_) - static_cast<int64_t>(at_) : -1;
+  }
   friend bool operator==(const SourceLoc& a, const SourceLoc& b) { return a.at_ == b.at_; }
   friend bool operator!=(const SourceLoc& a, const SourceLoc& b) { return a.at_ != b.at_; }
 

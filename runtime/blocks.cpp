@@ -274,12 +274,12 @@ Value Interpreter::transform_textures(const Value& v, const render::Mat4& t) {
 Value Interpreter::eval_transform(const ast::TransformExpr& e) {
   Value obj = eval(*e.object);
   Value arg = eval(*e.arg);
-  const char* op = ast::to_string(e.op);
+  const char* op = ast::to_string(e.op());
   auto need = [&](bool ok, const char* what) {
     if (!ok) fail(e.arg->loc, fmt::format("'{}' needs {}, got {}", op, what, with_article(arg.type)));
   };
   render::Mat4 t(1.0);
-  switch (e.op) {
+  switch (e.op()) {
     case ast::TransformOp::Translate:
       need(arg.type == Type::Vector, "a vector");
       t = glm::translate(render::Mat4(1.0), arg.v);
@@ -340,7 +340,7 @@ Value Interpreter::eval_transform(const ast::TransformExpr& e) {
     case Type::Material:
       return transform_textures(obj, t);
     default:
-      fail(e.op_loc, fmt::format("cannot {} {}; transforms apply to objects, materials, textures and transforms", op,
+      fail(e.op_loc(), fmt::format("cannot {} {}; transforms apply to objects, materials, textures and transforms", op,
                                  with_article(obj.type)));
   }
 }

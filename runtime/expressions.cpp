@@ -160,24 +160,24 @@ bool Interpreter::animation_constant(ast::Symbol name, Value& out) {
   return true;
 }
 
-Value Interpreter::eval_unary(const ast::UnaryExpr& e) { return unary_op(e.op, eval(*e.operand), e.loc); }
+Value Interpreter::eval_unary(const ast::UnaryExpr& e) { return unary_op(e.op(), eval(*e.operand), e.loc); }
 
 Value Interpreter::eval_binary(const ast::BinaryExpr& e) {
-  if (e.op == ast::BinaryOp::And || e.op == ast::BinaryOp::Or) {
+  if (e.op() == ast::BinaryOp::And || e.op() == ast::BinaryOp::Or) {
     Value a = eval(*e.lhs);
     if (a.type != Type::Bool)
-      fail(e.lhs->loc, fmt::format("'{}' needs bools, got {}", ast::to_string(e.op), with_article(a.type)));
-    if (e.op == ast::BinaryOp::And ? !a.truth() : a.truth()) return a;  // short-circuit
+      fail(e.lhs->loc, fmt::format("'{}' needs bools, got {}", ast::to_string(e.op()), with_article(a.type)));
+    if (e.op() == ast::BinaryOp::And ? !a.truth() : a.truth()) return a;  // short-circuit
     Value b = eval(*e.rhs);
     if (b.type != Type::Bool)
-      fail(e.rhs->loc, fmt::format("'{}' needs bools, got {}", ast::to_string(e.op), with_article(b.type)));
+      fail(e.rhs->loc, fmt::format("'{}' needs bools, got {}", ast::to_string(e.op()), with_article(b.type)));
     return b;
   }
   Value a = eval(*e.lhs);
   Value b = eval(*e.rhs);
-  if (e.op == ast::BinaryOp::Add && a.type == b.type && (a.type == Type::List || a.type == Type::String))
-    return concat(std::move(a), b, e.op_loc);
-  return binary_op(e.op, a, b, e.op_loc);
+  if (e.op() == ast::BinaryOp::Add && a.type == b.type && (a.type == Type::List || a.type == Type::String))
+    return concat(std::move(a), b, e.op_loc());
+  return binary_op(e.op(), a, b, e.op_loc());
 }
 
 Value Interpreter::eval_range(const ast::RangeExpr& e) {

@@ -229,13 +229,13 @@ class FunctionCompiler {
       case ast::ExprKind::Unary: {
         const auto& u = static_cast<const ast::UnaryExpr&>(e);
         CV a = expr(*u.operand, locals, depth);
-        if (u.op == ast::UnaryOp::Plus) return a;
-        if (u.op == ast::UnaryOp::Neg) return map1(Op::Neg, a, e.loc);
+        if (u.op() == ast::UnaryOp::Plus) return a;
+        if (u.op() == ast::UnaryOp::Neg) return map1(Op::Neg, a, e.loc);
         return num(emit(Op::Not, {need_num(a, *u.operand, "the operand of 'not'")}, e.loc));
       }
       case ast::ExprKind::Binary: {
         const auto& b = static_cast<const ast::BinaryExpr&>(e);
-        return binary(b.op, expr(*b.lhs, locals, depth), expr(*b.rhs, locals, depth), b);
+        return binary(b.op(), expr(*b.lhs, locals, depth), expr(*b.rhs, locals, depth), b);
       }
       case ast::ExprKind::Member: {
         const auto& m = static_cast<const ast::MemberExpr&>(e);
@@ -286,17 +286,17 @@ class FunctionCompiler {
   CV binary(ast::BinaryOp op, const CV& a, const CV& b, const ast::BinaryExpr& e) {
     using B = ast::BinaryOp;
     switch (op) {
-      case B::Add: return arith(Op::Add, a, b, e.op_loc, *e.rhs);
-      case B::Sub: return arith(Op::Sub, a, b, e.op_loc, *e.rhs);
-      case B::Mul: return arith(Op::Mul, a, b, e.op_loc, *e.rhs);
-      case B::Div: return arith(Op::Div, a, b, e.op_loc, *e.rhs);
+      case B::Add: return arith(Op::Add, a, b, e.op_loc(), *e.rhs);
+      case B::Sub: return arith(Op::Sub, a, b, e.op_loc(), *e.rhs);
+      case B::Mul: return arith(Op::Mul, a, b, e.op_loc(), *e.rhs);
+      case B::Div: return arith(Op::Div, a, b, e.op_loc(), *e.rhs);
       case B::Eq:
       case B::Ne: {
-        if (a.vec != b.vec) fail(e.op_loc, "comparing a vector with a number");
-        Reg r = emit(Op::Eq, {a.r[0], b.r[0]}, e.op_loc);
+        if (a.vec != b.vec) fail(e.op_loc(), "comparing a vector with a number");
+        Reg r = emit(Op::Eq, {a.r[0], b.r[0]}, e.op_loc());
         if (a.vec)
-          for (int i = 1; i < 3; ++i) r = emit(Op::And, {r, emit(Op::Eq, {a.r[i], b.r[i]}, e.op_loc)}, e.op_loc);
-        return num(op == B::Eq ? r : emit(Op::Not, {r}, e.op_loc));
+          for (int i = 1; i < 3; ++i) r = emit(Op::And, {r, emit(Op::Eq, {a.r[i], b.r[i]}, e.op_loc())}, e.op_loc());
+        return num(op == B::Eq ? r : emit(Op::Not, {r}, e.op_loc()));
       }
       default: break;
     }
@@ -304,7 +304,7 @@ class FunctionCompiler {
     const Reg y = need_num(b, *e.rhs, fmt::format("the right side of '{}'", ast::to_string(op)).c_str());
     static constexpr Op kOps[] = {Op::Add, Op::Sub, Op::Mul, Op::Div, Op::Mod, Op::Pow, Op::Eq,
                                   Op::Ne,  Op::Lt,  Op::Le,  Op::Gt,  Op::Ge,  Op::And, Op::Or};
-    return num(emit(kOps[static_cast<int>(op)], {x, y}, e.op_loc));
+    return num(emit(kOps[static_cast<int>(op)], {x, y}, e.op_loc()));
   }
 
   CV call(const ast::CallExpr& c, std::vector<Local>& locals, int depth) {

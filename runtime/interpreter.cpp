@@ -259,7 +259,7 @@ bool Interpreter::exec_append(const ast::AssignStmt& s) {
     rhs = s.value.get();
   } else if (s.op == ast::AssignOp::Set && s.value->kind == ast::ExprKind::Binary) {
     const auto& bin = static_cast<const ast::BinaryExpr&>(*s.value);
-    if (bin.op == ast::BinaryOp::Add && bin.lhs->kind == ast::ExprKind::Name &&
+    if (bin.op() == ast::BinaryOp::Add && bin.lhs->kind == ast::ExprKind::Name &&
         static_cast<const ast::NameExpr&>(*bin.lhs).name == s.name)
       rhs = bin.rhs.get();
   }
@@ -270,7 +270,7 @@ bool Interpreter::exec_append(const ast::AssignStmt& s) {
   // rebind the variable (a macro assigning it), in which case `old` is still the value.
   Value old = b->value;
   Value v = eval(*rhs);
-  SourceLoc loc = s.op == ast::AssignOp::Add ? s.loc : static_cast<const ast::BinaryExpr&>(*s.value).op_loc;
+  SourceLoc loc = s.op == ast::AssignOp::Add ? s.loc : static_cast<const ast::BinaryExpr&>(*s.value).op_loc();
   if (v.type != old.type) {
     Value r = binary_op(ast::BinaryOp::Add, old, v, loc);  // the usual type error
     lookup(s.name)->value = std::move(r);

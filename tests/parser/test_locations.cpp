@@ -2,6 +2,8 @@
 // (a file number and a byte offset; line and column are resolved from the file's line table).
 #include <catch2/catch.hpp>
 
+#include <string>
+
 #include "parser/position_space.hpp"
 #include "parser_test_support.hpp"
 
@@ -28,10 +30,29 @@ TEST_CASE("statements, names and operators carry their locations", "[locations]"
   CHECK(let.loc.file() == p.file);
   auto& mul = static_cast<ast::BinaryExpr&>(*let.value);
   check_at(mul.loc, 2, 16);     // a binary node starts where its left operand starts
-  check_at(mul.op_loc, 2, 18);  // the operator itself
+  check_at(mul.op_loc(), 2, 18);  // the operator itself
   check_at(mul.rhs->loc, 3, 2); // after a tab: byte columns
   auto& assign = static_cast<ast::AssignStmt&>(*p.program.stmts()[1]);
   check_at(assign.loc, 4, 1);
+}
+
+TEST_CASE("an operator far from its node's start keeps its place", "[locations]") {
+  // The place is kept as a 16-bit distance from the node's own, or after the node when further.
+  const std::string far(70000, ' ');
+  auto p = parse_text("let a = x" + far + "+ 1 * y\nlet b = x\n" + far + "scale 2\nlet c = x +" + far + "1\n");
+  auto& a = static_cast<ast::BinaryExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[0]).value);
+  check_at(a.loc, 1, 9);
+  check_at(a.op_loc(), 1, 10 + 70000);
+  CHECK(a.op() == ast::BinaryOp::Add);
+  auto& mul = static_cast<ast::BinaryExpr&>(*a.rhs);
+  check_at(mul.op_loc(), 1, 10 + 70000 + 4);
+  auto& b = static_cast<ast::TransformExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[1]).value);
+  check_at(b.op_loc(), 3, 70001);
+  CHECK(b.op() == ast::TransformOp::Scale);
+  CHECK(static_cast<const ast::NumberExpr&>(*b.arg).value() == 2);
+  auto& c = static_cast<ast::BinaryExpr&>(*static_cast<ast::LetStmt&>(*p.program.stmts()[2]).value);
+  check_at(c.op_loc(), 4, 11);
+  check_at(c.rhs->loc, 4, 12 + 70000);
 }
 
 TEST_CASE("blocks, bodies and items", "[locations]") {
@@ -59,7 +80,7 @@ TEST_CASE("postfix nodes, arguments, transforms and members", "[locations]") {
   auto& let = static_cast<ast::LetStmt&>(*p.program.stmts()[0]);
   auto& tr = static_cast<ast::TransformExpr&>(*let.value);
   check_at(tr.loc, 1, 9);
-  check_at(tr.op_loc, 1, 23);
+  check_at(tr.op_loc(), 1, 23);
   check_at(tr.arg->loc, 1, 33);
   auto& member = static_cast<ast::MemberExpr&>(*tr.object);
   check_at(member.member_loc, 1, 21);
