@@ -1,7 +1,6 @@
-// Symbol interning and operator names for the AST.
+// Symbol interning, number literals and operator names for the AST.
 #include "parser/ast.hpp"
 
-#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -151,10 +150,6 @@ bool short_decimal(std::string_view text, int32_t& mantissa, int& exponent) {
   exponent = scale;
   return true;
 }
-
-}  // namespace
-
-namespace {
 
 constexpr int32_t kTinyLimit = 1 << 15;  // |m| < 2^15 fits the header's 16 bits
 

@@ -7,7 +7,6 @@
 #pragma once
 
 #include <atomic>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -19,7 +18,6 @@
 #include <string_view>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 #include "parser/source.hpp"
 
@@ -193,10 +191,6 @@ using StmtList = NodeList<StmtLink>;
 // sized from the text to parse (kReservePerTextByte, at most kMaxReserve, less if the
 // address space is limited); a tree that outgrows it is an error. Whoever holds the nodes
 // must hold the arena as long (Program, ParseState).
-// An operator's place further than this from its node's place is kept after the node
-// (operator_place, below).
-inline constexpr uint16_t kFarOperator = 0xFFFF;
-
 // Thrown when a tree outgrows its arena's range (the parser reports it where it stopped).
 struct ArenaFull : std::length_error {
   using std::length_error::length_error;
@@ -222,20 +216,6 @@ class NodeArena {
     static_assert(std::is_trivially_destructible_v<T>, "an AST node has nothing to destroy");
     void* at = allocate(sizeof(T) + tail, alignof(T));
     return NodePtr<T>(new (at) T(std::forward<Args>(args)...));
-  }
-  // A node whose operator is at `op_loc` (BinaryExpr, TransformExpr: operator_place).
-  template <class T, class... Args>
-  NodePtr<T> make_with_operator(SourceLoc op_loc, SourceLoc loc, Args&&... args) {
-    const int64_t distance = loc.bytes_to(op_loc);
-    if (distance >= 0 && distance < kFarOperator) {
-      NodePtr<T> n = make<T>(loc, std::forward<Args>(args)...);
-      n->aux16 = static_cast<uint16_t>(distance);
-      return n;
-    }
-    NodePtr<T> n = make_with_tail<T>(sizeof(SourceLoc), loc, std::forward<Args>(args)...);
-    n->aux16 = kFarOperator;
-    std::memcpy(reinterpret_cast<std::byte*>(n.get()) + sizeof(T), &op_loc, sizeof op_loc);
-    return n;
   }
   // The elements T(get(x)) for each x in [first, last), one after another in the arena.
   template <class T, class It, class Get>
@@ -300,11 +280,26 @@ struct Expr {
 
 // The place of a binary or transform node's operator: `aux16` bytes after the node's own
 // place, or, when it is kFarOperator or more bytes away, a SourceLoc just after the node.
+inline constexpr uint16_t kFarOperator = 0xFFFF;
 inline SourceLoc operator_place(const Expr& e, std::size_t node_size) {
   if (e.aux16 != kFarOperator) return e.loc.advanced(e.aux16);
   SourceLoc at;
   std::memcpy(&at, reinterpret_cast<const std::byte*>(&e) + node_size, sizeof at);
   return at;
+}
+// Makes a node T whose operator is at `op_loc`, keeping that place for operator_place.
+template <class T, class... Args>
+NodePtr<T> make_with_operator(NodeArena& arena, SourceLoc op_loc, SourceLoc loc, Args&&... args) {
+  const int64_t distance = loc.bytes_to(op_loc);
+  if (distance >= 0 && distance < kFarOperator) {
+    NodePtr<T> n = arena.make<T>(loc, std::forward<Args>(args)...);
+    n->aux16 = static_cast<uint16_t>(distance);
+    return n;
+  }
+  NodePtr<T> n = arena.make_with_tail<T>(sizeof(SourceLoc), loc, std::forward<Args>(args)...);
+  n->aux16 = kFarOperator;
+  std::memcpy(reinterpret_cast<std::byte*>(n.get()) + sizeof(T), &op_loc, sizeof op_loc);
+  return n;
 }
 
 // A number literal (issue 24: numbers were a third of a scene's nodes). Most literals are
@@ -459,7 +454,7 @@ struct UnaryExpr : Expr {
 
 enum class BinaryOp : uint8_t { Add, Sub, Mul, Div, Mod, Pow, Eq, Ne, Lt, Le, Gt, Ge, And, Or };
 // The operator in the header, and where it is (for "wrong type for operator" errors) as a
-// distance from `loc` (OperatorPlace): 16 bytes. Made by make_with_operator.
+// distance from `loc` (operator_place): 16 bytes. Made by make_with_operator.
 struct BinaryExpr : Expr {
   BinaryOp op() const { return static_cast<BinaryOp>(aux); }
   SourceLoc op_loc() const { return operator_place(*this, sizeof(BinaryExpr)); }

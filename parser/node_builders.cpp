@@ -334,7 +334,7 @@ void build_binary(ParseState& st, SourceLoc op_loc, BinaryOp op) {
   SourceLoc loc = lhs.node->loc;
   uint32_t h = std::max(lhs.height, rhs.height) + 1;
   checked_height(st, h, op_loc);
-  push_expr(st, st.arena->make_with_operator<BinaryExpr>(op_loc, loc, op, lhs.node, rhs.node), h);
+  push_expr(st, make_with_operator<BinaryExpr>(*st.arena, op_loc, loc, op, lhs.node, rhs.node), h);
 }
 
 void build_range(ParseState& st, bool inclusive) {
@@ -355,7 +355,7 @@ void build_transform(ParseState& st, SourceLoc op_loc, TransformOp op) {
   SourceLoc loc = object.node->loc;
   uint32_t h = std::max(arg.height, object.height) + 1;
   checked_height(st, h, op_loc);
-  push_expr(st, st.arena->make_with_operator<TransformExpr>(op_loc, loc, object.node, op, arg.node), h);
+  push_expr(st, make_with_operator<TransformExpr>(*st.arena, op_loc, loc, object.node, op, arg.node), h);
 }
 
 void build_member(ParseState& st) {
