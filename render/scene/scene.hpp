@@ -11,9 +11,7 @@
 //  - Colors are linear RGB; the image writer encodes sRGB.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <ostream>
@@ -27,6 +25,7 @@
 
 #include "render/scene/boxed.hpp"
 #include "render/scene/child_runs.hpp"
+#include "render/scene/child_transform.hpp"
 #include "render/scene/chunked_vector.hpp"
 #include "render/scene/pattern_desc.hpp"
 #include "render/scene/sampler_kind.hpp"
@@ -562,86 +561,6 @@ struct Node {
   uint32_t index = 0;              // into shapes, lights, groups or csgs
 };
 
-// A child's placement, child space → parent space. The identity costs no matrix: shapes placed
-// by loops mostly carry their position in their own parameters, and a 128-byte matrix per
-// such child was a third of the scene description of a million spheres (issue 24's memory
-// per object). A pure translation (`translate`, the usual way to place an object) keeps only
-// its offset (a 32-byte block); any other transform one immutable matrix (136 bytes), shared
-// by the copies of the child. matrix() gives the matrix back bit for bit.
-class ChildTransform {
- public:
-  ChildTransform() = default;
-  ChildTransform(const Mat4& m) {  // NOLINT: implicit, a child is placed by a matrix
-    static const Mat4 kIdentity(1.0);
-    if (m == kIdentity) return;  // by value, as before: a -0 entry is the identity too
-    // By bits: the rebuilt matrix must be this one exactly (a -0 in the linear part is kept).
-    if (std::memcmp(&m, &kIdentity, 3 * sizeof(glm::dvec4)) == 0 && m[3].w == 1.0)
-      block_ = new Offset(Vec3(m[3]));
-    else
-      block_ = new Matrix(m);
-  }
-  ChildTransform(const ChildTransform& o) noexcept : block_(o.block_) { retain(); }
-  ChildTransform(ChildTransform&& o) noexcept : block_(std::exchange(o.block_, nullptr)) {}
-  ChildTransform& operator=(const ChildTransform& o) noexcept {
-    if (block_ != o.block_) {
-      release();
-      block_ = o.block_;
-      retain();
-    }
-    return *this;
-  }
-  ChildTransform& operator=(ChildTransform&& o) noexcept {
-    if (this != &o) {
-      release();
-      block_ = std::exchange(o.block_, nullptr);
-    }
-    return *this;
-  }
-  ~ChildTransform() { release(); }
-
-  // The same transform by identity: both the identity, or copies of one child's matrix (which
-  // need not be the only way to write it: equal matrices made apart are not the same block).
-  bool same_block(const ChildTransform& o) const { return block_ == o.block_; }
-
-  Mat4 matrix() const {
-    if (!block_) return Mat4(1.0);
-    if (block_->offset_only) {
-      Mat4 m(1.0);
-      m[3] = glm::dvec4(static_cast<const Offset&>(*block_).offset, 1.0);
-      return m;
-    }
-    return static_cast<const Matrix&>(*block_).m;
-  }
-  operator Mat4() const { return matrix(); }  // NOLINT: reads as the matrix it is
-  glm::dvec4 operator[](int column) const { return matrix()[column]; }
-
- private:
-  // Shared by the copies of the child, counted in the block itself: one pointer per child
-  // (a shared_ptr was two, and its control block 16 bytes more per block).
-  struct Block {
-    explicit Block(bool offset) : offset_only(offset) {}
-    mutable std::atomic<uint32_t> refs{1};
-    bool offset_only;
-  };
-  struct Offset : Block {
-    explicit Offset(const Vec3& t) : Block(true), offset(t) {}
-    Vec3 offset;
-  };
-  struct Matrix : Block {
-    explicit Matrix(const Mat4& matrix) : Block(false), m(matrix) {}
-    Mat4 m;
-  };
-  void retain() const noexcept {
-    if (block_) block_->refs.fetch_add(1, std::memory_order_relaxed);
-  }
-  void release() noexcept {
-    if (!block_ || block_->refs.fetch_sub(1, std::memory_order_acq_rel) != 1) return;
-    if (block_->offset_only) delete static_cast<const Offset*>(block_);
-    else delete static_cast<const Matrix*>(block_);
-    block_ = nullptr;
-  }
-  const Block* block_ = nullptr;
-};
 inline Mat4 operator*(const Mat4& a, const ChildTransform& b) { return a * b.matrix(); }
 inline glm::dvec4 operator*(const ChildTransform& a, const glm::dvec4& v) { return a.matrix() * v; }
 

@@ -104,8 +104,14 @@ TEST_CASE("a child's transform gives back its matrix bit for bit", "[transforms]
   // the matrix read back is the one given, down to the sign of a zero.
   Mat4 mirrored_zero = translate(Vec3(1, 2, 3));
   mirrored_zero[0][1] = -0.0;  // equal to the translation by value, not by bits: kept whole
+  Mat4 projective = translate(Vec3(1, 2, 3)) * rotate_deg(10.0, Vec3(0, 0, 1));
+  projective[3][3] = 0.5;  // w != 1: kept whole
+  Mat4 skewed_w = rotate_deg(70.0, Vec3(1, 0, 0));
+  skewed_w[0][3] = 0.25;   // a projective row with w = 1: linear columns and offset, w included
+  skewed_w[3] = glm::dvec4(-1e-310, 7, 0, 1);
   const Mat4 cases[] = {Mat4(1.0), translate(Vec3(0.1, -2e300, 5e-320)), mirrored_zero,
-                        translate(Vec3(4, 5, 6)) * rotate_deg(33.0, glm::normalize(Vec3(1, 2, 3))) * scale(Vec3(2, 1, 0.5))};
+                        translate(Vec3(4, 5, 6)) * rotate_deg(33.0, glm::normalize(Vec3(1, 2, 3))) * scale(Vec3(2, 1, 0.5)),
+                        projective, skewed_w};
   for (const Mat4& m : cases) {
     const ChildTransform t(m);
     const Mat4 back = t.matrix();
@@ -144,6 +150,34 @@ TEST_CASE("a child's transform block lives while any copy holds it", "[transform
   copies.erase(copies.begin(), copies.begin() + 50);
   CHECK(copies.back().matrix() == turn);
   STATIC_REQUIRE(sizeof(ChildTransform) == sizeof(void*));
+}
+
+TEST_CASE("children placed with the same rotation share its linear part", "[transforms]") {
+  // A loop placing a group rotated and translated repeats a few rotations: each child keeps its
+  // own offset and a pointer to one block per distinct linear part (by bits), not a matrix.
+  std::vector<ChildTransform> placed;
+  std::vector<Mat4> given;
+  for (int i = 0; i < 3000; ++i) {
+    const Mat4 m = translate(Vec3(i, -i * 0.5, 3)) * rotate_deg(1.0 + 7.0 * (i % 90), Vec3(0, 1, 0));
+    placed.emplace_back(m);
+    given.push_back(m);
+  }
+  for (int i = 0; i < 3000; ++i) {
+    const Mat4 back = placed[i].matrix();
+    REQUIRE(std::memcmp(&back, &given[i], sizeof(Mat4)) == 0);
+    // The same rotation 90 placements apart: one block (the per-thread cache holds 90 easily).
+    if (i >= 90) CHECK(ChildTransform::shares_linear_part(placed[i], placed[i - 90]));
+    if (i >= 1) CHECK_FALSE(ChildTransform::shares_linear_part(placed[i], placed[i - 1]));
+  }
+  // A -0 where the other has +0 is another linear part; a pure translation keeps none.
+  Mat4 negative_zero = given[0];
+  negative_zero[1][0] = -negative_zero[1][0];
+  REQUIRE(given[0][1][0] == 0.0);
+  const ChildTransform a(given[0]), b(negative_zero), c(translate(Vec3(1, 2, 3)));
+  CHECK_FALSE(ChildTransform::shares_linear_part(a, b));
+  CHECK_FALSE(ChildTransform::shares_linear_part(c, c));
+  const Mat4 back = b.matrix();
+  CHECK(std::memcmp(&back, &negative_zero, sizeof(Mat4)) == 0);
 }
 
 TEST_CASE("shared transforms are told apart by their bits", "[transforms]") {
