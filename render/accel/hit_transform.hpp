@@ -37,10 +37,10 @@ inline void hit_to_parent(const Vec3& point, const glm::dmat3& vec, const Vec3& 
   h.dpdv = vec * h.dpdv;
 }
 
-// A placement's maps as World::group_to_world and group_to_object rebuild them.
-inline void group_to_parent(const glm::dmat4x3& to_world, const glm::dmat4x3& to_object, SurfaceHit& h) {
+// A placement's map to its parent (World::group_to_world), and its inverse's linear part (normals).
+inline void group_to_parent(const glm::dmat4x3& to_world, const glm::dmat3& object_linear, SurfaceHit& h) {
   const glm::dmat3 vec(to_world);
-  hit_to_parent(to_world * glm::dvec4(h.point, 1.0), vec, to_world[3], glm::transpose(glm::dmat3(to_object)), h);
+  hit_to_parent(to_world * glm::dvec4(h.point, 1.0), vec, to_world[3], glm::transpose(object_linear), h);
 }
 
 // A shape instance's map: its shared linear parts and its own translation.

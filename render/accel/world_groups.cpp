@@ -68,7 +68,6 @@ bool World::add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst
   GroupTransform xf;
   xf.linear = group_linear_index_.intern(linear, group_linears_);
   xf.to_world_t = world_map[3];
-  xf.to_object_t = object_map[3];
   inst.transform = static_cast<uint32_t>(group_transforms_.size());
   group_transforms_.push_back(xf);
   bounds = world_bounds(inst);  // as the BVH build will make it again
@@ -77,8 +76,9 @@ bool World::add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst
 
 Ray World::group_ray(const Instance& inst, const Ray& r) const {
   if (inst.transform == kNoId) return r;
-  const glm::dmat4x3 m = group_to_object(group_transforms_[inst.transform]);
-  return Ray{m * glm::dvec4(r.origin, 1.0), m * glm::dvec4(r.direction, 0.0)};
+  const GroupTransform& xf = group_transforms_[inst.transform];
+  const glm::dmat3& to_object = group_object_linear(xf);
+  return Ray{to_object * (r.origin - xf.to_world_t), to_object * r.direction};
 }
 
 bool World::intersect_group(const Instance& inst, const Ray& parent_ray, const Interval& ray_t,
@@ -118,7 +118,7 @@ bool World::intersect_group(const Instance& inst, const Ray& parent_ray, const I
   if (part.kind == kGroupKind) {
     if (part.transform != kNoId) {
       const GroupTransform& xf = group_transforms_[part.transform];
-      group_to_parent(group_to_world(xf), group_to_object(xf), best);
+      group_to_parent(group_to_world(xf), group_object_linear(xf), best);
     }
   } else {
     best.csg_part = best_part;
