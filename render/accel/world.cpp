@@ -31,7 +31,6 @@ uint32_t World::add_transform(const Mat4& to_world) {
   InstanceTransform xf;
   xf.linear = instance_linear_index_.intern(linear, instance_linears_);
   xf.to_world_t = Vec3(to_world[3]);
-  xf.to_object_t = Vec3(to_object[3]);
   transforms_.push_back(xf);
   return static_cast<uint32_t>(transforms_.size() - 1);
 }
@@ -252,7 +251,7 @@ Ray World::object_ray(const Instance& inst, const Ray& r) const {
   if (inst.transform == kNoId) return r;
   const InstanceTransform& xf = transforms_[inst.transform];
   const glm::dmat3& l = instance_linears_[xf.linear].to_object;
-  return Ray{apply_affine(l, xf.to_object_t, r.origin, 1.0), apply_affine(l, xf.to_object_t, r.direction, 0.0)};
+  return Ray{l * (r.origin - xf.to_world_t), l * r.direction};
 }
 
 // One test per kind, chosen by comparing the kind with each index in turn (GCC turns the

@@ -58,11 +58,14 @@ struct Instance {
 // A transformed instance's maps (object → world and back). Their 3×3 linear parts, with the
 // normal matrix read off them, are kept once per distinct pair (InstanceLinear,
 // World::instance_linears_): objects placed by `translate` all share the identity's, and a
-// loop's rotations repeat. An instance holds the pair's index and its own two translation
-// columns: 56 bytes where the four matrices were 400 (issue 24: a million spheres placed by
-// `translate` held 416 MB of transforms). Rays and hits are carried by apply_affine on those
-// columns, and the 4×4 matrices, where one is wanted (maps()), are rebuilt from exactly them
-// (World::instance_to_world, instance_to_object): every product is the one it was.
+// loop's rotations repeat. An instance holds the pair's index and its object → world
+// translation: 32 bytes where the four matrices were 400 (issue 24: a million spheres placed by
+// `translate` held 416 MB of transforms). A ray is carried into object space as
+// to_object * (p - to_world_t) (World::object_ray), which needs no translation of its own and
+// subtracts the offset before the rotation, so a ray near a far object keeps its digits; a
+// translation alone gives the same values as adding the inverse's (its exact negation). Hits
+// are carried back by apply_affine on the columns kept, and the 4×4 matrices, where one is
+// wanted (transform()), are rebuilt from them (World::instance_to_world, instance_to_object).
 struct InstanceLinear {
   glm::dmat3 to_world{1.0};         // the object → world linear part (tangents)
   glm::dmat3 to_object{1.0};        // the world → object linear part
@@ -70,8 +73,7 @@ struct InstanceLinear {
 };
 struct InstanceTransform {
   uint32_t linear = 0;              // into World::instance_linears_
-  Vec3 to_world_t{0.0};             // the translation column of each map
-  Vec3 to_object_t{0.0};
+  Vec3 to_world_t{0.0};             // the object → world map's translation column
 };
 // glm's 4×4 product with (v, w), its x, y, z, for an affine map held as its linear part `l`
 // and translation `t`: the same operations in the same order ((c0 x + c1 y) + (c2 z + c3 w),
@@ -233,7 +235,8 @@ class World {
     return affine(instance_linears_[xf.linear].to_world, xf.to_world_t);
   }
   Mat4 instance_to_object(const InstanceTransform& xf) const {
-    return affine(instance_linears_[xf.linear].to_object, xf.to_object_t);
+    const glm::dmat3& to_object = instance_linears_[xf.linear].to_object;
+    return affine(to_object, -(to_object * xf.to_world_t));
   }
   template <class T>
   const T& shape(uint32_t index) const { return std::get<std::vector<T>>(shapes_)[index]; }
