@@ -3,6 +3,8 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
@@ -61,7 +63,17 @@ int main(int argc, char** argv) {
     std::cerr << "rts: " << e.what() << "\n";
     std::cerr << "Run 'rts --help' or 'rts <command> --help' for usage.\n";
     return kExitUsage;
+  } catch (const std::bad_alloc&) {
+    // Not a bug: the system (or `ulimit -v`) refused memory where no command said more.
+    std::cerr << "rts: out of memory: the system refused memory (lower what the scene builds, or check ulimit -v)\n";
+    return kExitRenderError;
   } catch (const std::exception& e) {
+    // oneTBB reports a worker it could not start as a runtime_error naming pthread_create.
+    if (std::string_view(e.what()).starts_with("pthread_create")) {
+      std::cerr << "rts: out of resources: could not start a worker thread (" << e.what()
+                << "; check ulimit -v and ulimit -u, or try --threads 1)\n";
+      return kExitRenderError;
+    }
     std::cerr << "rts: internal error: " << e.what() << "\n";
     return kExitInternal;
   }

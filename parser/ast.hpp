@@ -196,6 +196,11 @@ struct ArenaFull : std::length_error {
   using std::length_error::length_error;
 };
 
+// Address space this process may still map under `ulimit -v` (RLIMIT_AS), or SIZE_MAX when
+// there is no such limit: a reserved range counts against it even untouched (NodeArena, and
+// the evaluation thread's stack, runtime/evaluator.cpp, size themselves by it).
+std::size_t address_space_left();
+
 class NodeArena {
  public:
   explicit NodeArena(std::size_t text_size = 0);

@@ -27,9 +27,10 @@ constexpr std::size_t kLargestCommit = std::size_t{16} << 20;
 
 std::size_t round_to_pages(std::size_t n) { return (n + kPage - 1) & ~(kPage - 1); }
 
-// Address space this process may still map under `ulimit -v` (RLIMIT_AS), or SIZE_MAX.
-// A reserved range counts against that limit even untouched, so under one the range is at
-// most three quarters of what is left (the rest of the parse needs some), and the part the
+}  // namespace
+
+// A reserved range counts against `ulimit -v` even untouched, so under one the arena's range is
+// at most three quarters of what is left (the rest of the parse needs some), and the part the
 // parse did not use goes back when it ends (NodeArena::release_unused).
 std::size_t address_space_left() {
   rlimit limit{};
@@ -42,8 +43,6 @@ std::size_t address_space_left() {
   const std::size_t used = pages * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
   return limit.rlim_cur > used ? static_cast<std::size_t>(limit.rlim_cur) - used : 0;
 }
-
-}  // namespace
 
 NodeArena::NodeArena(std::size_t text_size) {
   std::size_t want = text_size > (kMaxReserve - kMinReserve) / kReservePerTextByte

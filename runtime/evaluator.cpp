@@ -8,7 +8,9 @@
 #include <cctype>
 #include <chrono>
 #include <exception>
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <utility>
 
 #include "runtime/interpreter.hpp"
@@ -117,6 +119,20 @@ void release_evaluation_memory(std::size_t items) {
 #endif
 }
 
+// The interpreter, or the located error Interpreter::run gives when the system refuses memory
+// (here before the scene runs: under a tight `ulimit -v`, the tables the constructor makes).
+std::unique_ptr<runtime::Interpreter> make_interpreter(SourceManager& sources, const EvalOptions& options,
+                                                       DiagnosticSink& warnings, const SourceFile& file) {
+  try {
+    return std::make_unique<runtime::Interpreter>(sources, options, warnings);
+  } catch (const std::bad_alloc&) {
+    Diagnostic d;
+    d.loc = SourceLoc::at(&file, 1, 1);
+    d.message = "out of memory: the system refused memory before the scene could run (check ulimit -v)";
+    throw LanguageError(std::move(d));
+  }
+}
+
 }  // namespace
 
 EvalResult evaluate_source(SourceManager& sources, const SourceFile& file, const EvalOptions& options,
@@ -127,16 +143,21 @@ EvalResult evaluate_source(SourceManager& sources, const SourceFile& file, const
   std::size_t stack =
       std::clamp<std::size_t>(kMinStackBytes + std::size_t(options.limits.max_recursion) * kStackBytesPerMacroLevel,
                               kMinStackBytes, kMaxStackBytes);
+  // Under `ulimit -v` the stack's whole range counts, touched or not: a quarter of what is left
+  // at most, so the scene's own memory has the rest. (Asking for the most that would map left
+  // a small file's evaluation a few MB: "std::bad_alloc" under 100 MB but not under 80.)
+  if (const std::size_t left = ast::address_space_left(); left != SIZE_MAX)
+    stack = std::max(std::min(stack, left / 4), kSmallestStackBytes);
   run_with_big_stack(stack, [&](std::uintptr_t floor, std::size_t bytes) {
-    runtime::Interpreter interp(sources, options, warnings);
-    interp.set_stack_floor(floor, bytes);
-    interp.run(file);
-    result.world_shapes = interp.world_shapes();
-    result.world_lights = interp.world_lights();
-    result.uses_clock = interp.uses_clock();
-    if (options.describe_globals) result.globals = interp.describe_globals(options.describe_globals);
-    result.scene = interp.finish();
-    result.parse_seconds = interp.parse_seconds();
+    auto interp = make_interpreter(sources, options, warnings, file);
+    interp->set_stack_floor(floor, bytes);
+    interp->run(file);
+    result.world_shapes = interp->world_shapes();
+    result.world_lights = interp->world_lights();
+    result.uses_clock = interp->uses_clock();
+    if (options.describe_globals) result.globals = interp->describe_globals(options.describe_globals);
+    result.scene = interp->finish();
+    result.parse_seconds = interp->parse_seconds();
   });
   release_evaluation_memory(result.scene.shapes.size() + result.scene.nodes.size());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

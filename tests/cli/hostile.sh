@@ -73,6 +73,19 @@ if [[ $SANITIZED == 0 ]]; then
   expect_grep "$TMP/err" "list_bomb.rts:2:[0-9]+: error: out of memory" "bad_alloc becomes a located error"
   expect_no_grep "$TMP/err" "internal error" "no internal error"
 
+  # A small scene under address-space limits from too small (the program maps ~18 MB itself) to
+  # plenty: it renders, or says it ran out of memory or threads (exit 1 or 3); never an internal
+  # error. The evaluation thread's stack once took what would map, leaving a small file's
+  # evaluation a few MB: "internal error: std::bad_alloc" under 100 MB but not under 80 (the
+  # limit counts mapped ranges, not use).
+  for limit in 30000 45000 60000 80000 100000 150000 300000; do
+    expect_exit_in "0 1 3" "small render under ulimit -v $limit" -- "${T[@]}" bash -c \
+      "ulimit -v $limit; exec \"\$0\" render \"\$1\" -o \"\$2\" --no-progress" "$RTS" "$TMP/ok.rts" "$TMP/limited.png"
+    expect_no_grep "$TMP/err" "internal error" "no internal error under ulimit -v $limit"
+  done
+  expect_exit 0 "small check under ulimit -v 100000" -- "${T[@]}" bash -c \
+    "ulimit -v 100000; exec \"\$0\" check \"\$1\"" "$RTS" "$TMP/ok.rts"
+
   # ---- deep recursion when the stack it needs cannot be mapped (defect 2) ---------------------
   # 60 nested ifs make each level use ~17 KB of stack: 40,000 levels need far more than the
   # ~200 MB stack that fits under this ulimit (about 700 MB).

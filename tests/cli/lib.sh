@@ -14,6 +14,17 @@ expect_exit() {
     echo "ok: $what (exit $got)"
   fi
 }
+# expect_exit_in "CODE CODE..." DESCRIPTION -- COMMAND...: any of the codes
+expect_exit_in() {
+  local want="$1" what="$2"; shift 3
+  "$@" >"$TMP/out" 2>"$TMP/err"; local got=$?
+  if [[ " $want " != *" $got "* ]]; then
+    echo "FAIL: $what: exit $got, expected one of $want"; echo "--- stdout"; cat "$TMP/out"; echo "--- stderr"; cat "$TMP/err"
+    FAILS=$((FAILS + 1))
+  else
+    echo "ok: $what (exit $got)"
+  fi
+}
 # expect_grep FILE PATTERN DESCRIPTION
 expect_grep() {
   if ! grep -qE -- "$2" "$1"; then
