@@ -97,8 +97,7 @@ struct InstanceMaps {
 // parts are kept once per distinct pair (GroupLinear, World::group_linears_): placements made
 // by a loop mostly repeat a few rotations and scales and differ in translation, and the two
 // 4×3 double matrices per placement were 192 of its ~244 bytes (issue 24). A placement holds
-// the pair's index and its own two translation columns; the matrices it is multiplied by
-// are rebuilt from those columns exactly, so every product is the one it was.
+// the pair's index and its own object → world translation (GroupTransform, below).
 struct GroupLinear {
   glm::dmat3 to_world{1.0};
   glm::dmat3 to_object{1.0};
