@@ -7,13 +7,19 @@
 namespace rts::render {
 
 void CsgTree::evaluate(const uint8_t* leaf_inside, uint8_t* state) const {
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const CsgNode& n = nodes[i];
+  // The arrays' bounds in locals: a store through `state` (a byte type) may alias anything,
+  // the vectors' own pointers included, which were otherwise loaded again for every node
+  // (profile finding: callgrind on the csg race scene, a sixth of evaluate's instructions).
+  const CsgNode* const all = nodes.data();
+  const std::size_t count = nodes.size();
+  const uint32_t* const kids = children.data();
+  for (std::size_t i = 0; i < count; ++i) {
+    const CsgNode& n = all[i];
     bool v;
     if (n.leaf) {
       v = leaf_inside[n.first] != 0;
     } else {
-      const uint32_t* c = children.data() + n.first;
+      const uint32_t* c = kids + n.first;
       switch (n.op) {
         case CsgOp::Union:
         case CsgOp::Merge:
@@ -98,7 +104,11 @@ bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, cons
   if (ne == 0) return false;  // the state never changes along the line: no surface
   std::sort(ev, ev + ne, [](const Event& a, const Event& b) { return a.t < b.t || (a.t == b.t && a.leaf < b.leaf); });
 
-  uint8_t before[kMaxCsgNodes], after[kMaxCsgNodes], visible[kMaxCsgNodes];
+  // Two state buffers whose roles swap after each batch (the next batch's `before` is this
+  // one's `after`; evaluate() writes every node, so nothing is copied).
+  uint8_t state_a[kMaxCsgNodes], state_b[kMaxCsgNodes], visible[kMaxCsgNodes];
+  uint8_t* before = state_a;
+  uint8_t* after = state_b;
   // The nodes' states are needed only around batches that can show a surface inside ray_t: a
   // batch whose every crossing is at or before ray_t.min only toggles its leaves (the batches
   // are formed exactly as before, so the later ones are the same).
@@ -127,7 +137,7 @@ bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, cons
     // batches (a die's box entered outside its sphere, a pip met outside the die) need no
     // visibility pass.
     if (root_shows_own_only && before[nn - 1] == after[nn - 1]) {
-      std::copy(after, after + nn, before);
+      std::swap(before, after);
       i = j;
       continue;
     }
@@ -187,7 +197,7 @@ bool csg_first_surface(const CsgTree& tree, const CsgLeafCrossings* leaves, cons
         }
       }
     }
-    std::copy(after, after + nn, before);
+    std::swap(before, after);
     i = j;
   }
   return false;
