@@ -11,6 +11,17 @@
 
 #include <sys/mman.h>
 
+#if defined(__SANITIZE_ADDRESS__)
+#define RTS_LEAK_CHECKED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(leak_sanitizer)
+#define RTS_LEAK_CHECKED 1
+#endif
+#endif
+#if RTS_LEAK_CHECKED
+#include <sanitizer/lsan_interface.h>
+#endif
+
 namespace rts::ast {
 
 namespace {
@@ -21,7 +32,15 @@ namespace {
 std::string** zeroed_pointers(std::size_t count) {
   void* p = ::mmap(nullptr, count * sizeof(std::string*), PROT_READ | PROT_WRITE,
                    MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
-  if (p == MAP_FAILED) p = std::calloc(count, sizeof(std::string*));
+  if (p == MAP_FAILED) {
+    p = std::calloc(count, sizeof(std::string*));
+  } else {
+#if RTS_LEAK_CHECKED
+    // LeakSanitizer scans heap blocks and globals, not pages mapped by hand: the name chunks
+    // this array points to would read as leaked.
+    __lsan_register_root_region(p, count * sizeof(std::string*));
+#endif
+  }
   if (!p) throw std::bad_alloc();
   return static_cast<std::string**>(p);
 }
