@@ -79,7 +79,7 @@ if [[ $SANITIZED == 0 ]]; then
   # evaluation a few MB: "internal error: std::bad_alloc" under 100 MB but not under 80 (the
   # limit counts mapped ranges, not use).
   for limit in 30000 45000 60000 80000 100000 150000 300000; do
-    expect_exit_in "0 1 3" "small render under ulimit -v $limit" -- "${T[@]}" bash -c \
+    expect_exit "0 1 3" "small render under ulimit -v $limit" -- "${T[@]}" bash -c \
       "ulimit -v $limit; exec \"\$0\" render \"\$1\" -o \"\$2\" --no-progress" "$RTS" "$TMP/ok.rts" "$TMP/limited.png"
     expect_no_grep "$TMP/err" "internal error" "no internal error under ulimit -v $limit"
   done
