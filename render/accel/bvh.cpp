@@ -11,9 +11,6 @@
 
 namespace rts::render {
 
-namespace {
-
-// The float box that encloses b: each bound rounded outwards (infinite past float's range).
 void round_outwards(const AABB& b, float lo[3], float hi[3]) {
   constexpr float kInf = std::numeric_limits<float>::infinity();
   for (int a = 0; a < 3; ++a) {
@@ -24,8 +21,6 @@ void round_outwards(const AABB& b, float lo[3], float hi[3]) {
     hi[a] = h;
   }
 }
-
-}  // namespace
 
 void BVHNode::set_bounds(const AABB& b) { round_outwards(b, lo, hi); }
 

@@ -31,6 +31,9 @@ struct BVHNode {
   }
 };
 
+// The float box that encloses b: each bound rounded outwards (infinite past float's range).
+void round_outwards(const AABB& b, float lo[3], float hi[3]);
+
 struct BVH {
   std::vector<BVHNode> nodes;
   std::vector<uint32_t> order;  // primitive indices, leaf ranges are contiguous
@@ -64,16 +67,15 @@ BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of)
 // double operations, one child per SSE2 lane; MINPD/MAXPD return their second operand on a
 // NaN exactly as the scalar comparisons keep the old value). Profile finding (perf, spheres
 // and terrain): the two child box tests of each interior node are most of the traversal.
-inline void slab_hit_pair(const BVHNode& l, const BVHNode& r, const RayInverse& inv, const Interval& ray_t,
-                          bool& hit_l, double& t_l, bool& hit_r, double& t_r) {
 #if defined(__SSE2__)
+// The slab test of two boxes given as (left, right) lanes per axis.
+inline void slab_hit_lanes(const __m128d lo[3], const __m128d hi[3], const RayInverse& inv, const Interval& ray_t,
+                           bool& hit_l, double& t_l, bool& hit_r, double& t_r) {
   __m128d t0 = _mm_set1_pd(ray_t.min), t1 = _mm_set1_pd(ray_t.max);
   for (int a = 0; a < 3; ++a) {
     const __m128d o = _mm_set1_pd(inv.origin[a]), d = _mm_set1_pd(inv.inv_dir[a]);
-    const __m128d lo = _mm_set_pd(static_cast<double>(r.lo[a]), static_cast<double>(l.lo[a]));
-    const __m128d hi = _mm_set_pd(static_cast<double>(r.hi[a]), static_cast<double>(l.hi[a]));
-    const __m128d ta = _mm_mul_pd(_mm_sub_pd(lo, o), d);
-    const __m128d tb = _mm_mul_pd(_mm_sub_pd(hi, o), d);
+    const __m128d ta = _mm_mul_pd(_mm_sub_pd(lo[a], o), d);
+    const __m128d tb = _mm_mul_pd(_mm_sub_pd(hi[a], o), d);
     // if (ta > tb) swap: near = ta > tb ? tb : ta, far = ta > tb ? ta : tb.
     const __m128d near = _mm_min_pd(tb, ta), far = _mm_max_pd(ta, tb);
     t0 = _mm_max_pd(near, t0);  // near > t0 ? near : t0
@@ -86,9 +88,26 @@ inline void slab_hit_pair(const BVHNode& l, const BVHNode& r, const RayInverse& 
   hit_r = (hits & 2) != 0;
   t_l = entry[0];
   t_r = entry[1];
+}
+#endif
+
+// Any box with `lo[3]` and `hi[3]` (BVHNode's float, QuantizedBox's double).
+template <class Box>
+inline void slab_hit_pair(const Box& l, const Box& r, const RayInverse& inv, const Interval& ray_t,
+                          bool& hit_l, double& t_l, bool& hit_r, double& t_r) {
+#if defined(__SSE2__)
+  __m128d lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = _mm_set_pd(static_cast<double>(r.lo[a]), static_cast<double>(l.lo[a]));
+    hi[a] = _mm_set_pd(static_cast<double>(r.hi[a]), static_cast<double>(l.hi[a]));
+  }
+  slab_hit_lanes(lo, hi, inv, ray_t, hit_l, t_l, hit_r, t_r);
 #else
-  hit_l = slab_hit(l.bounds(), inv, ray_t, t_l);
-  hit_r = slab_hit(r.bounds(), inv, ray_t, t_r);
+  auto bounds = [](const Box& b) {
+    return AABB{Vec3(b.lo[0], b.lo[1], b.lo[2]), Vec3(b.hi[0], b.hi[1], b.hi[2])};
+  };
+  hit_l = slab_hit(bounds(l), inv, ray_t, t_l);
+  hit_r = slab_hit(bounds(r), inv, ray_t, t_r);
 #endif
 }
 

@@ -15,7 +15,7 @@ namespace rts::render {
 namespace {
 
 template <class Box>
-bool meets(const ShadowRegion& r, const Box& lo, const Box& hi) {
+[[gnu::always_inline]] inline bool meets(const ShadowRegion& r, const Box& lo, const Box& hi) {
   if (lo[0] > r.box.hi.x || hi[0] < r.box.lo.x || lo[1] > r.box.hi.y || hi[1] < r.box.lo.y ||
       lo[2] > r.box.hi.z || hi[2] < r.box.lo.z)
     return false;
@@ -95,6 +95,7 @@ bool World::occluder_candidates(const ShadowRegion& region, OccluderCandidates& 
     for (uint32_t i = 0; i < bounded_count_; ++i) out.leaf[out.count++] = i;
     return true;
   }
+  if (!quantized_.empty()) return quantized_candidates(region, out);
   if (bvh_.nodes.empty()) return true;
   uint32_t stack[kBvhTraversalStack];
   int top = 0;
@@ -114,10 +115,46 @@ bool World::occluder_candidates(const ShadowRegion& region, OccluderCandidates& 
   return true;
 }
 
+// The quantized tree's leaves are instances, with boxes decoded on the way down: the candidates
+// are the instances themselves (occluded_by then tests each without a box first, as it does
+// without a BVH: the object's own test is exact, the box only saved time).
+bool World::quantized_candidates(const ShadowRegion& region, OccluderCandidates& out) const {
+  struct Item {
+    QuantizedBox box;
+    uint32_t ref;
+  };
+  Item stack[kBvhTraversalStack];
+  int top = 0;
+  if (meets(region, quantized_.root_box.lo, quantized_.root_box.hi)) stack[top++] = {quantized_.root_box, quantized_.root};
+  while (top > 0) {
+    --top;
+    const uint32_t ref = stack[top].ref;
+    if (ref & QuantizedNode::kLeafBit) {
+      if (out.count == OccluderCandidates::kMaxInstances) return false;
+      out.leaf[out.count++] = ref & ~QuantizedNode::kLeafBit;
+      continue;
+    }
+    const QuantizedNode& node = quantized_.nodes[ref];
+    QuantizedBox kids[2];
+    decode_child(stack[top].box, node, 1, kids[1]);
+    decode_child(stack[top].box, node, 0, kids[0]);
+    for (int c = 1; c >= 0; --c) {  // the left child on top, as in the binary walk
+      if (!meets(region, kids[c].lo, kids[c].hi)) continue;
+      Item& slot = stack[top++];
+      for (int a = 0; a < 3; ++a) {
+        slot.box.lo[a] = kids[c].lo[a];
+        slot.box.hi[a] = kids[c].hi[a];
+      }
+      slot.ref = node.child[c];
+    }
+  }
+  return true;
+}
+
 bool World::occluded_by(const OccluderCandidates& candidates, const Ray& ray, Interval ray_t) const {
   for (int k = 0; k < candidates.plane_count; ++k)
     if (occluded_instance(instances_[candidates.plane[k]], ray, ray_t)) return true;
-  if (!use_bvh_) {
+  if (!use_bvh_ || !quantized_.empty()) {
     for (int k = 0; k < candidates.count; ++k)
       if (occluded_instance(instances_[candidates.leaf[k]], ray, ray_t)) return true;
     return false;

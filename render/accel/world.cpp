@@ -116,7 +116,8 @@ World::World(const SceneDesc& scene, const FlatScene& flat, bool specialize, Wor
   // The placements' transforms are kept by the shapes' instances and the groups' placements.
   transforms_.reserve(static_cast<std::size_t>(std::count_if(
       flat.shapes.begin(), flat.shapes.end(), [](const FlatShape& fs) { return fs.transform != kNoId; })));
-  group_transforms_.reserve(flat.groups.size());
+  group_offsets_.reserve(flat.groups.size());
+  group_linear_of_.reserve(flat.groups.size());
   reserve_shape_arrays(scene, flat);
   ShapeRelease release(taken, flat);
   for (std::size_t i = 0; i < flat.shapes.size(); ++i) {
@@ -201,6 +202,17 @@ void World::build_bvh() {
   // builder's references: no box array lives beside the scene description while the instances
   // are made (48 bytes per object of that peak), nor beside the references.
   bvh_ = render::build_bvh(bounded_count_, [&](std::size_t i) { return world_bounds(instances_[i]); });
+  if (bounded_count_ >= quantized_from_) {
+    quantized_ = quantize_bvh(bvh_, [&](uint32_t i) { return world_bounds(instances_[i]); });
+    if (!quantized_.empty()) bvh_ = BVH{};
+  }
+}
+
+template <bool any_hit, class Visit>
+bool World::traverse_top_level(const Ray& ray, Interval& ray_t, Visit&& visit) const {
+  if (!quantized_.empty()) return traverse_quantized<any_hit>(quantized_, ray, ray_t, visit);
+  return traverse_bvh<any_hit>(bvh_, ray, ray_t,
+                               [&](uint32_t slot, Interval& t_range) { return visit(bvh_.order[slot], t_range); });
 }
 
 AABB World::world_bounds(const Instance& inst) const {
@@ -213,7 +225,7 @@ AABB World::world_bounds(const Instance& inst) const {
   if (inst.kind == kGroupKind) {
     const AABB& b = groups_[inst.index].bounds;
     if (inst.transform == kNoId) return b;
-    const GroupTransform& xf = group_transforms_[inst.transform];
+    const GroupTransform xf = group_transform(inst.transform);
     return transform_bounds(affine(group_linears_[xf.linear].to_world, xf.to_world_t), b);
   }
   const AABB object = object_bounds(inst, std::make_index_sequence<kShapeKindCount>{});
@@ -328,8 +340,7 @@ template <class Filter>
   };
   bool found = false;
   if (use_bvh_) {
-    found = traverse_bvh<false>(bvh_, ray, ray_t,
-                                [&](uint32_t slot, Interval& t_range) { return closer(bvh_.order[slot], t_range); });
+    found = traverse_top_level<false>(ray, ray_t, closer);
   } else {
     for (uint32_t i = 0; i < bounded_count_; ++i) found = closer(i, ray_t) || found;
   }
@@ -372,7 +383,7 @@ bool World::intersect(const Ray& ray, Interval ray_t, WorldHit& hit, bool transm
   // The world point is the shape's own (refined) object point carried to world space, not
   // ray.at(t): its error bound then stays relative to the shape, whatever the ray travelled.
   if (grouped && placed.transform != kNoId) {
-    const GroupTransform& xf = group_transforms_[placed.transform];
+    const GroupTransform xf = group_transform(placed.transform);
     group_to_parent(group_to_world(xf), group_object_linear(xf), best);
   }
   if (grouped || inst.transform == kNoId) {
@@ -440,8 +451,7 @@ bool World::occluded_impl(const Ray& ray, Interval ray_t, bool opaque_only) cons
       if (blocks(i, ray_t)) return true;
     return false;
   }
-  return traverse_bvh<true>(bvh_, ray, ray_t,
-                            [&](uint32_t slot, Interval& t_range) { return blocks(bvh_.order[slot], t_range); });
+  return traverse_top_level<true>(ray, ray_t, blocks);
 }
 
 bool World::shadow_crossings(const Ray& ray, Interval ray_t, ShadowCrossings& out) const {
@@ -497,11 +507,11 @@ bool World::shadow_crossings_impl(const Ray& ray, Interval ray_t, ShadowCrossing
       if (visit(i)) return true;
     return false;
   }
-  return traverse_bvh<true>(bvh_, ray, ray_t, [&](uint32_t slot, Interval&) { return visit(bvh_.order[slot]); });
+  return traverse_top_level<true>(ray, ray_t, [&](uint32_t i, Interval&) { return visit(i); });
 }
 
 std::size_t World::bvh_nodes() const {
-  std::size_t n = bvh_.nodes.size();
+  std::size_t n = bvh_.nodes.size() + quantized_.nodes.size();
   for (const Group& g : groups_) n += g.bvh.nodes.size();
   std::vector<const MeshAccel*> distinct;
   for (const auto& m : meshes_)
@@ -527,14 +537,15 @@ WorldMemory World::memory() const {
   WorldMemory w;
   w.instances = instances_.capacity() * sizeof(Instance) + planes_.capacity() * sizeof(uint32_t);
   w.transforms = transforms_.capacity() * sizeof(InstanceTransform) + instance_linears_.capacity() * sizeof(InstanceLinear) +
-                 group_transforms_.capacity() * sizeof(GroupTransform) + group_linears_.capacity() * sizeof(GroupLinear);
+                 group_offsets_.capacity() * sizeof(Vec3) + group_linear_of_.capacity() * sizeof(uint32_t) + group_linears_.capacity() * sizeof(GroupLinear);
   for (const Group& g : groups_) w.bvh += g.bvh.nodes.capacity() * sizeof(BVHNode) + g.bvh.order.capacity() * sizeof(uint32_t);
   std::apply([&](const auto&... array) { ((w.shapes += array.capacity() * sizeof(array[0])), ...); }, shapes_);
   w.shapes += quad_frames_.capacity() * sizeof(QuadFrame) + plane_frames_.capacity() * sizeof(PlaneFrame);
   for (const Csg& c : csgs_)
     w.shapes += c.tree.nodes.capacity() * sizeof(CsgNode) + c.tree.children.capacity() * sizeof(uint32_t) +
                 c.leaf_instance.capacity() * sizeof(uint32_t) + c.leaf_bounds.capacity() * sizeof(AABB);
-  w.bvh += bvh_.nodes.capacity() * sizeof(BVHNode) + bvh_.order.capacity() * sizeof(uint32_t);
+  w.bvh += bvh_.nodes.capacity() * sizeof(BVHNode) + bvh_.order.capacity() * sizeof(uint32_t) +
+           quantized_.nodes.capacity() * sizeof(QuantizedNode);
   std::vector<const MeshAccel*> distinct;
   for (const auto& m : meshes_)
     if (m && std::find(distinct.begin(), distinct.end(), m.get()) == distinct.end()) {

@@ -11,6 +11,7 @@
 
 #include "render/accel/bit_interner.hpp"
 #include "render/accel/bvh.hpp"
+#include "render/accel/quantized_bvh.hpp"
 #include "render/accel/flatten.hpp"
 #include "render/accel/mesh_accel.hpp"
 #include "render/geometry/csg/csg_tree.hpp"
@@ -105,6 +106,8 @@ struct GroupLinear {
 // The object map's translation is not kept (24 of the 56 bytes): a ray is carried into the
 // group's space as to_object * (origin - to_world_t), which needs none, and subtracts the
 // placement's offset before the rotation, so a ray near a far placement loses no digits to it.
+// Kept as two arrays (World::group_offsets_, group_linear_of_): 28 bytes a placement where the
+// struct's padding made 32 (issue 24: with the quantized top level, 64 bytes a placement).
 struct GroupTransform {
   uint32_t linear = 0;           // into World::group_linears_
   Vec3 to_world_t{0.0};          // the object → world map's translation column
@@ -130,6 +133,12 @@ struct WorldHit {
 // A few bounded objects are tested one after another: a BVH over them is one leaf holding the
 // same objects behind an extra box test per ray.
 inline constexpr std::size_t kMaxObjectsWithoutBvh = kBvhMaxLeafSize;
+// From this many bounded objects on (2^20), the top-level BVH is kept quantized
+// (quantized_bvh.hpp): 20 bytes per object where the binary tree of float boxes takes 68, for
+// a walk that decodes each box (about 11% more render time on 360k spheres under an area light,
+// 0.15 s more build per million objects: docs/performance.md, "The quantized top level").
+// Below it the binary tree's 68 bytes an object are under 70 MB, not worth that time.
+inline constexpr std::size_t kQuantizedTopLevelFrom = std::size_t{1} << 20;
 
 // The transmissive surfaces a shadow ray crosses, in no particular order (see shadow_crossings).
 struct ShadowCrossings {
@@ -158,9 +167,12 @@ ShadowRegion shadow_pyramid(const Vec3& apex, const Vec3& centre, const Vec3& u,
 // inside a ShadowRegion: the shading point's shadow rays towards an area light test these few
 // objects instead of walking the BVH once per light sample.
 struct OccluderCandidates {
-  static constexpr int kMax = 8;
+  static constexpr int kMax = 8;  // leaves of the binary tree, objects without a BVH, planes
+  // Instances from a quantized top level: its leaves hold one object where the binary tree's
+  // hold up to 4, so as many objects as 8 leaves hold is more than 8 leaves.
+  static constexpr int kMaxInstances = 16;
   int count = 0;
-  uint32_t leaf[kMax];   // BVH node indices (leaves), or instance indices without a BVH
+  uint32_t leaf[kMaxInstances];  // BVH node indices (leaves); instances without a BVH or with a quantized one
   int plane_count = 0;
   uint32_t plane[kMax];  // the unbounded planes that cross the region (instance indices)
 };
@@ -185,6 +197,10 @@ class World {
         SceneDesc* taken = nullptr);
   // Builds the top-level BVH over the instances (WorldBuild::BvhLater); once, before tracing.
   void build_bvh();
+  // Before build_bvh (WorldBuild::BvhLater): quantize the top level from `count` bounded
+  // objects on instead of kQuantizedTopLevelFrom (tests compare the two trees' answers).
+  void set_quantized_top_level_from(std::size_t count) { quantized_from_ = count; }
+  bool quantized_top_level() const { return !quantized_.empty(); }
 
   // Closest hit; with `transmissive_only`, opaque instances are ignored; with `shadow_ray`,
   // so are the objects that cast no shadow (casts_shadow = false).
@@ -256,6 +272,10 @@ class World {
  private:
   // A bounded instance's world box (the top-level BVH's input).
   AABB world_bounds(const Instance& inst) const;
+  bool quantized_candidates(const ShadowRegion& region, OccluderCandidates& out) const;
+  // traverse_bvh over the top level, whichever form it has: `visit(instance, t_range)`.
+  template <bool any_hit, class Visit>
+  bool traverse_top_level(const Ray& ray, Interval& ray_t, Visit&& visit) const;
   template <std::size_t... I>
   AABB object_bounds(const Instance& inst, std::index_sequence<I...>) const {
     AABB b;
@@ -341,7 +361,10 @@ class World {
     AABB bounds;
   };
   std::vector<Group> groups_;
-  std::vector<GroupTransform> group_transforms_;
+  // Placement i's GroupTransform: its translation and its linear pair's index.
+  std::vector<Vec3> group_offsets_;
+  std::vector<uint32_t> group_linear_of_;
+  GroupTransform group_transform(uint32_t i) const { return GroupTransform{group_linear_of_[i], group_offsets_[i]}; }
   std::vector<GroupLinear> group_linears_;
   // While building: each distinct linear pair's index in group_linears_, by its 18 doubles' bits.
   BitInterner<GroupLinear> group_linear_index_;
@@ -361,7 +384,9 @@ class World {
   // While building: each distinct linear pair's index in instance_linears_, by its doubles' bits.
   BitInterner<InstanceLinear> instance_linear_index_;
   std::vector<uint32_t> planes_;     // instance indices of unbounded planes
-  BVH bvh_;
+  BVH bvh_;                          // empty once quantized_ is made from it
+  QuantizedBVH quantized_;
+  std::size_t quantized_from_ = kQuantizedTopLevelFrom;
   bool bvh_built_ = false;
   std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded
   bool use_bvh_ = true;

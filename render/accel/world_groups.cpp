@@ -68,15 +68,16 @@ bool World::add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst
   GroupTransform xf;
   xf.linear = group_linear_index_.intern(linear, group_linears_);
   xf.to_world_t = world_map[3];
-  inst.transform = static_cast<uint32_t>(group_transforms_.size());
-  group_transforms_.push_back(xf);
+  inst.transform = static_cast<uint32_t>(group_offsets_.size());
+  group_offsets_.push_back(xf.to_world_t);
+  group_linear_of_.push_back(xf.linear);
   bounds = world_bounds(inst);  // as the BVH build will make it again
   return bounds.finite();
 }
 
 Ray World::group_ray(const Instance& inst, const Ray& r) const {
   if (inst.transform == kNoId) return r;
-  const GroupTransform& xf = group_transforms_[inst.transform];
+  const GroupTransform xf = group_transform(inst.transform);
   const glm::dmat3& to_object = group_object_linear(xf);
   return Ray{to_object * (r.origin - xf.to_world_t), to_object * r.direction};
 }
@@ -117,7 +118,7 @@ bool World::intersect_group(const Instance& inst, const Ray& parent_ray, const I
   const Instance& part = instances_[best_part];
   if (part.kind == kGroupKind) {
     if (part.transform != kNoId) {
-      const GroupTransform& xf = group_transforms_[part.transform];
+      const GroupTransform xf = group_transform(part.transform);
       group_to_parent(group_to_world(xf), group_object_linear(xf), best);
     }
   } else {

@@ -279,8 +279,13 @@ TEST_CASE("shadow rays tested against the occluder candidates get occluded()'s a
   SceneDesc s;
   for (int i = 0; i < 200; ++i) place(s, add_shape(s, Sphere{random_point(rng, 9.0), radius(rng)}));
   place(s, add_shape(s, Plane{Vec3(0, 1, 0), -10.0}));
-  World w(s, flatten_scene(s));
-  REQUIRE(w.top_level().nodes.size() > 1);
+  const bool quantized = GENERATE(false, true);  // the top level as float boxes, or quantized
+  CAPTURE(quantized);
+  World w(s, flatten_scene(s), true, WorldBuild::BvhLater);
+  if (quantized) w.set_quantized_top_level_from(1);
+  w.build_bvh();
+  REQUIRE(w.quantized_top_level() == quantized);
+  REQUIRE(w.bvh_nodes() > 1);
   const Vec3 u(3, 0, 0.5), v(0, 0.2, 3);
   int searched = 0, blocked = 0, open = 0;
   for (int trial = 0; trial < 400; ++trial) {
