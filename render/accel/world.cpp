@@ -202,7 +202,10 @@ void World::build_bvh() {
   // builder's references: no box array lives beside the scene description while the instances
   // are made (48 bytes per object of that peak), nor beside the references.
   bvh_ = render::build_bvh(bounded_count_, [&](std::size_t i) { return world_bounds(instances_[i]); });
-  if (bounded_count_ >= quantized_from_) {
+  std::size_t placements = 0;
+  if (bounded_count_ >= quantized_from_ && !quantize_any_kind_)
+    for (std::size_t i = 0; i < bounded_count_; ++i) placements += instances_[i].kind == kGroupKind ? 1 : 0;
+  if (bounded_count_ >= quantized_from_ && (quantize_any_kind_ || 2 * placements >= bounded_count_)) {
     quantized_ = quantize_bvh(bvh_, [&](uint32_t i) { return world_bounds(instances_[i]); });
     if (!quantized_.empty()) bvh_ = BVH{};
   }

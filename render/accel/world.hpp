@@ -133,11 +133,14 @@ struct WorldHit {
 // A few bounded objects are tested one after another: a BVH over them is one leaf holding the
 // same objects behind an extra box test per ray.
 inline constexpr std::size_t kMaxObjectsWithoutBvh = kBvhMaxLeafSize;
-// From this many bounded objects on (2^20), the top-level BVH is kept quantized
-// (quantized_bvh.hpp): 20 bytes per object where the binary tree of float boxes takes 68, for
-// a walk that decodes each box (about 11% more render time on 360k spheres under an area light,
-// 0.15 s more build per million objects: docs/performance.md, "The quantized top level").
-// Below it the binary tree's 68 bytes an object are under 70 MB, not worth that time.
+// From this many bounded objects on (2^20), most of them placements of instanced groups, the
+// top-level BVH is kept quantized (quantized_bvh.hpp): 20 bytes per object where the binary
+// tree of float boxes takes 68 (issue 24: <= 64 bytes a placement), for a walk that decodes
+// each box and a build that holds both trees for a moment (docs/performance.md, "The
+// quantized top level": at 1M spheres under an area light, render +13%; at 4M spheres, peak
+// 403 -> 439 MB, past the 100 bytes a sphere that scene keeps). A placement's leaf costs a ray
+// transform and a group walk, which the decoding adds little to, and the placements' peak is
+// their evaluation, not the build; plain shapes keep the binary tree.
 inline constexpr std::size_t kQuantizedTopLevelFrom = std::size_t{1} << 20;
 
 // The transmissive surfaces a shadow ray crosses, in no particular order (see shadow_crossings).
@@ -198,8 +201,12 @@ class World {
   // Builds the top-level BVH over the instances (WorldBuild::BvhLater); once, before tracing.
   void build_bvh();
   // Before build_bvh (WorldBuild::BvhLater): quantize the top level from `count` bounded
-  // objects on instead of kQuantizedTopLevelFrom (tests compare the two trees' answers).
-  void set_quantized_top_level_from(std::size_t count) { quantized_from_ = count; }
+  // objects on, of any kind, instead of kQuantizedTopLevelFrom placements (tests compare the
+  // two trees' answers).
+  void set_quantized_top_level_from(std::size_t count) {
+    quantized_from_ = count;
+    quantize_any_kind_ = true;
+  }
   bool quantized_top_level() const { return !quantized_.empty(); }
 
   // Closest hit; with `transmissive_only`, opaque instances are ignored; with `shadow_ray`,
@@ -387,6 +394,7 @@ class World {
   BVH bvh_;                          // empty once quantized_ is made from it
   QuantizedBVH quantized_;
   std::size_t quantized_from_ = kQuantizedTopLevelFrom;
+  bool quantize_any_kind_ = false;
   bool bvh_built_ = false;
   std::size_t bounded_count_ = 0;    // instances_[0, bounded_count_) are bounded
   bool use_bvh_ = true;
