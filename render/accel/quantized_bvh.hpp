@@ -1,6 +1,6 @@
-// The top-level BVH of a scene of very many instances, in 20 bytes per instance where the
-// binary tree of float boxes takes 68 (two 32-byte nodes and a 4-byte index: issue 24, a
-// million placements of a group). Each interior node holds its two children's boxes in 8 bits
+// The top-level BVH of a scene of a million placements or more (World::build_bvh), in 20 bytes
+// per instance where the binary tree of float boxes takes 68 (two 32-byte nodes and a 4-byte
+// index; issue 24 asks for <= 64 bytes a placement). Each interior node holds its two children's boxes in 8 bits
 // per bound, counted in 1/255ths of its own box's extent (in from its lower bound for a
 // child's lower bound, in from its upper bound for the upper one, so 0 is its own bound
 // exactly), and the two children themselves: a node's index, or an instance with kLeafBit.
@@ -11,11 +11,10 @@
 // boxes. The root's box is the binary tree's, kept whole.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
-#include <cstddef>
-#include <cstring>
 
 #include "render/accel/bvh.hpp"
 
