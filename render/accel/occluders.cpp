@@ -125,7 +125,8 @@ bool World::quantized_candidates(const ShadowRegion& region, OccluderCandidates&
   };
   Item stack[kBvhTraversalStack];
   int top = 0;
-  if (meets(region, quantized_.root_box.lo, quantized_.root_box.hi)) stack[top++] = {quantized_.root_box, quantized_.root};
+  if (meets(region, quantized_.root_box.lo, quantized_.root_box.hi))
+    stack[top++] = Item{quantized_.root_box, quantized_.root};
   while (top > 0) {
     --top;
     const uint32_t ref = stack[top].ref;
@@ -139,13 +140,7 @@ bool World::quantized_candidates(const ShadowRegion& region, OccluderCandidates&
     decode_child(stack[top].box, node, 1, kids[1]);
     decode_child(stack[top].box, node, 0, kids[0]);
     for (int c = 1; c >= 0; --c) {  // the left child on top, as in the binary walk
-      if (!meets(region, kids[c].lo, kids[c].hi)) continue;
-      Item& slot = stack[top++];
-      for (int a = 0; a < 3; ++a) {
-        slot.box.lo[a] = kids[c].lo[a];
-        slot.box.hi[a] = kids[c].hi[a];
-      }
-      slot.ref = node.child[c];
+      if (meets(region, kids[c].lo, kids[c].hi)) stack[top++] = Item{kids[c], node.child[c]};
     }
   }
   return true;

@@ -7,6 +7,10 @@ namespace rts::render {
 
 namespace {
 
+QuantizedBox from_floats(const float lo[3], const float hi[3]) {
+  return QuantizedBox{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+}
+
 // A subtree of the binary tree, or a run of a leaf's primitives (split in halves here).
 struct Item {
   bool is_node = true;
@@ -25,9 +29,7 @@ class Quantizer {
   Item node_item(uint32_t index) const {
     Item item;
     item.node = index;
-    const BVHNode& n = bvh_.nodes[index];
-    std::copy(n.lo, n.lo + 3, item.box.lo);
-    std::copy(n.hi, n.hi + 3, item.box.hi);
+    item.box = from_floats(bvh_.nodes[index].lo, bvh_.nodes[index].hi);
     return item;
   }
 
@@ -82,8 +84,7 @@ class Quantizer {
     for (uint32_t s = begin; s < begin + count; ++s) box.extend(leaf_boxes_[s - leaf_begin_]);
     float lo[3], hi[3];
     round_outwards(box, lo, hi);
-    std::copy(lo, lo + 3, item.box.lo);
-    std::copy(hi, hi + 3, item.box.hi);
+    item.box = from_floats(lo, hi);
     return item;
   }
 

@@ -1,9 +1,10 @@
 // The top-level BVH of a scene of a million placements or more (World::build_bvh), in 20 bytes
 // per instance where the binary tree of float boxes takes 68 (two 32-byte nodes and a 4-byte
-// index; issue 24 asks for <= 64 bytes a placement). Each interior node holds its two children's boxes in 8 bits
-// per bound, counted in 1/255ths of its own box's extent (in from its lower bound for a
-// child's lower bound, in from its upper bound for the upper one, so 0 is its own bound
-// exactly), and the two children themselves: a node's index, or an instance with kLeafBit.
+// index; issue 24 asks for <= 64 bytes a placement). Each interior node holds its two
+// children's boxes in 8 bits per bound, counted in 1/255ths of its own box's extent (in from
+// its lower bound for a child's lower bound, in from its upper bound for the upper one, so 0
+// is its own bound exactly), and the two children themselves: a node's index, or an instance
+// with kLeafBit.
 // Leaves hold one instance each, so no index array is needed. The traversal decodes a child's
 // box from its parent's decoded box with the same double operations the build checked: every
 // decoded box encloses its subtree's boxes (the build steps a bound outwards until it does),

@@ -202,10 +202,12 @@ void World::build_bvh() {
   // builder's references: no box array lives beside the scene description while the instances
   // are made (48 bytes per object of that peak), nor beside the references.
   bvh_ = render::build_bvh(bounded_count_, [&](std::size_t i) { return world_bounds(instances_[i]); });
-  std::size_t placements = 0;
-  if (bounded_count_ >= quantized_from_ && !quantize_any_kind_)
-    for (std::size_t i = 0; i < bounded_count_; ++i) placements += instances_[i].kind == kGroupKind ? 1 : 0;
-  if (bounded_count_ >= quantized_from_ && (quantize_any_kind_ || 2 * placements >= bounded_count_)) {
+  auto mostly_placements = [&] {
+    const auto placements = std::count_if(instances_.begin(), instances_.begin() + bounded_count_,
+                                          [](const Instance& inst) { return inst.kind == kGroupKind; });
+    return 2 * static_cast<std::size_t>(placements) >= bounded_count_;
+  };
+  if (bounded_count_ >= quantized_from_ && (quantize_any_kind_ || mostly_placements())) {
     quantized_ = quantize_bvh(bvh_, [&](uint32_t i) { return world_bounds(instances_[i]); });
     if (!quantized_.empty()) bvh_ = BVH{};
   }

@@ -133,14 +133,14 @@ struct WorldHit {
 // A few bounded objects are tested one after another: a BVH over them is one leaf holding the
 // same objects behind an extra box test per ray.
 inline constexpr std::size_t kMaxObjectsWithoutBvh = kBvhMaxLeafSize;
-// From this many bounded objects on (2^20), most of them placements of instanced groups, the
-// top-level BVH is kept quantized (quantized_bvh.hpp): 20 bytes per object where the binary
-// tree of float boxes takes 68 (issue 24: <= 64 bytes a placement), for a walk that decodes
-// each box and a build that holds both trees for a moment (docs/performance.md, "The
-// quantized top level": at 1M spheres under an area light, render +13%; at 4M spheres, peak
-// 403 -> 439 MB, past the 100 bytes a sphere that scene keeps). A placement's leaf costs a ray
-// transform and a group walk, which the decoding adds little to, and the placements' peak is
-// their evaluation, not the build; plain shapes keep the binary tree.
+// From this many bounded objects on (2^20), at least half of them placements of instanced
+// groups, the top-level BVH is kept quantized (quantized_bvh.hpp): 20 bytes per object where
+// the binary tree of float boxes takes 68 (issue 24: <= 64 bytes a placement), for a walk that
+// decodes each box (+12% render at a million placements, 16 spp) and a build that holds both
+// trees for a moment (+0.12 s per million placements). Plain shapes keep the binary tree: for
+// them the walk cost 13% at 1M spheres under an area light and the moment with both trees put
+// 4M spheres at 439 MB against 403, past that scene's 100 bytes a sphere; placements peak in
+// evaluation, not in the build (docs/performance.md, "The quantized top level").
 inline constexpr std::size_t kQuantizedTopLevelFrom = std::size_t{1} << 20;
 
 // The transmissive surfaces a shadow ray crosses, in no particular order (see shadow_crossings).
