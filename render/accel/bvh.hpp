@@ -56,8 +56,9 @@ struct FloatBox {
   float lo[3], hi[3];
 };
 BVH build_bvh(const std::vector<FloatBox>& primitive_bounds);
-// The same, with the boxes made on demand (`box_of(i)` for i < count, called once each), so
-// no box array sits beside the builder's own references: 24 bytes per triangle of the peak.
+// The same, with the boxes made on demand (`box_of(i)` for i < count, called once each, from
+// several threads at once), so no box array sits beside the builder's own references: 24
+// bytes per triangle of the peak.
 BVH build_bvh(std::size_t count, const std::function<FloatBox(std::size_t)>& box_of);
 // Double boxes made on demand (`box_of(i)` called twice each: once to see whether every box is
 // float-exact, once into the references): the same tree as the array overload builds.

@@ -3,9 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
 #include "render/geometry/shapes/triangle.hpp"
 
 namespace rts::render {
+
+namespace {
+// Triangles per task of the constructor's parallel passes.
+constexpr std::size_t kParallelGrain = 16 * 1024;
+}  // namespace
 
 MeshAccel::MeshAccel(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mesh)) {
   // Triangles whose indices point outside the vertex arrays, or with non-finite vertices, are
@@ -27,7 +36,33 @@ MeshAccel::MeshAccel(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mes
   std::vector<uint32_t> valid;
   bool all_valid = true;
   std::size_t valid_count = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  // Most meshes have no triangle to leave out: their bounds are found on every thread first
+  // (profile finding, the 320k-triangle terrain at 2 threads: this pass and the leaf-ordered
+  // copy below were a quarter of the build's wall time when serial).
+  struct Scan {
+    AABB bounds;
+    bool all_valid = true;
+  };
+  const Scan scan = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, n, kParallelGrain), Scan{},
+      [&](const tbb::blocked_range<std::size_t>& r, Scan acc) {
+        for (std::size_t i = r.begin(); i < r.end() && acc.all_valid; ++i) {
+          AABB box;
+          acc.all_valid = box_of_triangle(i, box);
+          acc.bounds.extend(box);
+        }
+        return acc;
+      },
+      [](Scan a, const Scan& b) {
+        a.bounds.extend(b.bounds);
+        a.all_valid = a.all_valid && b.all_valid;
+        return a;
+      });
+  if (scan.all_valid) {
+    valid_count = n;
+    if (n > 0) bounds_ = AABB{scan.bounds.lo + mesh_->origin, scan.bounds.hi + mesh_->origin};
+  }
+  for (std::size_t i = 0; i < n && !scan.all_valid; ++i) {
     AABB box;
     if (!box_of_triangle(i, box)) {
       if (all_valid) {
@@ -52,12 +87,16 @@ MeshAccel::MeshAccel(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mes
     }
     return fb;
   });
-  leaf_vertices_.reserve(bvh_.order.size() * 3);
-  for (uint32_t& o : bvh_.order) {
-    if (!all_valid) o = valid[o];  // leaves index triangles directly
-    const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(o) * 3];
-    for (int k = 0; k < 3; ++k) leaf_vertices_.push_back(mesh_->positions[idx[k]]);
-  }
+  leaf_vertices_.resize(bvh_.order.size() * 3);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bvh_.order.size(), kParallelGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t slot = r.begin(); slot < r.end(); ++slot) {
+                        uint32_t& o = bvh_.order[slot];
+                        if (!all_valid) o = valid[o];  // leaves index triangles directly
+                        const uint32_t* idx = &mesh_->indices[static_cast<std::size_t>(o) * 3];
+                        for (int k = 0; k < 3; ++k) leaf_vertices_[slot * 3 + k] = mesh_->positions[idx[k]];
+                      }
+                    });
 }
 
 void MeshAccel::triangle(uint32_t tri, Vec3& v0, Vec3& v1, Vec3& v2) const {
