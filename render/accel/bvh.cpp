@@ -165,29 +165,13 @@ struct Builder {
   void measure(uint32_t begin, uint32_t end, AABB& bounds, AABB& centroid_bounds) const {
     if constexpr (kFloatLanes<PrimRef>) {
 #if defined(__SSE2__)
-      __m128 lo = _mm_set1_ps(std::numeric_limits<float>::infinity());
-      __m128 hi = _mm_set1_ps(-std::numeric_limits<float>::infinity());
-      __m128d c_lo_xy = _mm_set1_pd(std::numeric_limits<double>::infinity()), c_lo_z = c_lo_xy;
-      __m128d c_hi_xy = _mm_set1_pd(-std::numeric_limits<double>::infinity()), c_hi_z = c_hi_xy;
-      const __m128d half = _mm_set1_pd(0.5);
-      for (uint32_t i = begin; i < end; ++i) {
-        const __m128 l = _mm_loadu_ps(refs[i].lo), h = _mm_loadu_ps(refs[i].hi);
-        lo = _mm_min_ps(l, lo);
-        hi = _mm_max_ps(h, hi);
-        // 0.5 * (lo + hi) in double, as CompactRef::centroid: (x, y) and (z, unused).
-        const __m128d c_xy = _mm_mul_pd(half, _mm_add_pd(_mm_cvtps_pd(l), _mm_cvtps_pd(h)));
-        const __m128d c_z = _mm_mul_pd(half, _mm_add_pd(_mm_cvtps_pd(_mm_movehl_ps(l, l)), _mm_cvtps_pd(_mm_movehl_ps(h, h))));
-        c_lo_xy = _mm_min_pd(c_xy, c_lo_xy);
-        c_hi_xy = _mm_max_pd(c_xy, c_hi_xy);
-        c_lo_z = _mm_min_pd(c_z, c_lo_z);
-        c_hi_z = _mm_max_pd(c_z, c_hi_z);
-      }
-      bounds = to_aabb(lo, hi);
+      const MeasureLanes m = halves<MeasureLanes>(begin, end, [&](uint32_t b, uint32_t e) { return measure_lanes(b, e); });
+      bounds = to_aabb(m.lo, m.hi);
       alignas(16) double c[8];
-      _mm_store_pd(c, c_lo_xy);
-      _mm_store_pd(c + 2, c_lo_z);
-      _mm_store_pd(c + 4, c_hi_xy);
-      _mm_store_pd(c + 6, c_hi_z);
+      _mm_store_pd(c, m.c_lo_xy);
+      _mm_store_pd(c + 2, m.c_lo_z);
+      _mm_store_pd(c + 4, m.c_hi_xy);
+      _mm_store_pd(c + 6, m.c_hi_z);
       centroid_bounds = AABB{Vec3(c[0], c[1], c[2]), Vec3(c[4], c[5], c[6])};
       return;
 #endif
@@ -197,6 +181,76 @@ struct Builder {
       centroid_bounds.extend(refs[i].centroid());
     }
   }
+
+  // `part(begin, end)` over the whole range, or for a range long enough to build in parallel
+  // over its two halves at once, merged (T::merge keeps the earlier half's value on ties, as
+  // one pass would: the same result either way). At 2 threads the passes over the root's
+  // references were the build's serial part.
+  template <class T, class Part>
+  T halves(uint32_t begin, uint32_t end, const Part& part) const {
+    if (end - begin < kParallelBuildThreshold || !parallel) return part(begin, end);
+    const uint32_t mid = begin + (end - begin) / 2;
+    T first, second;
+    tbb::parallel_invoke([&] { first = part(begin, mid); }, [&] { second = part(mid, end); });
+    first.merge(second);
+    return first;
+  }
+
+#if defined(__SSE2__)
+  // The bounds of references and of their centroids, in lanes (measure).
+  struct MeasureLanes {
+    __m128 lo = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    __m128 hi = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+    __m128d c_lo_xy = _mm_set1_pd(std::numeric_limits<double>::infinity()), c_lo_z = c_lo_xy;
+    __m128d c_hi_xy = _mm_set1_pd(-std::numeric_limits<double>::infinity()), c_hi_z = c_hi_xy;
+    // AABB::extend's choices: a later value replaces an earlier one only when smaller (min)
+    // or larger (max), never when equal (signed zeros).
+    void merge(const MeasureLanes& later) {
+      lo = _mm_min_ps(later.lo, lo);
+      hi = _mm_max_ps(later.hi, hi);
+      c_lo_xy = _mm_min_pd(later.c_lo_xy, c_lo_xy);
+      c_hi_xy = _mm_max_pd(later.c_hi_xy, c_hi_xy);
+      c_lo_z = _mm_min_pd(later.c_lo_z, c_lo_z);
+      c_hi_z = _mm_max_pd(later.c_hi_z, c_hi_z);
+    }
+  };
+
+  MeasureLanes measure_lanes(uint32_t begin, uint32_t end) const {
+    MeasureLanes m;
+    const __m128d half = _mm_set1_pd(0.5);
+    for (uint32_t i = begin; i < end; ++i) {
+      const __m128 l = _mm_loadu_ps(refs[i].lo), h = _mm_loadu_ps(refs[i].hi);
+      MeasureLanes one;
+      one.lo = l;
+      one.hi = h;  // lane 3 (the index) unused
+      // 0.5 * (lo + hi) in double, as CompactRef::centroid: (x, y) and (z, unused).
+      one.c_lo_xy = one.c_hi_xy = _mm_mul_pd(half, _mm_add_pd(_mm_cvtps_pd(l), _mm_cvtps_pd(h)));
+      one.c_lo_z = one.c_hi_z = _mm_mul_pd(half, _mm_add_pd(_mm_cvtps_pd(_mm_movehl_ps(l, l)), _mm_cvtps_pd(_mm_movehl_ps(h, h))));
+      m.merge(one);
+    }
+    return m;
+  }
+
+  // The bins' boxes in float lanes and their counts (the SAH binning).
+  struct BinLanes {
+    __m128 lo[kBvhBins], hi[kBvhBins];
+    uint32_t n[kBvhBins];
+    BinLanes() {
+      for (int k = 0; k < kBvhBins; ++k) {
+        lo[k] = _mm_set1_ps(std::numeric_limits<float>::infinity());
+        hi[k] = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+        n[k] = 0;
+      }
+    }
+    void merge(const BinLanes& later) {
+      for (int k = 0; k < kBvhBins; ++k) {
+        lo[k] = _mm_min_ps(later.lo[k], lo[k]);
+        hi[k] = _mm_max_ps(later.hi[k], hi[k]);
+        n[k] += later.n[k];
+      }
+    }
+  };
+#endif
 
   // Builds the subtree over refs[begin, end) into `nodes` (depth-first, left child right
   // after its parent); returns the index of its root.
@@ -247,21 +301,21 @@ struct Builder {
         // reference. Profile finding (perf, the 320k-triangle terrain's build, 1 thread): the
         // scalar double updates of the bin's six bounds, each loaded back from the previous
         // reference's store to the same bin, were the builder's hottest loop.
-        struct FloatBin { __m128 lo, hi; } fbins[kBvhBins];
-        for (FloatBin& b : fbins) {
-          b.lo = _mm_set1_ps(std::numeric_limits<float>::infinity());
-          b.hi = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+        const BinLanes lanes = halves<BinLanes>(begin, end, [&](uint32_t b, uint32_t e) {
+          BinLanes out;
+          for (uint32_t i = b; i < e; ++i) {
+            const int k = bin_of(refs[i]);
+            // glm::min(lo, p) keeps lo unless p < lo; _mm_min_ps(p, lo) likewise (signed zeros).
+            out.lo[k] = _mm_min_ps(_mm_loadu_ps(refs[i].lo), out.lo[k]);
+            out.hi[k] = _mm_max_ps(_mm_loadu_ps(refs[i].hi), out.hi[k]);  // lane 3 (the index) unused
+            ++out.n[k];
+          }
+          return out;
+        });
+        for (int k = 0; k < kBvhBins; ++k) {
+          bins[k].n = lanes.n[k];
+          if (bins[k].n > 0) bins[k].box = to_aabb(lanes.lo[k], lanes.hi[k]);
         }
-        for (uint32_t i = begin; i < end; ++i) {
-          const int k = bin_of(refs[i]);
-          FloatBin& b = fbins[k];
-          // glm::min(lo, p) keeps lo unless p < lo; _mm_min_ps(p, lo) likewise (signed zeros).
-          b.lo = _mm_min_ps(_mm_loadu_ps(refs[i].lo), b.lo);
-          b.hi = _mm_max_ps(_mm_loadu_ps(refs[i].hi), b.hi);  // lane 3 (the index) unused
-          ++bins[k].n;
-        }
-        for (int k = 0; k < kBvhBins; ++k)
-          if (bins[k].n > 0) bins[k].box = to_aabb(fbins[k].lo, fbins[k].hi);
 #endif
       } else {
         for (uint32_t i = begin; i < end; ++i) {

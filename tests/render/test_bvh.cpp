@@ -1,11 +1,13 @@
 // The BVHs against brute force: the same closest hit (and the same occlusion answer) for many
 // random rays, over random spheres (top level) and random triangles (a mesh's bottom level).
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <random>
 
 #include <catch2/catch.hpp>
+#include <tbb/global_control.h>
 
 #include "render/accel/bvh.hpp"
 #include "render/accel/flatten.hpp"
@@ -197,6 +199,44 @@ TEST_CASE("large BVHs (built in parallel) are valid and the same on every build"
     });
     CHECK(range.max == best);
   }
+}
+
+TEST_CASE("one thread and several build the same tree, bit for bit", "[bvh]") {
+  // With several threads the passes over a long range run on its halves at once and merge,
+  // and subtrees are built aside and spliced; with one, neither: the trees must not differ,
+  // down to the float bounds' signed zeros (boxes on the axes planes have zero bounds).
+  std::mt19937_64 rng(123);
+  const int n = 90'000;  // above the parallel build threshold, at several levels
+  std::vector<AABB> boxes;
+  std::uniform_int_distribution<int> cell(-40, 40);
+  for (int i = 0; i < n; ++i) {
+    // Boxes standing on the plane y = 0, their lower bound +0 or -0 (which of the two a
+    // node's bound takes depends on the order the references are met), and many exact zeros
+    // elsewhere.
+    Vec3 c(cell(rng) * 0.5, 0.0, cell(rng) * 0.5);
+    AABB box{c - Vec3(i % 3 == 0 ? 0.0 : 0.25, 0.0, 0.25), c + Vec3(0.25, 0.25 + (i % 7) * 0.25, 0.25)};
+    if (rng() % 2 == 1)
+      for (int a = 0; a < 3; ++a) {
+        if (box.lo[a] == 0.0) box.lo[a] = -0.0;
+        if (box.hi[a] == 0.0) box.hi[a] = -0.0;
+      }
+    boxes.push_back(box);
+  }
+  auto build_with = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return build_bvh(boxes);
+  };
+  const BVH one = build_with(1), several = build_with(4);
+  REQUIRE(one.nodes.size() == several.nodes.size());
+  CHECK(one.order == several.order);
+  bool same = true;
+  for (std::size_t i = 0; i < one.nodes.size(); ++i) {
+    const BVHNode &a = one.nodes[i], &b = several.nodes[i];
+    // Bounds by their bits: -0 and +0 compare equal as floats.
+    same = same && std::memcmp(a.lo, b.lo, sizeof a.lo) == 0 && std::memcmp(a.hi, b.hi, sizeof a.hi) == 0 &&
+           a.offset == b.offset && a.count == b.count && a.axis == b.axis;
+  }
+  CHECK(same);
 }
 
 TEST_CASE("float boxes build the same tree as the same boxes in double", "[bvh]") {
