@@ -110,7 +110,10 @@ inline int torus_crossings(const Torus& tor, const Ray& ray, double* t_out) {
     }
     t_out[i] = t;
   }
-  std::sort(t_out, t_out + n);
+  // At most four: an insertion sort (std::sort's general paths made GCC 12 warn of indices
+  // past the caller's four-element arrays, -Warray-bounds, which it cannot bound).
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && t_out[j] < t_out[j - 1]; --j) std::swap(t_out[j], t_out[j - 1]);
   return n;
 }
 
