@@ -12,6 +12,9 @@
 
 namespace rts::render {
 
+// Up to this many placed instances (groups expanded), the summary visits each one.
+inline constexpr std::size_t kExactWalkInstances = 1'000'000;
+
 struct SceneSummary {
   std::map<std::string, std::size_t> shapes;  // kind → placed instances (world-space count)
   std::map<std::string, std::size_t> lights;  // kind → placed instances
@@ -22,9 +25,15 @@ struct SceneSummary {
   bool has_bounds = false;  // false when nothing bounded is placed
   Vec3 bounds_min{0.0}, bounds_max{0.0};
   bool unbounded = false;  // a plane is placed (not in the bounds)
+  // The bounds enclose each placed group's box under its placement rather than each shape's
+  // (scenes of more than kExactWalkInstances instances: exact bounds would walk them all).
+  bool bounds_of_group_boxes = false;
 };
 
-SceneSummary summarize(const SceneDesc& scene);
+
+// Scenes of more than `exact_walk_limit` placed instances are summarized from each group's
+// totals (SceneSummary::bounds_of_group_boxes).
+SceneSummary summarize(const SceneDesc& scene, std::size_t exact_walk_limit = kExactWalkInstances);
 
 // The `rts check` report; `seconds` is the evaluation time.
 void print_summary(std::ostream& out, const SceneDesc& scene, const SceneSummary& s, double seconds);

@@ -3,7 +3,8 @@
 # group) placed three times is instanced; the same three placements written as three separate
 # group literals (each placed once) are copied. The images must agree (mean absolute difference
 # below 0.05 of a code; today they are identical), --stats-json must name `instancing` for the
-# first only, count its placements as `group` primitives and its shapes once.
+# first only, count its placements as `group` primitives and its shapes once. `rts check`
+# summarizes a million placed spheres from the group's totals.
 source "$(dirname "$0")/lib.sh"
 cd "$TMP"
 size=(--width 64 --height 48 --threads 2 --no-progress)
@@ -41,4 +42,12 @@ read -r mad block < <(python3 "$SRC/bench/png_compare.py" shared.png copied.png)
 python3 -c "import sys; sys.exit(0 if float('$mad') < 0.05 else 1)" \
   || { echo "FAIL: instanced and copied images differ: MAD $mad"; FAILS=$((FAILS + 1)); }
 echo "instanced vs copied: MAD $mad codes"
+
+# `rts check` of a group placed many times (16,384 placements of 64 spheres: past the exact
+# walk's million instances) counts every sphere from the group's totals, without visiting
+# each (it took longer than the render did), and says its bounds are the placed groups' boxes.
+expect_exit 0 "check of many placements" -- "$RTS" check "$SRC/bench/instancing/copies.rts" -D m=8 -D c=128
+cp "$TMP/out" check.txt
+expect_grep check.txt "sphere +1048576$" "every placed sphere counted"
+expect_grep check.txt "of the placed groups' boxes" "the bounds say what they enclose"
 finish

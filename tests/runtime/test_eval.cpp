@@ -412,6 +412,49 @@ TEST_CASE("check's summary counts placed instances through groups and bounds the
   CHECK(sum.bounds_max == glm::dvec3(10, 11, 2));   // <8,0,0> + 2, and <4,10,0> + 1
 }
 
+TEST_CASE("check's summary of a scene past the exact walk counts the same and bounds it by its groups' boxes", "[eval][summary]") {
+  // Nested groups, a CSG block, lights and a mesh inside groups, rotated and scaled placements:
+  // summarized from each group's totals (limit 0) the counts are the walk's; the bounds enclose
+  // the walk's (each placed group's box, looser under a rotation) and equal them here where no
+  // group is rotated.
+  const std::string text =
+      "let ball = sphere { radius = 1 }\n"
+      "let tri = mesh { vertices = [<0, 0, 0>, <1, 0, 0>, <0, 1, 0>]  faces = [<0, 1, 2>] }\n"
+      "let lens = intersection { sphere { center = <0, 0, -0.5>  radius = 1 }  sphere { center = <0, 0, 0.5>  radius = 1 } }\n"
+      "let pair = group { ball  ball translate <4, 0, 0>  tri  point_light { position = <0, 3, 0> } }\n"
+      "let quad = group { pair  pair translate <0, 0, 6>  lens }\n"
+      "for i in 0 .. 5 { quad translate <i * 20, 0, 0> }\n"
+      "pair scale 2\n"
+      "plane { normal = <0, 1, 0> }\n";
+  render::SceneSummary exact = render::summarize(eval_text(text + "quad translate <0, 10, 0>\n"));
+  render::SceneSummary grouped = render::summarize(eval_text(text + "quad translate <0, 10, 0>\n"), 0);
+  CHECK_FALSE(exact.bounds_of_group_boxes);
+  CHECK(grouped.bounds_of_group_boxes);
+  CHECK(grouped.shapes == exact.shapes);
+  CHECK(grouped.lights == exact.lights);
+  CHECK(grouped.shapes["sphere"] == 6 * (2 * 2 + 2) + 2);  // 6 quads (2 pairs of 2 balls, a lens of 2), a pair
+  CHECK(grouped.instances == exact.instances);
+  CHECK(grouped.triangles == exact.triangles);
+  CHECK(grouped.triangles == 6 * 2 + 1);
+  CHECK(grouped.unbounded == exact.unbounded);
+  REQUIRE(grouped.has_bounds);
+  for (int a = 0; a < 3; ++a) {
+    CHECK(grouped.bounds_min[a] == Approx(exact.bounds_min[a]));
+    CHECK(grouped.bounds_max[a] == Approx(exact.bounds_max[a]));
+  }
+  // A rotated placement: the group's box turned is larger than its shapes turned, never smaller.
+  render::SceneDesc turned = eval_text(text + "quad rotate <0, 30, 0> translate <-50, 10, 0>\n");
+  render::SceneSummary t_exact = render::summarize(turned), t_grouped = render::summarize(turned, 0);
+  CHECK(t_grouped.shapes == t_exact.shapes);
+  CHECK(t_grouped.instances == t_exact.instances);
+  for (int a = 0; a < 3; ++a) {
+    CHECK(t_grouped.bounds_min[a] <= t_exact.bounds_min[a]);
+    CHECK(t_grouped.bounds_max[a] >= t_exact.bounds_max[a]);
+  }
+  const Vec3 looser = (t_exact.bounds_min - t_grouped.bounds_min) + (t_grouped.bounds_max - t_exact.bounds_max);
+  CHECK(looser.x + looser.y + looser.z > 0.1);
+}
+
 TEST_CASE("a mesh is built when first placed: an unused one never opens its file", "[eval][lazy]") {
   // The OBJ does not exist: unused, that is no error and no mesh is built.
   render::SceneDesc unused = eval_text("let m = mesh { file = \"no-such-mesh.obj\" }\nsphere { radius = 1 }");
