@@ -147,6 +147,9 @@ struct Builder {
   std::vector<uint32_t>& order;
   // Whether more than one thread may build: with one, building a subtree aside and splicing
   // it only copies (the same tree either way).
+  // Ranges of at most this many references are leaves (build_bvh's leaves_of_up_to; 0: the
+  // SAH decides).
+  uint32_t leaves_of_up_to = 0;
   bool parallel = tbb::this_task_arena::max_concurrency() > 1 &&
                   tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1;
 
@@ -268,7 +271,7 @@ struct Builder {
       for (uint32_t i = begin; i < end; ++i) order[i] = refs[i].index;
       return index;
     };
-    if (count <= 1 || (depth >= kBvhMaxDepth && count <= kBvhMaxLeafCount)) return make_leaf();
+    if (count <= 1 || count <= leaves_of_up_to || (depth >= kBvhMaxDepth && count <= kBvhMaxLeafCount)) return make_leaf();
 
     Vec3 extent = centroid_bounds.extent();
     int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
@@ -398,7 +401,7 @@ struct Builder {
 };
 
 template <class PrimRef>
-BVH build_from(std::vector<PrimRef> refs) {
+BVH build_from(std::vector<PrimRef> refs, uint32_t leaves_of_up_to = 0) {
   BVH bvh;
   // Room for the most nodes a tree can have (2n - 1), and no shrink_to_fit afterwards: capacity
   // never written is never resident, while growing by doubling (or trimming at the end) copies
@@ -407,6 +410,7 @@ BVH build_from(std::vector<PrimRef> refs) {
   bvh.nodes.reserve(2 * refs.size());
   bvh.order.resize(refs.size());
   Builder<PrimRef> builder{refs, bvh.order};
+  builder.leaves_of_up_to = leaves_of_up_to;
   builder.build(0, static_cast<uint32_t>(refs.size()), 0, bvh.nodes);
   const std::size_t count = refs.size();
   std::vector<PrimRef>().swap(refs);
@@ -419,7 +423,8 @@ BVH build_from(std::vector<PrimRef> refs) {
 // `refs_made` runs once the references hold every box (the array overload frees its boxes
 // there).
 template <class BoxOf>
-BVH build_over(std::size_t count, const BoxOf& box_of, const std::function<void()>& refs_made = {}) {
+BVH build_over(std::size_t count, const BoxOf& box_of, const std::function<void()>& refs_made = {},
+               uint32_t leaves_of_up_to = 0) {
   if (count == 0) return BVH{};
   bool compact = true;
   for (std::size_t i = 0; i < count && compact; ++i) compact = float_finite(box_of(i));
@@ -427,7 +432,7 @@ BVH build_over(std::size_t count, const BoxOf& box_of, const std::function<void(
     std::vector<PrimRef> refs(count);
     for (std::size_t i = 0; i < count; ++i) refs[i] = PrimRef(box_of(i), static_cast<uint32_t>(i));
     if (refs_made) refs_made();
-    return build_from(std::move(refs));
+    return build_from(std::move(refs), leaves_of_up_to);
   };
   return compact ? made(CompactRef{}) : made(WideRef{});
 }
@@ -440,8 +445,8 @@ BVH build_bvh(std::vector<AABB> primitive_bounds) {
       [&] { std::vector<AABB>().swap(primitive_bounds); });
 }
 
-BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of) {
-  return build_over(count, box_of);
+BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of, uint32_t leaves_of_up_to) {
+  return build_over(count, box_of, {}, leaves_of_up_to);
 }
 
 BVH build_bvh(const std::vector<FloatBox>& primitive_bounds) {

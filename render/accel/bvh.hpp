@@ -61,8 +61,11 @@ BVH build_bvh(const std::vector<FloatBox>& primitive_bounds);
 // bytes per triangle of the peak.
 BVH build_bvh(std::size_t count, const std::function<FloatBox(std::size_t)>& box_of);
 // Double boxes made on demand (`box_of(i)` called twice each: once to see whether every box is
-// float-exact, once into the references): the same tree as the array overload builds.
-BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of);
+// float-exact, once into the references): the same tree as the array overload builds. With
+// `leaves_of_up_to` > 0, every range of that many primitives or fewer is a leaf, the SAH not
+// asked: a tree made to be quantized (quantize_bvh splits its leaves), a quarter of the nodes
+// where the SAH would split separate boxes down to leaves of one.
+BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of, uint32_t leaves_of_up_to = 0);
 
 // slab_hit on two sibling nodes at once: bit-for-bit the scalar test's answers (the same
 // double operations, one child per SSE2 lane; MINPD/MAXPD return their second operand on a

@@ -142,6 +142,8 @@ inline constexpr std::size_t kMaxObjectsWithoutBvh = kBvhMaxLeafSize;
 // 4M spheres at 439 MB against 403, past that scene's 100 bytes a sphere; placements peak in
 // evaluation, not in the build (docs/performance.md, "The quantized top level").
 inline constexpr std::size_t kQuantizedTopLevelFrom = std::size_t{1} << 20;
+// The binary tree a quantized top level is made from ends in leaves of up to this many.
+inline constexpr uint32_t kQuantizedInputLeaves = 4;
 
 // The transmissive surfaces a shadow ray crosses, in no particular order (see shadow_crossings).
 struct ShadowCrossings {

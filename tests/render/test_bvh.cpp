@@ -239,6 +239,39 @@ TEST_CASE("one thread and several build the same tree, bit for bit", "[bvh]") {
   CHECK(same);
 }
 
+TEST_CASE("a tree built for the quantizer ends in leaves of up to N, the SAH not asked", "[bvh]") {
+  // Separate boxes: the SAH splits them down to leaves of one; with leaves_of_up_to = 4 every
+  // range of four or fewer is one leaf (about a quarter of the nodes), each box still once.
+  std::mt19937_64 rng(5);
+  const int n = 50'000;
+  std::vector<AABB> boxes;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 c = random_point(rng, 100.0);
+    boxes.push_back(AABB{c - Vec3(0.01), c + Vec3(0.01)});
+  }
+  auto box_of = [&](std::size_t i) { return boxes[i]; };
+  const BVH sah = build_bvh(n, box_of), four = build_bvh(n, box_of, 4);
+  std::vector<int> seen(n, 0);
+  std::size_t largest = 0;
+  bool interior_large = true;  // every interior node holds more than four
+  std::vector<uint32_t> under(four.nodes.size(), 0);
+  for (std::size_t k = four.nodes.size(); k-- > 0;) {
+    const BVHNode& node = four.nodes[k];
+    if (node.count > 0) {
+      under[k] = node.count;
+      largest = std::max<std::size_t>(largest, node.count);
+      for (uint32_t i = 0; i < node.count; ++i) ++seen[four.order[node.offset + i]];
+    } else {
+      under[k] = under[k + 1] + under[node.offset];
+      interior_large = interior_large && under[k] > 4;
+    }
+  }
+  CHECK(std::count(seen.begin(), seen.end(), 1) == n);
+  CHECK(largest <= 4);
+  CHECK(interior_large);
+  CHECK(four.nodes.size() < sah.nodes.size() / 2);
+}
+
 TEST_CASE("float boxes build the same tree as the same boxes in double", "[bvh]") {
   // Mesh triangles pass float boxes (FloatBox, 28-byte builder references); boxes given as
   // AABB take the compact path too, rounded outwards, when every rounded box is finite, else
