@@ -145,11 +145,11 @@ struct Builder {
   std::vector<PrimRef>& refs;
   // Written at each leaf, from the references it takes (sized before the build).
   std::vector<uint32_t>& order;
-  // Whether more than one thread may build: with one, building a subtree aside and splicing
-  // it only copies (the same tree either way).
   // Ranges of at most this many references are leaves (build_bvh's leaves_of_up_to; 0: the
   // SAH decides).
   uint32_t leaves_of_up_to = 0;
+  // Whether more than one thread may build: with one, building a subtree aside and splicing
+  // it only copies (the same tree either way).
   bool parallel = tbb::this_task_arena::max_concurrency() > 1 &&
                   tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1;
 
@@ -410,7 +410,7 @@ BVH build_from(std::vector<PrimRef> refs, uint32_t leaves_of_up_to = 0) {
   bvh.nodes.reserve(2 * refs.size());
   bvh.order.resize(refs.size());
   Builder<PrimRef> builder{refs, bvh.order};
-  builder.leaves_of_up_to = leaves_of_up_to;
+  builder.leaves_of_up_to = std::min<uint32_t>(leaves_of_up_to, kBvhMaxLeafCount);  // BVHNode::count's range
   builder.build(0, static_cast<uint32_t>(refs.size()), 0, bvh.nodes);
   const std::size_t count = refs.size();
   std::vector<PrimRef>().swap(refs);

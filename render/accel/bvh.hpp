@@ -63,7 +63,7 @@ BVH build_bvh(std::size_t count, const std::function<FloatBox(std::size_t)>& box
 // Double boxes made on demand (`box_of(i)` called twice each: once to see whether every box is
 // float-exact, once into the references): the same tree as the array overload builds. With
 // `leaves_of_up_to` > 0, every range of that many primitives or fewer is a leaf, the SAH not
-// asked: a tree made to be quantized (quantize_bvh splits its leaves), a quarter of the nodes
+// asked: a tree made to be quantized (quantize_bvh splits its leaves), a third of the nodes
 // where the SAH would split separate boxes down to leaves of one.
 BVH build_bvh(std::size_t count, const std::function<AABB(std::size_t)>& box_of, uint32_t leaves_of_up_to = 0);
 

@@ -209,7 +209,7 @@ void World::build_bvh() {
   auto box_of = [&](std::size_t i) { return world_bounds(instances_[i]); };
   if (bounded_count_ >= quantized_from_ && (quantize_any_kind_ || mostly_placements())) {
     // The binary tree is only the quantizer's input: leaves of up to four (which it splits)
-    // halve its nodes. Profile finding (RSS trace, a million placements): the binary tree's
+    // leave a third of its nodes. Profile finding (RSS trace, a million placements): the binary tree's
     // two 32-byte nodes a placement, held beside the world, were the whole render's peak.
     bvh_ = render::build_bvh(bounded_count_, box_of, kQuantizedInputLeaves);
     quantized_ = quantize_bvh(bvh_, [&](uint32_t i) { return box_of(i); });

@@ -241,7 +241,7 @@ TEST_CASE("one thread and several build the same tree, bit for bit", "[bvh]") {
 
 TEST_CASE("a tree built for the quantizer ends in leaves of up to N, the SAH not asked", "[bvh]") {
   // Separate boxes: the SAH splits them down to leaves of one; with leaves_of_up_to = 4 every
-  // range of four or fewer is one leaf (about a quarter of the nodes), each box still once.
+  // range of four or fewer is one leaf (about a third of the nodes), each box still once.
   std::mt19937_64 rng(5);
   const int n = 50'000;
   std::vector<AABB> boxes;
