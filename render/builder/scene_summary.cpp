@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <fmt/format.h>
 
@@ -56,67 +57,10 @@ const char* light_kind(LightKind k) {
   return "light";
 }
 
-struct Walker {
-  const SceneDesc& scene;
-  SceneSummary& out;
-  std::vector<std::pair<bool, std::pair<Vec3, Vec3>>> shape_box;  // cached per shape
+// Each shape's object-space box (shape_bounds), by shape index: first false when unbounded.
+using ShapeBoxes = std::vector<std::pair<bool, std::pair<Vec3, Vec3>>>;
 
-  // Iterative: groups may nest as deep as macro recursion goes (far past the C++ stack).
-  void walk(NodeId root, const Mat4& root_transform) {
-    std::vector<std::pair<NodeId, Mat4>> todo{{root, root_transform}};
-    while (!todo.empty()) {
-      auto [id, m] = todo.back();
-      todo.pop_back();
-      visit(id, m, todo);
-    }
-  }
-
-  void visit(NodeId id, const Mat4& m, std::vector<std::pair<NodeId, Mat4>>& todo) {
-    ++out.instances;
-    const Node& n = scene.nodes[id];
-    switch (n.kind) {
-      case NodeKind::Shape: {
-        const ShapeDesc& s = scene.shapes[n.index];
-        ++out.shapes[std::string(shape_name(s.geometry))];
-        if (auto* mesh = shape_if<MeshRef>(s.geometry))
-          out.triangles += scene.meshes[mesh->mesh]->indices.size() / 3;
-        auto& [bounded, box] = shape_box[n.index];
-        if (!bounded) {
-          out.unbounded = out.unbounded || s.geometry.holds<Plane>();
-          return;
-        }
-        for (int c = 0; c < 8; ++c) {
-          Vec3 corner((c & 1) ? box.second.x : box.first.x, (c & 2) ? box.second.y : box.first.y,
-                      (c & 4) ? box.second.z : box.first.z);
-          Vec3 w = Vec3(m * glm::dvec4(corner, 1.0));
-          if (!out.has_bounds) {
-            out.bounds_min = out.bounds_max = w;
-            out.has_bounds = true;
-          }
-          out.bounds_min = glm::min(out.bounds_min, w);
-          out.bounds_max = glm::max(out.bounds_max, w);
-        }
-        return;
-      }
-      case NodeKind::Light:
-        ++out.lights[light_kind(scene.lights[n.index].kind)];
-        return;
-      case NodeKind::Group:
-        for (const Child& c : scene.groups[n.index].children) todo.emplace_back(c.node, m * c.transform);
-        return;
-      case NodeKind::Csg:
-        // Counted by its shapes (a loose bound: a difference's holes and an intersection's
-        // cuts do not shrink it).
-        for (const Child& c : scene.csgs[n.index].children) todo.emplace_back(c.node, m * c.transform);
-        return;
-    }
-  }
-};
-
-// What one placement of a group or CSG block adds to the summary, in its own space: its
-// members' counts through every level, and the box of its members' boxes (each member's box's
-// corners under its transform). Made once per group: a group placed a million times is
-// counted once, and each placement adds these totals.
+// Placed instances summed up: the counts and the world-space box of what was added.
 struct Totals {
   std::map<std::string, std::size_t> shapes, lights;
   std::size_t instances = 0, triangles = 0;
@@ -136,7 +80,7 @@ struct Totals {
       extend(Vec3(m * glm::dvec4((c & 1) ? box_hi.x : box_lo.x, (c & 2) ? box_hi.y : box_lo.y,
                                  (c & 4) ? box_hi.z : box_lo.z, 1.0)));
   }
-  // One placement of `t` under `m`.
+  // One placement under `m` of what `t` sums (its box's corners under m).
   void add(const Totals& t, const Mat4& m) {
     for (const auto& [k, n] : t.shapes) shapes[k] += n;
     for (const auto& [k, n] : t.lights) lights[k] += n;
@@ -147,44 +91,71 @@ struct Totals {
   }
 };
 
-// The totals of every group and CSG block reachable from the roots, children first (an
-// explicit stack: groups nest as deep as macro recursion goes).
+// One placed shape or light (node `n`) under `m`.
+void add_leaf(const SceneDesc& scene, const ShapeBoxes& boxes, const Node& n, const Mat4& m, Totals& out) {
+  ++out.instances;
+  if (n.kind == NodeKind::Light) {
+    ++out.lights[light_kind(scene.lights[n.index].kind)];
+    return;
+  }
+  const ShapeDesc& s = scene.shapes[n.index];
+  ++out.shapes[std::string(shape_name(s.geometry))];
+  if (auto* mesh = shape_if<MeshRef>(s.geometry)) out.triangles += scene.meshes[mesh->mesh]->indices.size() / 3;
+  const auto& [bounded, box] = boxes[n.index];
+  if (bounded)
+    out.extend_box(m, box.first, box.second);
+  else
+    out.unbounded = out.unbounded || s.geometry.holds<Plane>();
+}
+
+const std::vector<Child>& members(const SceneDesc& scene, const Node& n) {
+  return n.kind == NodeKind::Group ? scene.groups[n.index].children : scene.csgs[n.index].children;
+}
+
+bool is_leaf(const Node& n) { return n.kind == NodeKind::Shape || n.kind == NodeKind::Light; }
+
+// Every placed instance visited, its transform composed through the groups above it: exact
+// world-space bounds. Iterative: groups may nest as deep as macro recursion goes (far past the
+// C++ stack).
+void walk(const SceneDesc& scene, const ShapeBoxes& boxes, NodeId root, const Mat4& root_transform, Totals& out) {
+  std::vector<std::pair<NodeId, Mat4>> todo{{root, root_transform}};
+  while (!todo.empty()) {
+    auto [id, m] = todo.back();
+    todo.pop_back();
+    const Node& n = scene.nodes[id];
+    if (is_leaf(n)) {
+      add_leaf(scene, boxes, n, m, out);
+      continue;
+    }
+    ++out.instances;
+    // A CSG block is counted by its shapes (a loose bound: a difference's holes and an
+    // intersection's cuts do not shrink it).
+    for (const Child& c : members(scene, n)) todo.emplace_back(c.node, m * c.transform);
+  }
+}
+
+// The totals of one placement of each group and CSG block, in its own space (the box of its
+// members' boxes under their transforms), made once: a group placed a million times is summed
+// once, and each placement adds its totals under its transform.
 class GroupTotals {
  public:
-  GroupTotals(const SceneDesc& scene, const std::vector<std::pair<bool, std::pair<Vec3, Vec3>>>& shape_box)
-      : scene_(scene), shape_box_(shape_box) {}
+  GroupTotals(const SceneDesc& scene, const ShapeBoxes& boxes) : scene_(scene), boxes_(boxes) {}
 
   // One placement of node `id` under `m`, added to `out`.
-  void add_node(NodeId id, const Mat4& m, Totals& out) {
+  void add(NodeId id, const Mat4& m, Totals& out) {
     const Node& n = scene_.nodes[id];
-    switch (n.kind) {
-      case NodeKind::Shape: {
-        const ShapeDesc& s = scene_.shapes[n.index];
-        ++out.instances;
-        ++out.shapes[std::string(shape_name(s.geometry))];
-        if (auto* mesh = shape_if<MeshRef>(s.geometry)) out.triangles += scene_.meshes[mesh->mesh]->indices.size() / 3;
-        const auto& [bounded, box] = shape_box_[n.index];
-        if (bounded)
-          out.extend_box(m, box.first, box.second);
-        else
-          out.unbounded = out.unbounded || s.geometry.holds<Plane>();
-        return;
-      }
-      case NodeKind::Light:
-        ++out.instances;
-        ++out.lights[light_kind(scene_.lights[n.index].kind)];
-        return;
-      case NodeKind::Group:
-      case NodeKind::Csg:
-        out.add(of(id), m);
-        return;
-    }
+    if (is_leaf(n))
+      add_leaf(scene_, boxes_, n, m, out);
+    else
+      out.add(of(id), m);
   }
 
+ private:
+  // Post-order over the groups below `group` (an explicit stack): a group's totals are made
+  // once its member groups' are. A member already open on the stack would be a cycle, which
+  // the evaluator cannot make (a group holds only what existed before it); it adds nothing.
   const Totals& of(NodeId group) {
     if (auto it = done_.find(group); it != done_.end()) return it->second;
-    // Post-order over the groups below `group`: a group's totals are made once its member
-    // groups' are.
     std::vector<NodeId> todo{group};
     while (!todo.empty()) {
       const NodeId id = todo.back();
@@ -192,33 +163,28 @@ class GroupTotals {
         todo.pop_back();
         continue;
       }
+      const bool first_visit = open_.insert(id).second;
       bool ready = true;
-      for (const Child& c : children(id)) {
-        const NodeKind k = scene_.nodes[c.node].kind;
-        if ((k == NodeKind::Group || k == NodeKind::Csg) && !done_.count(c.node)) {
+      for (const Child& c : members(scene_, scene_.nodes[id]))
+        if (first_visit && !is_leaf(scene_.nodes[c.node]) && !done_.count(c.node) && !open_.count(c.node)) {
           todo.push_back(c.node);
           ready = false;
         }
-      }
       if (!ready) continue;
       Totals t;
       t.instances = 1;  // the group itself, as the walk counts it
-      for (const Child& c : children(id)) add_node(c.node, c.transform, t);
+      for (const Child& c : members(scene_, scene_.nodes[id]))
+        if (is_leaf(scene_.nodes[c.node]) || done_.count(c.node)) add(c.node, c.transform, t);
       done_.emplace(id, std::move(t));
       todo.pop_back();
     }
     return done_.at(group);
   }
 
- private:
-  const std::vector<Child>& children(NodeId id) const {
-    const Node& n = scene_.nodes[id];
-    return n.kind == NodeKind::Group ? scene_.groups[n.index].children : scene_.csgs[n.index].children;
-  }
-
   const SceneDesc& scene_;
-  const std::vector<std::pair<bool, std::pair<Vec3, Vec3>>>& shape_box_;
+  const ShapeBoxes& boxes_;
   std::unordered_map<NodeId, Totals> done_;
+  std::unordered_set<NodeId> open_;
 };
 
 std::string num(double x) {
@@ -237,23 +203,23 @@ SceneSummary summarize(const SceneDesc& scene, std::size_t exact_walk_limit) {
   s.textures = scene.textures.size();
   s.meshes = scene.meshes.size();
   s.groups = scene.groups.size();
-  Walker w{scene, s, {}};
-  w.shape_box.resize(scene.shapes.size());
+  ShapeBoxes boxes(scene.shapes.size());
   for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
     Vec3 lo(0.0), hi(0.0);
     bool b = shape_bounds(scene, scene.shapes[i], lo, hi);
-    w.shape_box[i] = {b, {lo, hi}};
+    boxes[i] = {b, {lo, hi}};
   }
   // Every placement walked shape by shape bounds the scene exactly; past exact_walk_limit
   // (groups placed many times: a million placements of a 64-sphere group were 67M visits and
   // 4 s, where rendering took 1.5) the counts come from each group's totals, made once, and
   // the bounds from each placed group's own box (looser under rotations: print_summary says so).
-  GroupTotals groups(scene, w.shape_box);
+  GroupTotals groups(scene, boxes);
   Totals all;
-  for (const Child& c : scene.roots) groups.add_node(c.node, c.transform, all);
-  if (all.instances <= exact_walk_limit) {
-    for (const Child& c : scene.roots) w.walk(c.node, c.transform);
-    return s;
+  for (const Child& c : scene.roots) groups.add(c.node, c.transform, all);
+  s.bounds_of_group_boxes = all.instances > exact_walk_limit;
+  if (!s.bounds_of_group_boxes) {
+    all = Totals{};
+    for (const Child& c : scene.roots) walk(scene, boxes, c.node, c.transform, all);
   }
   s.shapes = std::move(all.shapes);
   s.lights = std::move(all.lights);
@@ -263,7 +229,6 @@ SceneSummary summarize(const SceneDesc& scene, std::size_t exact_walk_limit) {
   s.has_bounds = all.has_box;
   s.bounds_min = all.lo;
   s.bounds_max = all.hi;
-  s.bounds_of_group_boxes = true;
   return s;
 }
 
