@@ -141,6 +141,9 @@ class GroupTotals {
  public:
   GroupTotals(const SceneDesc& scene, const ShapeBoxes& boxes) : scene_(scene), boxes_(boxes) {}
 
+  // The instances one placement of node `id` holds (itself and, through groups, its members).
+  std::size_t instances(NodeId id) { return is_leaf(scene_.nodes[id]) ? 1 : of(id).instances; }
+
   // One placement of node `id` under `m`, added to `out`.
   void add(NodeId id, const Mat4& m, Totals& out) {
     const Node& n = scene_.nodes[id];
@@ -213,13 +216,18 @@ SceneSummary summarize(const SceneDesc& scene, std::size_t exact_walk_limit) {
   // (groups placed many times: a million placements of a 64-sphere group were 67M visits and
   // 4 s, where rendering took 1.5) the counts come from each group's totals, made once, and
   // the bounds from each placed group's own box (looser under rotations: print_summary says so).
+  // The instance count decides first (a placed shape counts once, a group from its totals),
+  // so the roots are summed up by one of the two ways only.
   GroupTotals groups(scene, boxes);
+  std::size_t placed = 0;
+  for (const Child& c : scene.roots) placed += groups.instances(c.node);
+  s.bounds_of_group_boxes = placed > exact_walk_limit;
   Totals all;
-  for (const Child& c : scene.roots) groups.add(c.node, c.transform, all);
-  s.bounds_of_group_boxes = all.instances > exact_walk_limit;
-  if (!s.bounds_of_group_boxes) {
-    all = Totals{};
-    for (const Child& c : scene.roots) walk(scene, boxes, c.node, c.transform, all);
+  for (const Child& c : scene.roots) {
+    if (s.bounds_of_group_boxes)
+      groups.add(c.node, c.transform, all);
+    else
+      walk(scene, boxes, c.node, c.transform, all);
   }
   s.shapes = std::move(all.shapes);
   s.lights = std::move(all.lights);
