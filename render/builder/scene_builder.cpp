@@ -384,9 +384,9 @@ void SceneBuilder::camera(ParamSet& ps) {
   c.view_width = positive(ps, "view_width", ps.number("view_width", c.view_width));
   c.aperture = non_negative(ps, "aperture", ps.number("aperture", c.aperture));
   c.focus_distance = non_negative(ps, "focus_distance", ps.number("focus_distance", c.focus_distance));
-  if (glm::length(c.look_at - c.position) < kMinDirectionLength)
+  if (scaled_length(c.look_at - c.position) < kMinDirectionLength)
     ps.fail_block("camera position and look_at must differ");
-  if (glm::length(glm::cross(glm::normalize(c.look_at - c.position), glm::normalize(c.up))) < kMinDirectionLength)
+  if (glm::length(glm::cross(unit_vector(c.look_at - c.position), unit_vector(c.up))) < kMinDirectionLength)
     ps.fail_block("camera up must not be parallel to the viewing direction");
   c.loc = ps.loc();
   scene_.has_camera = true;
@@ -410,7 +410,7 @@ void SceneBuilder::given_vectors_camera(ParamSet& ps, CameraDesc& c) {
   c.up = direction(ps, "up", ps.vec3("up", c.up));
   c.aperture = non_negative(ps, "aperture", ps.number("aperture", c.aperture));
   c.focus_distance = non_negative(ps, "focus_distance", ps.number("focus_distance", c.focus_distance));
-  const Vec3 r = glm::normalize(c.right), u = glm::normalize(c.up), d = glm::normalize(c.direction);
+  const Vec3 r = unit_vector(c.right), u = unit_vector(c.up), d = unit_vector(c.direction);
   if (glm::length(glm::cross(r, u)) < kMinDirectionLength)
     ps.fail_block("camera right and up must not be parallel: they span the image plane");
   if (std::abs(glm::dot(d, glm::cross(r, u))) < kMinDirectionLength)

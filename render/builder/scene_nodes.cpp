@@ -403,7 +403,7 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
     ps.check_unused(kSpotLightNames);
   } else if (kind == "directional_light") {
     l.kind = LightKind::Directional;
-    l.direction = glm::normalize(direction(ps, "direction", ps.require_vec3("direction")));
+    l.direction = unit_vector(direction(ps, "direction", ps.require_vec3("direction")));
     ps.check_unused(kDirectionalLightNames);
   } else if (kind == "area_light") {
     l.kind = LightKind::Area;

@@ -22,6 +22,30 @@ inline double max_abs_component(const Vec3& v) {
   return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
+// Whether |v|^2 is computed without overflow or underflow (|v| between about 1e-150 and
+// 1e150), where glm::length and glm::normalize are exact to their rounding.
+inline bool squares_in_range(const Vec3& v) {
+  const double len2 = glm::dot(v, v);
+  return len2 > 1e-300 && len2 < 1e300;
+}
+
+// |v| without overflowing or underflowing its squares (glm::length is infinite past about
+// 1e154): outside that range scaled by the largest component first; inside it glm::length's
+// own bits. 0, infinity and NaN come back as they are.
+inline double scaled_length(const Vec3& v) {
+  if (squares_in_range(v)) return glm::length(v);
+  const double m = max_abs_component(v);
+  if (!(m > 0.0) || !std::isfinite(m)) return m;
+  return m * glm::length(v / m);
+}
+
+// v / |v| for any finite non-zero v, however long or short (glm::normalize gives zero or NaN
+// outside the range above: a camera 1e200 units from its look_at saw nothing), with
+// glm::normalize's own bits inside it.
+inline Vec3 unit_vector(const Vec3& v) {
+  return squares_in_range(v) ? glm::normalize(v) : glm::normalize(v / max_abs_component(v));
+}
+
 // Higham's gamma(n) = n u / (1 - n u), u = 2^-53: the relative error bound of a result of n
 // rounded double operations (pbrt-v4 section 6.8).
 constexpr double error_gamma(int n) {

@@ -32,7 +32,7 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
   inv_height_ = 1.0 / std::max(1, height);
   angle_ = desc.fov * std::numbers::pi / 180.0;
   vertical_angle_ = desc.vertical_fov * std::numbers::pi / 180.0;
-  if (desc.given_vectors && glm::length(desc.direction) > tol::kTinyLength) {
+  if (desc.given_vectors && scaled_length(desc.direction) > tol::kTinyLength) {
     given_vectors(desc);
     pov_direction_ = desc.direction;
     pov_right_ = desc.right;
@@ -41,8 +41,10 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
     return;
   }
   Vec3 fwd = desc.look_at - desc.position;
-  forward_ = glm::length(fwd) > tol::kTinyLength ? glm::normalize(fwd) : Vec3(0, 0, 1);
-  Vec3 up = glm::length(desc.up) > tol::kTinyLength ? desc.up : Vec3(0, 1, 0);
+  // Lengths and directions scaled first: a camera 1e200 units from its look_at is a camera.
+  forward_ = scaled_length(fwd) > tol::kTinyLength ? unit_vector(fwd) : Vec3(0, 0, 1);
+  Vec3 up = scaled_length(desc.up) > tol::kTinyLength ? desc.up : Vec3(0, 1, 0);
+  if (!squares_in_range(up)) up = unit_vector(up);
   Vec3 right = glm::cross(up, forward_);
   if (glm::length(right) <= tol::kParallelVectors * glm::length(up)) {
     // up parallel to forward: pick any up that is not.
@@ -72,7 +74,7 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
   if (desc.aperture > 0.0) {
     lens_radius_ = desc.aperture / 2.0;
     focus_distance_ = desc.focus_distance > 0.0 ? desc.focus_distance
-                                                 : glm::length(desc.look_at - desc.position);
+                                                 : scaled_length(desc.look_at - desc.position);
     if (!(focus_distance_ > tol::kTinyLength)) lens_radius_ = 0.0;
   }
 }
@@ -85,28 +87,28 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
 // depth of field assumes. The lens spans the unit right and up.
 void Camera::given_vectors(const CameraDesc& desc) {
   half_width_ = half_height_ = 0.5;
-  const double scale = projection_ == Projection::Perspective ? 1.0 / glm::length(desc.direction) : 1.0;
-  forward_ = glm::normalize(desc.direction);
+  const double scale = projection_ == Projection::Perspective ? 1.0 / scaled_length(desc.direction) : 1.0;
+  forward_ = unit_vector(desc.direction);
   right_ = desc.right * scale;
   up_ = desc.up * scale;
-  lens_right_ = glm::length(desc.right) > tol::kTinyLength ? glm::normalize(desc.right) : Vec3(1, 0, 0);
-  lens_up_ = glm::length(desc.up) > tol::kTinyLength ? glm::normalize(desc.up) : Vec3(0, 1, 0);
+  lens_right_ = scaled_length(desc.right) > tol::kTinyLength ? unit_vector(desc.right) : Vec3(1, 0, 0);
+  lens_up_ = scaled_length(desc.up) > tol::kTinyLength ? unit_vector(desc.up) : Vec3(0, 1, 0);
   if (desc.aperture > 0.0) {
     lens_radius_ = desc.aperture / 2.0;
-    focus_distance_ = desc.focus_distance > 0.0 ? desc.focus_distance : glm::length(desc.direction);
+    focus_distance_ = desc.focus_distance > 0.0 ? desc.focus_distance : scaled_length(desc.direction);
   }
 }
 
 // POV-Ray's camera types read their vectors' lengths (an aspect ratio, a scale) and then use
 // them normalised, except the panoramic and spherical cameras, which take them as they are.
 void Camera::set_pov_vectors() {
-  right_length_ = glm::length(pov_right_);
-  up_length_ = glm::length(pov_up_);
+  right_length_ = scaled_length(pov_right_);
+  up_length_ = scaled_length(pov_up_);
   if (!pov_projection(projection_)) return;
   if (projection_ != Projection::Panoramic && projection_ != Projection::Spherical) {
     if (right_length_ > tol::kTinyLength) pov_right_ /= right_length_;
     if (up_length_ > tol::kTinyLength) pov_up_ /= up_length_;
-    if (glm::length(pov_direction_) > tol::kTinyLength) pov_direction_ = glm::normalize(pov_direction_);
+    if (scaled_length(pov_direction_) > tol::kTinyLength) pov_direction_ = unit_vector(pov_direction_);
   }
 }
 

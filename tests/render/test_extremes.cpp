@@ -9,6 +9,7 @@
 
 #include "render/renderer.hpp"
 #include "render/builder/scene_builder.hpp"
+#include "render/sample/camera.hpp"
 #include "scene_fixture.hpp"
 
 using namespace rts::render;
@@ -230,4 +231,28 @@ TEST_CASE("the scene builder rejects degenerate shapes and cameras with located 
     q.add("radius", 1e8, at(10, 10));
     CHECK_NOTHROW(b.shape("sphere", q));
   }
+}
+
+TEST_CASE("a camera far past the squares' range keeps its direction", "[extremes]") {
+  // |look_at - position|^2 overflows past about 1e154: glm::normalize then gave a zero
+  // forward vector (rays without a direction) and the builder called up parallel to it.
+  for (double d : {1e200, 1e-200}) {
+    CAPTURE(d);
+    CameraDesc desc;
+    desc.position = Vec3(0, 0, -d);
+    desc.look_at = Vec3(0, 0, 0);
+    desc.up = Vec3(0, d, 0);
+    Camera camera(desc, 64, 48);
+    const Ray centre = camera.generate(32, 24, glm::dvec2(0.5));
+    CHECK(centre.direction.x == Approx(0.0).margin(1e-12));
+    CHECK(centre.direction.y == Approx(0.0).margin(1e-12));
+    CHECK(centre.direction.z == Approx(1.0));
+    const Ray top = camera.generate(32, 0, glm::dvec2(0.5));
+    CHECK(top.direction.y > 0.1);  // up is still up
+  }
+  SceneBuilder b;
+  ParamSet p("camera", at(2));
+  p.add("position", Vec3(0, 0, -1e200), at(2, 10));
+  p.add("look_at", Vec3(0), at(2, 40));
+  CHECK(scene_error([&] { b.camera(p); }) == "(no error)");
 }
