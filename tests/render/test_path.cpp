@@ -417,6 +417,40 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
     place(s, add_shape(s, Quad{Vec3(-0.5, 1, -0.3), Vec3(1.0, 0, 0), Vec3(0, 0, 0.6)}, add_material(s, lamp)));
     check_within_noise(render_path(s, 8, 16), a * 3.0 * rect_form_factor(0.5, 0.3, 1.0));
   }
+  SECTION("a ceiling lamp seen at grazing emission angles from the wall below it: L = a / pi * the irradiance integral") {
+    // The Cornell box's back wall just under the ceiling, lit by a lamp flush with it (the
+    // strip where Cycles 3.4's direct light is 1-16% darker: docs/path-tracing.md): each point
+    // of the lamp is seen within a few degrees of its plane. Expected: the irradiance
+    // integral over the lamp by the midpoint rule (400 x 400, converged far below the noise).
+    const double le = 5.0;
+    for (double depth : {0.01, 0.05, 0.15}) {
+      CAPTURE(depth);
+      SceneDesc s;
+      s.has_camera = true;
+      s.camera.projection = Projection::Orthographic;
+      s.camera.view_width = 1e-7;  // (nearly) one point of the wall, `depth` below the ceiling
+      s.camera.position = Vec3(0.1, 2 - depth, 0.5);
+      s.camera.look_at = Vec3(0.1, 2 - depth, 1);
+      s.camera.up = Vec3(0, 1, 0);
+      place(s, add_shape(s, Quad{Vec3(-1, 0, 1), Vec3(2, 0, 0), Vec3(0, 2, 0)}, add_material(s, lambert(a))));
+      MaterialDesc lamp = lambert(0.0);
+      lamp.diffuse = 0;
+      lamp.emission = Color(le);
+      place(s, add_shape(s, Quad{Vec3(-0.25, 2, -0.2), Vec3(0.5, 0, 0), Vec3(0, 0, 0.4)}, add_material(s, lamp)));
+      constexpr int kSteps = 400;
+      const Vec3 p(0.1, 2 - depth, 1);
+      double irradiance = 0;
+      for (int i = 0; i < kSteps; ++i)
+        for (int j = 0; j < kSteps; ++j) {
+          const Vec3 q(-0.25 + (i + 0.5) * 0.5 / kSteps, 2, -0.2 + (j + 0.5) * 0.4 / kSteps);
+          const Vec3 d = q - p;
+          const double r2 = glm::dot(d, d);
+          // cos at the wall (normal -z) times cos at the lamp (normal -y), over r^2.
+          irradiance += (-d.z) * d.y / (r2 * r2) * (0.5 / kSteps) * (0.4 / kSteps);
+        }
+      check_within_noise(render_path(s, 4, 256), a / std::numbers::pi * le * irradiance);
+    }
+  }
   SECTION("a textured emissive rectangle: NEE reads the texture at each sampled point") {
     // A checker of radiance 1 and 5 whose cells meet under the lit point: each quarter of the
     // rectangle is a quarter of its form factor, so L = a 3 F, as for a plain Le of 3.
