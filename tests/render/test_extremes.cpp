@@ -256,3 +256,43 @@ TEST_CASE("a camera far past the squares' range keeps its direction", "[extremes
   p.add("look_at", Vec3(0), at(2, 40));
   CHECK(scene_error([&] { b.camera(p); }) == "(no error)");
 }
+
+TEST_CASE("a scene scaled by up to 1e150 renders the unit scene's image", "[extremes]") {
+  // Every square the tests take (|oc|^2, slab products, edge functions) stays finite up to
+  // about 1e154: the same plane, sphere, box, light and camera, scaled, must give the same
+  // picture (the point light has no falloff in Whitted mode, so its intensity needs no scale).
+  auto scene = [](double k) {
+    SceneDesc s;
+    s.settings.width = 32;
+    s.settings.height = 24;
+    s.settings.samples = 1;
+    s.has_camera = true;
+    s.camera.position = Vec3(0, 1, -3) * k;
+    s.camera.look_at = Vec3(0);
+    MaterialDesc red;
+    red.color = Color(1, 0.2, 0.2);
+    red.specular = 0.5;
+    red.reflect = Color(0.3);
+    MaterialDesc grey;
+    grey.color = Color(0.8);
+    place(s, add_shape(s, Plane{Vec3(0, 1, 0), -k}, add_material(s, grey)));
+    place(s, add_shape(s, Sphere{Vec3(0), k}, add_material(s, red)));
+    place(s, add_shape(s, Box{Vec3(1.5, -1, -0.5) * k, Vec3(2.5, 0, 0.5) * k}, add_material(s, grey)));
+    LightDesc l;
+    l.position = Vec3(-2, 4, -3) * k;
+    place(s, add_light(s, l));
+    return s;
+  };
+  RenderOptions o;
+  o.threads = 2;
+  const RenderResult unit = render(scene(1.0), o);
+  for (double k : {1e50, 1e100, 1e150}) {
+    CAPTURE(k);
+    const RenderResult scaled = render(scene(k), o);
+    REQUIRE(scaled.color.rgb.size() == unit.color.rgb.size());
+    double worst = 0;
+    for (std::size_t i = 0; i < unit.color.rgb.size(); ++i)
+      worst = std::max(worst, std::abs(static_cast<double>(scaled.color.rgb[i]) - unit.color.rgb[i]));
+    CHECK(worst < 1e-4);  // radiance ~0.1-1: the same picture up to the float image's rounding
+  }
+}
