@@ -1,5 +1,6 @@
 #include "runtime/scene_warnings.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -132,6 +133,33 @@ void camera_inside(const EvalResult& result, const SourceManager& sources, std::
   out.push_back(std::move(d));
 }
 
+// Intersection tests square distances: past about 1e154 units those overflow and below
+// 1e-154 they underflow, and hits are lost without any error. Every shape gives the unit
+// scene's picture scaled by 1e-150 to 1e150 (tests/render/test_extremes.cpp: a camera up to
+// 7e150 from the origin); a camera past 1e152, or looking across less than 1e-152, says so.
+constexpr double kLargestScale = 1e152, kSmallestScale = 1e-152;
+
+double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+void camera_scale(const render::SceneDesc& scene, const SourceManager& sources, std::vector<Diagnostic>& out) {
+  const render::CameraDesc& c = scene.camera;
+  const double far = std::max(max_abs(c.position), c.given_vectors ? 0.0 : max_abs(c.look_at));
+  const double view = c.given_vectors ? kLargestScale : max_abs(c.look_at - c.position);
+  std::string message;
+  if (far > kLargestScale && std::isfinite(far))
+    message = fmt::format("the camera is {:.3g} units from the origin, past the 1e152 within which rts renders "
+                          "exactly (squared distances overflow past about 1e154): objects may be missing; model "
+                          "the scene smaller",
+                          far);
+  else if (view < kSmallestScale && view > 0.0)
+    message = fmt::format("the camera looks across {:.3g} units, below the 1e-152 within which rts renders exactly "
+                          "(squared distances underflow below about 1e-154): objects may be missing; model the "
+                          "scene larger",
+                          view);
+  if (message.empty()) return;
+  out.push_back({Severity::Warning, locate(sources, c.loc), std::move(message), {}});
+}
+
 }  // namespace
 
 std::vector<Diagnostic> scene_warnings(const EvalResult& result, const SourceManager& sources,
@@ -151,6 +179,7 @@ std::vector<Diagnostic> scene_warnings(const EvalResult& result, const SourceMan
     out.push_back({Severity::Warning, whole_file,
                    "the scene places no lights: objects show only their ambient light and emission", {}});
   if (result.world_shapes > 0) camera_inside(result, sources, out);
+  if (result.scene.has_camera) camera_scale(result.scene, sources, out);
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "render/geometry/shapes/shape_kinds.hpp"
+#include "render/geometry/transform_inverse.hpp"
 #include "render/geometry/tolerances.hpp"
 
 namespace rts::render {
@@ -22,9 +23,7 @@ void check_transform(const Mat4& m, const SourceRef& loc) {
     for (int r = 0; r < 4; ++r)
       if (!std::isfinite(m[c][r]))
         throw RenderError(loc, "transform is not finite (a scale or translation too large?)");
-  double det = glm::determinant(glm::dmat3(m));
-  if (!std::isfinite(det)) throw RenderError(loc, "transform is not finite (a scale too large?)");
-  if (!(std::abs(det) > tol::kSingularDeterminant)) throw RenderError(loc, "transform is singular (scale 0?)");
+  if (!invertible_transform(m)) throw RenderError(loc, "transform is singular (scale 0?)");
 }
 
 // `instanced`: by group index, the groups placed as FlatGroups instead of copied (may be

@@ -1,3 +1,4 @@
+#include "render/geometry/transform_inverse.hpp"
 #include "render/accel/world.hpp"
 
 #include <algorithm>
@@ -25,7 +26,7 @@ bool is_identity(const Mat4& m) { return m == Mat4(1.0); }
 }  // namespace
 
 uint32_t World::add_transform(const Mat4& to_world) {
-  const Mat4 to_object = glm::inverse(to_world);
+  const Mat4 to_object = inverse_transform(to_world);
   InstanceLinear linear{glm::dmat3(to_world), glm::dmat3(to_object), glm::transpose(glm::dmat3(to_object))};
   // Shared by bits: two instances share a pair only when every double is the same.
   InstanceTransform xf;
@@ -73,8 +74,7 @@ bool World::add_shape_instance(const SceneDesc& scene, uint32_t shape_index, con
     has_transmissive_ = has_transmissive_ || inst.transmissive;
   }
   if (!is_identity(to_world)) {
-    double det = glm::determinant(glm::dmat3(to_world));
-    if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) return false;
+    if (!invertible_transform(to_world)) return false;
     inst.transform = add_transform(to_world);
   }
   AABB object_bounds;

@@ -6,6 +6,7 @@
 // own object point (SurfaceHit::leaf_point), so shading sees the same records as for a copy.
 #include <cmath>
 
+#include "render/geometry/transform_inverse.hpp"
 #include "render/accel/hit_transform.hpp"
 #include "render/accel/world.hpp"
 
@@ -60,9 +61,8 @@ bool World::add_group_instance(uint32_t gi, const Mat4& to_world, Instance& inst
     bounds = group_bounds;
     return true;
   }
-  const double det = glm::determinant(glm::dmat3(to_world));
-  if (!(std::abs(det) > tol::kSingularDeterminant) || !std::isfinite(det)) return false;
-  const glm::dmat4x3 world_map(to_world), object_map(glm::inverse(to_world));
+  if (!invertible_transform(to_world)) return false;
+  const glm::dmat4x3 world_map(to_world), object_map(inverse_transform(to_world));
   GroupLinear linear{glm::dmat3(world_map), glm::dmat3(object_map)};
   // Shared by bits: two placements share a pair only when all 18 doubles are the same.
   GroupTransform xf;

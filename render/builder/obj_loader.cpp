@@ -397,10 +397,16 @@ void load_with_tinyobj(const std::string& path, const std::string& shown, Source
 
 void compute_smooth_normals(MeshData& mesh, bool equal_weights) {
   mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f));
+  // Float cross products overflow for edges past about 1e19 (a mesh 1e30 units wide) and lose
+  // their digits below 1e-19: such a mesh's edges are scaled by a power of two near 1 / its
+  // largest coordinate first (exact, so the normals' directions are the unscaled ones).
+  float big = 0.0f;
+  for (const glm::vec3& p : mesh.positions) big = std::max({big, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  const float scale = big > 0.0f && std::isfinite(big) && !(big > 1e-8f && big < 1e8f) ? std::ldexp(1.0f, -std::ilogb(big)) : 1.0f;
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
     // The cross product's length is twice the area: larger triangles weigh more.
-    glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    glm::vec3 n = glm::cross((mesh.positions[b] - mesh.positions[a]) * scale, (mesh.positions[c] - mesh.positions[a]) * scale);
     if (equal_weights) {
       const float len = glm::length(n);
       if (!(len > kMinNormalLength)) continue;  // a degenerate face has no normal to give

@@ -384,7 +384,9 @@ void SceneBuilder::camera(ParamSet& ps) {
   c.view_width = positive(ps, "view_width", ps.number("view_width", c.view_width));
   c.aperture = non_negative(ps, "aperture", ps.number("aperture", c.aperture));
   c.focus_distance = non_negative(ps, "focus_distance", ps.number("focus_distance", c.focus_distance));
-  if (scaled_length(c.look_at - c.position) < kMinDirectionLength)
+  // Only equal points give no direction: a scene modelled at 1e-13 (or 1e-150) units has a
+  // short view vector, and unit_vector below normalises it without underflow.
+  if (!(scaled_length(c.look_at - c.position) > 0.0))
     ps.fail_block("camera position and look_at must differ");
   if (glm::length(glm::cross(unit_vector(c.look_at - c.position), unit_vector(c.up))) < kMinDirectionLength)
     ps.fail_block("camera up must not be parallel to the viewing direction");

@@ -151,10 +151,23 @@ bool vertex_material(ParamSet& ps, std::size_t vertex_count, MeshData& mesh) {
 // Zero area by the renderer's own test (the angle between the edges below
 // tol::kTriangleDeterminant): such triangles are never hit.
 bool degenerate_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  Vec3 e1 = b - a, e2 = c - a;
-  Vec3 n = glm::cross(e1, e2);
-  double k = tol::kTriangleDeterminant;
-  return !(glm::dot(n, n) > k * k * glm::dot(e1, e1) * glm::dot(e2, e2));
+  // The ray that sees the triangle best runs along its normal.
+  const Vec3 e1 = b - a, e2 = c - a;
+  return !detail::crosses_plane(unit_vector(glm::cross(e1, e2)), e1, e2);
+}
+
+// A mesh keeps its vertices as floats relative to its centre: spans past float's range
+// (3.4e38) would be infinite and spans below its normal numbers (1.2e-38) lose their digits,
+// so the faces silently vanished ("zero area"). A transform has neither limit.
+void check_single_precision_extent(ParamSet& ps, const AABB& box) {
+  if (!box.valid() || !box.finite()) return;
+  const double span = max_abs_component(box.extent());
+  if (span > 1e38 || (span > 0.0 && span < 1e-36))
+    throw SceneError(loc_of(ps, "vertices"),
+                     fmt::format("mesh vertices span {:g} units: meshes are stored in single precision, which "
+                                 "keeps spans from 1e-36 to 1e38; model the mesh near unit size and place it "
+                                 "with a `scale` transform",
+                                 span));
 }
 
 // One warning per mesh: how many faces are skipped and how many vertex normals cannot be
@@ -336,6 +349,7 @@ NodeId SceneBuilder::shape(std::string_view kind, ParamSet& ps) {
       AABB box;
       for (const Vec3& v : vertices) box.extend(v);
       if (box.valid() && box.finite()) mesh->origin = box.centroid();
+      check_single_precision_extent(ps, box);
       for (const Vec3& v : vertices) mesh->positions.emplace_back(v - mesh->origin);
       for (const Vec3& n : normals) mesh->normals.emplace_back(glm::normalize(n));
       for (const Vec3& f : faces)
@@ -382,7 +396,7 @@ NodeId SceneBuilder::light(std::string_view kind, ParamSet& ps) {
   // and an area_light with point_at).
   auto spot_cone = [&] {
     l.point_at = ps.require_vec3("point_at");
-    direction(ps, "point_at", l.point_at - l.position);
+    distinct(ps, "point_at", "position", l.point_at - l.position);
     l.radius = ps.number("radius", l.radius);
     // 90: full intensity over the whole front half-space; 0: none at full intensity, the
     // falloff cone alone (POV-Ray scenes use both).

@@ -92,7 +92,8 @@ inline constexpr double kParallelVectors = 1e-12;
 // when the vector's component along it is below this, so the cross product is well scaled.
 inline constexpr double kReferenceAxisCosine = 0.9;
 
-// An instance transform whose 3x3 determinant is below this (e.g. `scale 0`) cannot be
+// An instance transform whose 3x3 determinant, taken with its entries scaled near 1
+// (render/geometry/transform_inverse.hpp), is below this (e.g. `scale 0`) cannot be
 // inverted: flatten_scene reports it as a located RenderError (World also skips such an
 // instance, as a last guard).
 inline constexpr double kSingularDeterminant = 1e-300;

@@ -238,10 +238,24 @@ double non_negative(ParamSet& ps, std::string_view name, double v) {
   require(ps, name, v >= 0, ">= 0", v);
   return v;
 }
+namespace {
+// Not zero and not NaN, however short: glm::length would round 1e-200 to 0.
+bool nonzero(const Vec3& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > 0.0 && !std::isnan(v.x + v.y + v.z);
+}
+}  // namespace
+
+// Any non-zero length is a direction: a scene modelled at 1e-13 units has edges that short
+// (unit_vector normalises them without underflow).
 Vec3 direction(ParamSet& ps, std::string_view name, Vec3 v) {
-  if (glm::length(v) < kMinDirectionLength)
+  if (!nonzero(v))
     throw SceneError(loc_of(ps, name), fmt::format("property '{}' of {} must be a non-zero vector", name, ps.kind()));
   return v;
+}
+void distinct(ParamSet& ps, std::string_view name, std::string_view other, const Vec3& difference) {
+  if (!nonzero(difference))
+    throw SceneError(loc_of(ps, name),
+                     fmt::format("property '{}' of {} must differ from '{}'", name, ps.kind(), other));
 }
 void non_negative_color(ParamSet& ps, std::string_view name, const Color& c) {
   if (c.r < 0 || c.g < 0 || c.b < 0)

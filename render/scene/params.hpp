@@ -116,12 +116,16 @@ class ParamSet {
 // Checks shared by the builder and the shape descriptors (render/geometry/shapes/): each
 // throws SceneError at the property (or the block when it is missing), e.g. "property 'radius'
 // of sphere must be > 0, got -1", and returns the value it checked.
-inline constexpr double kMinDirectionLength = 1e-12;  // shorter vectors give no direction
+// Unit vectors closer to parallel than this (|a x b|) span no plane, and a point closer to a
+// plane than this (|d . (a x b)|) does not leave it.
+inline constexpr double kMinDirectionLength = 1e-12;
 SourceRef loc_of(ParamSet& ps, std::string_view name);
 void require(ParamSet& ps, std::string_view name, bool ok, std::string_view what, double got);
 double positive(ParamSet& ps, std::string_view name, double v);
 double non_negative(ParamSet& ps, std::string_view name, double v);
 Vec3 direction(ParamSet& ps, std::string_view name, Vec3 v);
+// Two points that must differ (a cylinder's ends): the error names `name` and `other`.
+void distinct(ParamSet& ps, std::string_view name, std::string_view other, const Vec3& difference);
 void non_negative_color(ParamSet& ps, std::string_view name, const Color& c);
 
 // The closest candidate by edit distance, or "" when none is close enough to suggest.

@@ -25,11 +25,13 @@ std::vector<CompiledLight> compile_lights(const std::vector<LightDesc>& world_li
     // brightest finite light instead of infinity (and 0 * inf = NaN further on).
     l.power = glm::min(Rgb(d.color.r, d.color.g, d.color.b) * d.intensity, Rgb(tol::kMaxRadiance));
     l.position = d.position;
-    double dl = glm::length(d.direction);
-    l.direction = dl > tol::kTinyLength ? d.direction / dl : Vec3(0, -1, 0);
-    Vec3 axis = d.point_at - d.position;
-    double al = glm::length(axis);
-    l.spot_axis = al > tol::kTinyLength ? axis / al : Vec3(0, -1, 0);
+    // scaled_length, so a spot 1e-160 from what it points at keeps its axis (glm::length
+    // rounded it to 0); inside the squares' range it is glm::length, bit for bit.
+    const double dl = scaled_length(d.direction);
+    l.direction = dl > 0.0 ? d.direction / dl : Vec3(0, -1, 0);
+    const Vec3 axis = d.point_at - d.position;
+    const double al = scaled_length(axis);
+    l.spot_axis = al > 0.0 ? axis / al : Vec3(0, -1, 0);
     double inner = std::clamp(d.radius, 0.0, 180.0), outer = std::clamp(d.falloff, 0.0, 180.0);
     if (outer < inner) outer = inner;
     l.cos_inner = std::cos(inner * std::numbers::pi / 180.0);

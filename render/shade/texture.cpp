@@ -23,6 +23,7 @@
 
 #include <fmt/format.h>
 
+#include "render/geometry/transform_inverse.hpp"
 #include "render/shade/texture.hpp"
 #include "render/shade/pattern/patterns.hpp"
 
@@ -155,7 +156,7 @@ bool is_known_mapping(const std::string& mapping) {
 
 CompiledTexture::CompiledTexture(const TextureDesc& desc,
                                  std::vector<std::shared_ptr<const Image>> images)
-    : desc_(desc), inverse_(glm::inverse(desc.transform)), images_(std::move(images)) {
+    : desc_(desc), inverse_(inverse_transform(desc.transform)), images_(std::move(images)) {
   const std::size_t wanted = desc_.kind == TextureKind::CubeMap ? 6
                              : desc_.kind == TextureKind::Image || desc_.kind == TextureKind::LatLong ? 1
                                                                                                    : 0;

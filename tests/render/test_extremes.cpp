@@ -6,6 +6,7 @@
 #include <string>
 
 #include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "render/renderer.hpp"
 #include "render/builder/scene_builder.hpp"
@@ -153,9 +154,10 @@ TEST_CASE("singular and non-finite transforms are located render errors", "[extr
   SECTION("one flattened axis") {
     s.roots.push_back(Child{ball, scale(Vec3(1, 0, 1)), at(7, 3)});
   }
-  SECTION("tiny scales whose product underflows") {
-    NodeId g = add_group(s, {Child{ball, scale(Vec3(1e-110)), at(7, 3)}});
-    s.roots.push_back(Child{g, scale(Vec3(1e-110)), at(9, 1)});
+  SECTION("tiny scales whose product underflows to 0") {
+    // (1e-100 twice is 1e-200, a small scale but not a singular one: the scaled scenes below.)
+    NodeId g = add_group(s, {Child{ball, scale(Vec3(1e-200)), at(7, 3)}});
+    s.roots.push_back(Child{g, scale(Vec3(1e-200)), at(9, 1)});
   }
   SECTION("scale 0 on a group holding a light") {
     LightDesc l;
@@ -189,7 +191,7 @@ TEST_CASE("the scene builder rejects degenerate shapes and cameras with located 
     p.add("from", Vec3(1, 2, 3), at(3, 12));
     p.add("to", Vec3(1, 2, 3), at(3, 30));
     p.add("radius", 1.0, at(3, 50));
-    CHECK_THAT(scene_error([&] { b.shape("cylinder", p); }, &where), Catch::Contains("non-zero vector"));
+    CHECK_THAT(scene_error([&] { b.shape("cylinder", p); }, &where), Catch::Contains("'to' of cylinder must differ from 'from'"));
     CHECK(where.line == 3);
     CHECK(where.col == 30);
   }
@@ -257,11 +259,52 @@ TEST_CASE("a camera far past the squares' range keeps its direction", "[extremes
   CHECK(scene_error([&] { b.camera(p); }) == "(no error)");
 }
 
-TEST_CASE("a scene scaled by up to 1e150 renders the unit scene's image", "[extremes]") {
-  // Every square the tests take (|oc|^2, slab products, edge functions) stays finite up to
-  // about 1e154: the same plane, sphere, box, light and camera, scaled, must give the same
-  // picture (the point light has no falloff in Whitted mode, so its intensity needs no scale).
-  auto scene = [](double k) {
+TEST_CASE("the builder takes a scene modelled at 1e-13 or 1e-100 units: only equal points are refused", "[extremes]") {
+  // Lengths were refused below an absolute 1e-12 ("must be a non-zero vector", "position and
+  // look_at must differ"), so a scene in femtometres could not be described at all.
+  for (double k : {1e-13, 1e-100}) {
+    CAPTURE(k);
+    SceneBuilder b;
+    ParamSet cam("camera", at(1));
+    cam.add("position", Vec3(0, 1, -3) * k, at(1, 10));
+    cam.add("look_at", Vec3(0), at(1, 40));
+    CHECK(scene_error([&] { b.camera(cam); }) == "(no error)");
+    ParamSet cyl("cylinder", at(2));
+    cyl.add("from", Vec3(0), at(2, 10));
+    cyl.add("to", Vec3(0, 1, 0) * k, at(2, 30));
+    cyl.add("radius", 0.5 * k, at(2, 50));
+    CHECK(scene_error([&] { b.shape("cylinder", cyl); }) == "(no error)");
+    ParamSet quad("quad", at(3));
+    quad.add("edge_u", Vec3(1, 0, 0) * k, at(3, 10));
+    quad.add("edge_v", Vec3(0, 1, 0) * k, at(3, 30));
+    CHECK(scene_error([&] { b.shape("quad", quad); }) == "(no error)");
+    ParamSet plane("plane", at(4));
+    plane.add("normal", Vec3(0, 2, 0) * k, at(4, 10));
+    CHECK(scene_error([&] { b.shape("plane", plane); }) == "(no error)");
+    ParamSet spot("spot_light", at(5));
+    spot.add("position", Vec3(0, 4, 0) * k, at(5, 10));
+    spot.add("point_at", Vec3(0), at(5, 30));
+    CHECK(scene_error([&] { b.light("spot_light", spot); }) == "(no error)");
+    const SceneDesc& s = b.scene();
+    REQUIRE(s.shapes.size() == 3);
+    REQUIRE(s.shapes[2].geometry.holds<Plane>());
+    CHECK(shape_get<Plane>(s.shapes[2].geometry).normal.y == 1.0);  // normalised without underflow
+  }
+  SceneBuilder b;
+  ParamSet cam("camera", at(1));
+  cam.add("position", Vec3(1e-100), at(1, 10));
+  cam.add("look_at", Vec3(1e-100), at(1, 40));
+  CHECK_THAT(scene_error([&] { b.camera(cam); }), Catch::Contains("position and look_at must differ"));
+}
+
+TEST_CASE("a scene scaled by 1e-150 to 1e150 renders the unit scene's image", "[extremes]") {
+  // Every square the tests take (|oc|^2, slab products, edge functions) stays finite and
+  // normal from about 1e-154 to 1e154; the tests whose terms are cubes or fourth powers (a
+  // triangle's depth, a quad's dual basis, a torus's quartic, a transform's inverse) rescale
+  // by a power of two outside 1e+-30..1e+-90. So the same shapes, light and camera, scaled,
+  // must give the same picture (the point light has no falloff in Whitted mode, so its
+  // intensity needs no scale).
+  auto scene = [](double k, int which) {
     SceneDesc s;
     s.settings.width = 32;
     s.settings.height = 24;
@@ -275,24 +318,51 @@ TEST_CASE("a scene scaled by up to 1e150 renders the unit scene's image", "[extr
     red.reflect = Color(0.3);
     MaterialDesc grey;
     grey.color = Color(0.8);
-    place(s, add_shape(s, Plane{Vec3(0, 1, 0), -k}, add_material(s, grey)));
-    place(s, add_shape(s, Sphere{Vec3(0), k}, add_material(s, red)));
-    place(s, add_shape(s, Box{Vec3(1.5, -1, -0.5) * k, Vec3(2.5, 0, 0.5) * k}, add_material(s, grey)));
+    const MaterialId r = add_material(s, red), g = add_material(s, grey);
+    place(s, add_shape(s, Plane{Vec3(0, 1, 0), -k}, g));
     LightDesc l;
     l.position = Vec3(-2, 4, -3) * k;
     place(s, add_light(s, l));
+    switch (which) {
+      case 0:
+        place(s, add_shape(s, Sphere{Vec3(0), k}, r));
+        place(s, add_shape(s, Box{Vec3(1.5, -1, -0.5) * k, Vec3(2.5, 0, 0.5) * k}, g));
+        break;
+      case 1:
+        place(s, add_shape(s, Triangle{Vec3(-2, -1, 1) * k, Vec3(1, -1, 1.5) * k, Vec3(-0.5, 1.2, 1) * k, {}}, r));
+        place(s, add_shape(s, Quad{Vec3(0.5, -1, 0) * k, Vec3(1.5, 0, 0.4) * k, Vec3(0, 1.4, 0) * k}, g));
+        break;
+      case 2:
+        place(s, add_shape(s, Cylinder{Vec3(-2, -1, 0) * k, Vec3(-1, 0.5, 0.5) * k, 0.4 * k, true}, r));
+        place(s, add_shape(s, Cone{Vec3(0, -1, 0) * k, Vec3(0.5, 0.8, 0) * k, 0.6 * k, 0.1 * k, true}, g));
+        place(s, add_shape(s, Disc{Vec3(1.6, 0, 0.5) * k, Vec3(0, 0.3, -1), 0.7 * k, 0.2 * k}, r));
+        break;
+      default:  // a torus sized by its radii, and one and a sphere sized by a transform
+        place(s, add_shape(s, Torus{0.6 * k, 0.2 * k}, r),
+              glm::translate(Mat4(1.0), Vec3(-1.5, -0.3, 0) * k) * glm::rotate(Mat4(1.0), 1.0, Vec3(1, 0, 0)));
+        place(s, add_shape(s, Torus{0.6, 0.2}, g),
+              glm::translate(Mat4(1.0), Vec3(0.2, 0, 0) * k) * glm::scale(Mat4(1.0), Vec3(k)));
+        place(s, add_shape(s, Sphere{Vec3(0), 1.0}, r),
+              glm::translate(Mat4(1.0), Vec3(1.8, -0.5, 0) * k) * glm::scale(Mat4(1.0), Vec3(0.5, 0.25, 0.5) * k));
+        break;
+    }
     return s;
   };
   RenderOptions o;
   o.threads = 2;
-  const RenderResult unit = render(scene(1.0), o);
-  for (double k : {1e50, 1e100, 1e150}) {
-    CAPTURE(k);
-    const RenderResult scaled = render(scene(k), o);
-    REQUIRE(scaled.color.rgb.size() == unit.color.rgb.size());
-    double worst = 0;
-    for (std::size_t i = 0; i < unit.color.rgb.size(); ++i)
-      worst = std::max(worst, std::abs(static_cast<double>(scaled.color.rgb[i]) - unit.color.rgb[i]));
-    CHECK(worst < 1e-4);  // radiance ~0.1-1: the same picture up to the float image's rounding
+  for (int which = 0; which < 4; ++which) {
+    const RenderResult unit = render(scene(1.0, which), o);
+    double lit = 0;
+    for (float v : unit.color.rgb) lit = std::max(lit, static_cast<double>(v));
+    REQUIRE(lit > 0.3);  // the shapes are in view and lit
+    for (double k : {1e-150, 1e-100, 1e-50, 1e-13, 1e50, 1e100, 1e150}) {
+      INFO("shapes " << which << ", scale 1e" << std::lround(std::log10(k)));
+      const RenderResult scaled = render(scene(k, which), o);
+      REQUIRE(scaled.color.rgb.size() == unit.color.rgb.size());
+      double worst = 0;
+      for (std::size_t i = 0; i < unit.color.rgb.size(); ++i)
+        worst = std::max(worst, std::abs(static_cast<double>(scaled.color.rgb[i]) - unit.color.rgb[i]));
+      CHECK(worst < 1e-4);  // radiance ~0.1-1: the same picture up to the float image's rounding
+    }
   }
 }

@@ -97,3 +97,28 @@ TEST_CASE("smooth normals: by area, or each face's unit normal once (MIT a2)", "
   // A vertex of one face only keeps that face's normal either way.
   CHECK(mesh.normals[2].z == Approx(1.0));
 }
+
+TEST_CASE("smooth normals of a mesh 1e30 or 1e-30 units wide are the unit mesh's", "[obj][extremes]") {
+  // Float cross products of 1e30-long edges overflow (and of 1e-30-long ones lose their
+  // digits): the edges are scaled by a power of two first, so the directions are the same.
+  auto normals = [](float k, bool equal) {
+    MeshData mesh;
+    mesh.positions = {{0, 0, 0}, {4 * k, 0, 0}, {0, 4 * k, 0}, {0, 0, -k}, {k, 0, 0}};
+    mesh.indices = {0, 1, 2, 0, 3, 4};
+    compute_smooth_normals(mesh, equal);
+    return mesh.normals;
+  };
+  for (bool equal : {false, true}) {
+    const auto unit = normals(1.0f, equal);
+    for (float k : {1e30f, 1e-30f}) {
+      CAPTURE(equal, k);
+      const auto scaled = normals(k, equal);
+      REQUIRE(scaled.size() == unit.size());
+      for (std::size_t i = 0; i < unit.size(); ++i) {
+        CHECK(scaled[i].x == Approx(unit[i].x).margin(1e-6));
+        CHECK(scaled[i].y == Approx(unit[i].y).margin(1e-6));
+        CHECK(scaled[i].z == Approx(unit[i].z).margin(1e-6));
+      }
+    }
+  }
+}

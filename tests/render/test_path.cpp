@@ -419,7 +419,7 @@ TEST_CASE("light units: point intensity / d^2, directional irradiance, emitters'
   }
   SECTION("a ceiling lamp seen at grazing emission angles from the wall below it: L = a / pi * the irradiance integral") {
     // The Cornell box's back wall just under the ceiling, lit by a lamp flush with it (the
-    // strip where Cycles 3.4's direct light is 1-16% darker: docs/path-tracing.md): each point
+    // strip where Cycles 3.4's direct light is 0.7-16% darker: docs/path-tracing.md): each point
     // of the lamp is seen within a few degrees of its plane. Expected: the irradiance
     // integral over the lamp by the midpoint rule (400 x 400, converged far below the noise).
     const double le = 5.0;

@@ -77,3 +77,21 @@ TEST_CASE("what the builder skipped and an empty or unlit scene are warnings too
   CHECK(check("camera { position = <0, 0, -5> }\n" + kLit).text.find("places no objects") != std::string::npos);
   CHECK(check("sphere { radius = 1 }\n").text.find("places no lights") != std::string::npos);
 }
+
+TEST_CASE("a camera past the range rts renders exactly is a warning at the camera", "[warnings]") {
+  // Scaled by 1e150 (the camera 3e150 from the origin) the scene renders exactly: no warning.
+  auto scaled = [](const std::string& k) {
+    return "let k = " + k + "\ncamera { position = <0, 1, -3>*k  look_at = <0, 0, 0> }\n" +
+           "point_light { position = <0, 9, 0>*k }\nsphere { radius = k }\n";
+  };
+  CHECK(check(scaled("1e150")).warnings.empty());
+  CHECK(check(scaled("1e-150")).warnings.empty());
+  Checked big = check(scaled("1e160"));
+  REQUIRE(big.warnings.size() == 1);
+  CHECK(big.warnings[0].loc.line() == 2);
+  CHECK(big.text.find("the camera is 3e+160 units from the origin") != std::string::npos);
+  Checked small = check(scaled("1e-160"));
+  REQUIRE(small.warnings.size() == 1);
+  CHECK(small.warnings[0].loc.line() == 2);
+  CHECK(small.text.find("the camera looks across 3e-160 units") != std::string::npos);
+}

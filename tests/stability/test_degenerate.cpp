@@ -91,6 +91,7 @@ TEST_CASE("singular transforms and zero-size area lights are refused, located", 
   check_scene("zero_scale");
   check_scene("underflow_scale");
   check_scene("zero_area_light");
+  check_scene("mesh_beyond_float");
 }
 
 TEST_CASE("max_depth = 1e9 between two mirrors renders, capped with a located warning", "[recursion]") {

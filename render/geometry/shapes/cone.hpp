@@ -27,7 +27,7 @@ struct ShapeTraits<Cone> {
     Cone g;
     g.from = ps.require_vec3("from");
     g.to = ps.require_vec3("to");
-    direction(ps, "to", g.to - g.from);
+    distinct(ps, "to", "from", g.to - g.from);
     g.radius_from = non_negative(ps, "radius_from", ps.require_number("radius_from"));
     g.radius_to = non_negative(ps, "radius_to", ps.number("radius_to", g.radius_to));
     if (g.radius_from == 0 && g.radius_to == 0) ps.fail_block("cone needs a non-zero radius_from or radius_to");

@@ -23,7 +23,7 @@ struct ShapeTraits<Cylinder> {
     Cylinder g;
     g.from = ps.require_vec3("from");
     g.to = ps.require_vec3("to");
-    direction(ps, "to", g.to - g.from);
+    distinct(ps, "to", "from", g.to - g.from);
     g.radius = positive(ps, "radius", ps.require_number("radius"));
     g.capped = ps.boolean("capped", g.capped);
     return g;

@@ -25,7 +25,7 @@ struct ShapeTraits<Disc> {
   static Disc build(ParamSet& ps) {
     Disc g;
     g.center = ps.vec3("center", g.center);
-    g.normal = glm::normalize(direction(ps, "normal", ps.vec3("normal", g.normal)));
+    g.normal = unit_vector(direction(ps, "normal", ps.vec3("normal", g.normal)));
     g.radius = positive(ps, "radius", ps.require_number("radius"));
     g.inner_radius = non_negative(ps, "inner_radius", ps.number("inner_radius", g.inner_radius));
     require(ps, "inner_radius", g.inner_radius < g.radius, "< radius", g.inner_radius);

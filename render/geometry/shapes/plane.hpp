@@ -25,7 +25,7 @@ struct ShapeTraits<Plane> {
   // From the block's parameters (unknown names are checked by the builder afterwards).
   static Plane build(ParamSet& ps) {
     Plane g;
-    g.normal = glm::normalize(direction(ps, "normal", ps.require_vec3("normal")));
+    g.normal = unit_vector(direction(ps, "normal", ps.require_vec3("normal")));
     g.offset = ps.number("offset", g.offset);
     return g;
   }

@@ -32,7 +32,7 @@ struct ShapeTraits<Quad> {
     g.corner = ps.vec3("corner", g.corner);
     g.edge_u = direction(ps, "edge_u", ps.vec3("edge_u", g.edge_u));
     g.edge_v = direction(ps, "edge_v", ps.vec3("edge_v", g.edge_v));
-    if (glm::length(glm::cross(glm::normalize(g.edge_u), glm::normalize(g.edge_v))) < kMinDirectionLength)
+    if (glm::length(glm::cross(unit_vector(g.edge_u), unit_vector(g.edge_v))) < kMinDirectionLength)
       throw SceneError(loc_of(ps, "edge_v"), "quad edge_u and edge_v must not be parallel");
     return g;
   }
@@ -51,17 +51,28 @@ inline AABB bounds(const Quad& q) {
 // built instead of per ray (profile finding, path-traced Cornell box: the quad test was the
 // largest share of the render, three cross products per test). The values are the ones the
 // per-ray test computed, so hits are the same bit for bit.
+//
+// n2 is an edge's length to the fourth power and the duals to the third, which overflow past
+// edges of about 1e77 units and underflow below 1e-77: such a quad's frame is made from its
+// edges scaled by a power of two near 1 / |edge| (`scale`, exact), and the test scales the
+// offset from the corner by it. Inside the range `scale` is 1 and the bits are the old ones.
 struct QuadFrame {
   Vec3 corner, edge_u, edge_v;
-  Vec3 n;        // cross(edge_u, edge_v), not unit length
-  Vec3 dual_u;   // cross(edge_v, n): s = dot(p - corner, dual_u) / n2
-  Vec3 dual_v;   // cross(n, edge_u): t = dot(p - corner, dual_v) / n2
+  Vec3 n;        // cross(edge_u, edge_v) * scale^2, not unit length
+  Vec3 dual_u;   // cross(edge_v, n) * scale^3: s = dot((p - corner) * scale, dual_u) / n2
+  Vec3 dual_v;   // cross(n, edge_u) * scale^3: t = dot((p - corner) * scale, dual_v) / n2
   Vec3 unit_n;   // n / |n|
   double n2 = 0.0, len_n = 0.0;
-  explicit QuadFrame(const Quad& q)
-      : corner(q.corner), edge_u(q.edge_u), edge_v(q.edge_v), n(glm::cross(q.edge_u, q.edge_v)),
-        dual_u(glm::cross(q.edge_v, n)), dual_v(glm::cross(n, q.edge_u)), n2(glm::dot(n, n)),
-        len_n(std::sqrt(n2)) {
+  double scale = 1.0;
+  explicit QuadFrame(const Quad& q) : corner(q.corner), edge_u(q.edge_u), edge_v(q.edge_v) {
+    const double m = std::max(max_abs_component(q.edge_u), max_abs_component(q.edge_v));
+    if (m > 0.0 && std::isfinite(m) && !(m > 1e-60 && m < 1e60)) scale = std::ldexp(1.0, -std::ilogb(m));
+    const Vec3 eu = q.edge_u * scale, ev = q.edge_v * scale;
+    n = glm::cross(eu, ev);
+    dual_u = glm::cross(ev, n);
+    dual_v = glm::cross(n, eu);
+    n2 = glm::dot(n, n);
+    len_n = std::sqrt(n2);
     unit_n = n / len_n;
   }
 };
@@ -75,7 +86,7 @@ inline bool intersect(const QuadFrame& q, const Ray& ray, Interval ray_t, Surfac
   const double t = glm::dot(q.corner - ray.origin, n) / denom;
   if (!ray_t.surrounds(t)) return false;
   const Vec3 p = ray.at(t);
-  const Vec3 d = p - q.corner;
+  const Vec3 d = (p - q.corner) * q.scale;
   // Coordinates along the (not necessarily orthogonal) edges: solve d = s*eu + t*ev with the
   // dual basis cross(ev, n) / n2 and cross(n, eu) / n2.
   const double s = glm::dot(d, q.dual_u) / n2;

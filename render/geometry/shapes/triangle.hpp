@@ -64,6 +64,19 @@ struct TriangleRay {
 };
 
 namespace detail {
+// Whether a ray along d meets the plane of edges e1, e2 at more than tol::kTriangleDeterminant
+// of the largest angle it could: d . (e1 x e2) against |d| |e1| |e2|, scale-free. Compared
+// squared, without a square root, while the squares stay normal numbers (edges between about
+// 1e-62 and 1e62 units); past that (a scene modelled at 1e100 or 1e-100 units) with the
+// lengths themselves, whose products stay finite to about 1e154.
+inline bool crosses_plane(const Vec3& d, const Vec3& e1, const Vec3& e2) {
+  const double det3 = glm::dot(d, glm::cross(e1, e2));
+  const double scale2 = glm::dot(d, d) * glm::dot(e1, e1) * glm::dot(e2, e2);
+  constexpr double k = tol::kTriangleDeterminant;
+  if (scale2 > 1e-250 && scale2 < 1e250) return det3 * det3 > k * k * scale2;
+  return std::abs(det3) > k * scaled_length(d) * scaled_length(e1) * scaled_length(e2);
+}
+
 // The three edge functions of the sheared, projected vertices (2D cross products). Each
 // depends only on its own edge's two vertices, computed the same way from both triangles
 // sharing the edge: a ray through an edge gets exactly the same value (with opposite sign)
@@ -101,16 +114,18 @@ inline bool intersect_triangle(const Vec3& v0, const Vec3& v1, const Vec3& v2, c
   const double det = u + v + w;
   if (!(det != 0.0)) return false;  // zero, or NaN from NaN vertices
   const double az = ray.sz * a[kz], bz = ray.sz * b[kz], cz = ray.sz * c[kz];
-  const double tt = (u * az + v * bz + w * cz) / det;
+  // det is the sheared triangle's doubled area (length squared) and the sum below a length
+  // cubed, which overflows past about 1e100 units and underflows below 1e-100: there the
+  // barycentric weights (each within [0, 1]) multiply the depths instead, at one more
+  // rounding per term. Inside the range the paper's formula keeps its bits.
+  const double abs_det = std::abs(det);
+  const double tt = abs_det > 1e-150 && abs_det < 1e150 ? (u * az + v * bz + w * cz) / det
+                                                        : (u / det) * az + (v / det) * bz + (w / det) * cz;
   if (!ray_t.surrounds(tt)) return false;
-  // Scale-free degeneracy test, done last since most candidates fail the tests above:
-  // d . (e1 x e2) against |d| |e1| |e2| (squared, no sqrt). Zero-area triangles and rays in
-  // the triangle's plane fail it (a neighbour across a shared edge is hit instead, since
-  // edges are inclusive).
-  const Vec3 e1 = v1 - v0, e2 = v2 - v0;
-  const double det3 = glm::dot(ray.direction, glm::cross(e1, e2));
-  const double scale2 = glm::dot(ray.direction, ray.direction) * glm::dot(e1, e1) * glm::dot(e2, e2);
-  if (!(det3 * det3 > tol::kTriangleDeterminant * tol::kTriangleDeterminant * scale2)) return false;
+  // Scale-free degeneracy test, done last since most candidates fail the tests above.
+  // Zero-area triangles and rays in the triangle's plane fail it (a neighbour across a
+  // shared edge is hit instead, since edges are inclusive).
+  if (!detail::crosses_plane(ray.direction, v1 - v0, v2 - v0)) return false;
   t = tt;
   b1 = v / det;
   b2 = w / det;
@@ -137,7 +152,7 @@ inline bool intersect(const Triangle& tri, const Ray& ray, Interval ray_t, Surfa
   if (!intersect_triangle(tri.v0, tri.v1, tri.v2, TriangleRay(ray), ray_t, t, b1, b2)) return false;
   hit.t = t;
   hit.point = triangle_point(tri.v0, tri.v1, tri.v2, b1, b2, hit.error);
-  hit.normal = glm::normalize(glm::cross(tri.v1 - tri.v0, tri.v2 - tri.v0));
+  hit.normal = unit_vector(glm::cross(tri.v1 - tri.v0, tri.v2 - tri.v0));  // 1e100-unit edges too
   hit.shading_normal = hit.normal;
   if (tri.normals) {
     const TriangleNormals& tn = *tri.normals;
