@@ -1,6 +1,7 @@
 // The POV-Ray shape families from the language: an isosurface's macro is compiled and traced,
 // its container read from a box or sphere block, and bad parameters are located errors.
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include "eval_helpers.hpp"
 #include "render/geometry/shapes/blob.hpp"
@@ -359,4 +360,69 @@ TEST_CASE("a prism from the language: sub-polygons, open, and bad points, height
   CHECK(d.message == "prism needs property 'points'");
   d = eval_diagnostic("difference { prism { points = [[0, 0], [1, 0], [0, 1]]  open = true } sphere { radius = 1 } }");
   CHECK(d.message.find("an uncapped prism cannot be part of 'difference'") != std::string::npos);
+}
+
+namespace {
+
+// The picture of `shape` (a block or group in scene units, `k` its scale) over a plane, lit,
+// with the camera and light scaled by k too.
+render::RenderResult scaled_picture(const std::string& shape, double k) {
+  const std::string text = fmt::format(
+      "let k = {:.17g}\n"
+      "macro rip(p) {{ return length(p) - 0.85 + 0.12 * sin(7 * p.x) * sin(7 * p.y) * sin(7 * p.z) }}\n"
+      "let M = material {{ color = rgb(0.85, 0.15, 0.1) specular = 0.6 }}\n"
+      "settings {{ width = 32  height = 24  samples = 1  background = rgb(0.1, 0.12, 0.18) }}\n"
+      "camera {{ position = <0, 2.2, -7>*k  look_at = <0, 0.8, 0>*k  fov = 30 }}\n"
+      "point_light {{ position = <-5, 8, -6>*k }}\n"
+      "plane {{ normal = <0, 1, 0>  offset = -1*k  material = material {{ color = rgb(0.75) }} }}\n"
+      "group {{ {} }} translate <0, 0.8, 0>*k\n",
+      k, shape);
+  render::RenderOptions o;
+  o.threads = 2;
+  return render::render(eval_text(text), o);
+}
+
+double worst_difference(const render::RenderResult& a, const render::RenderResult& b) {
+  REQUIRE(a.color.rgb.size() == b.color.rgb.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < a.color.rgb.size(); ++i)
+    worst = std::max(worst, std::abs(static_cast<double>(a.color.rgb[i]) - b.color.rgb[i]));
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("POV-Ray's shapes scaled by a transform (1e-150 to 1e150) or their numbers (1e-50 to 1e50) look the same",
+          "[shapes][extremes]") {
+  // A blob 1e4 units across, or placed with `scale 1e4`, showed holes: its quartic's leading
+  // coefficient, (|d| / r)^4, fell below the tolerance that drops it. Sor heights and prism
+  // points closer than POV-Ray's absolute 1e-10 were refused or merged at 1e-13 units.
+  const std::vector<std::string> by_transform = {
+      "blob { threshold = 0.6 spheres = [[<-0.6, 0, 0>, 0.8, 1], [<0.6, 0, 0>, 0.8, 1], [<0, 0.7, 0>, 0.6, 1]] "
+      "material = M } scale k",
+      "superellipsoid { e = 0.25  n = 0.25 material = M } scale 0.7 rotate <0, 30, 0> scale k",
+      "isosurface { function = rip max_gradient = 2.5 contained_by = box { min = <-1, -1, -1>  max = <1, 0.6, 1> } "
+      "material = M } scale k",
+      "poly { order = 4 coefficients = [1, 0, 0, 0,  0, 0, 0, 0, 0, -5,  0, 0, 0, 0, 0, 0, 0, 0, 0, 0, "
+      "1, 0, 0, 0, 0, -5,  0, 0, 0, 0,  1, 0, -5, 0, 11.8] material = M } scale 0.33 scale k",
+      "lathe { spline = \"cubic\"  points = [[0.2, -0.8], [0, -0.7], [0.7, -0.65], [0.9, 0], [0.5, 0.5], [0, 1], "
+      "[-0.2, 1]] material = M } scale k"};
+  const std::vector<std::string> by_numbers = {
+      "blob { threshold = 0.6 spheres = [[<-0.6, 0, 0>*k, 0.8*k, 1], [<0.6, 0, 0>*k, 0.8*k, 1], [<0, 0.7, 0>*k, "
+      "0.6*k, 1]] cylinders = [[<-1.1, -0.3, 0>*k, <1.1, -0.3, 0>*k, 0.35*k, 1]] material = M }",
+      "sor { points = [[0.3*k, -0.2*k], [0.35*k, 0], [0.7*k, 0.5*k], [0.25*k, 1.1*k], [0.3*k, 1.4*k], "
+      "[0.45*k, 1.6*k]] material = M }",
+      "prism { points = [[-k, -k], [k, -k], [k, k], [-k, k], [-k, -k], [-0.4*k, -0.4*k], [0.4*k, -0.4*k], "
+      "[0.4*k, 0.4*k], [-0.4*k, 0.4*k]] height1 = 0  height2 = 0.3*k material = M } rotate <-30, 0, 0>"};
+  for (const auto& [shapes, scales] :
+       {std::pair{by_transform, std::vector<double>{1e-150, 1e-50, 1e-4, 1e4, 1e50, 1e150}},
+        std::pair{by_numbers, std::vector<double>{1e-50, 1e-13, 1e-4, 1e4, 1e13, 1e50}}}) {
+    for (const std::string& shape : shapes) {
+      const render::RenderResult unit = scaled_picture(shape, 1.0);
+      for (double k : scales) {
+        INFO(shape << "\nscaled by " << k);
+        CHECK(worst_difference(unit, scaled_picture(shape, k)) < 1e-4);
+      }
+    }
+  }
 }

@@ -157,7 +157,28 @@ inline const Vec3* piece(const BlobComponent& c, const Vec3& p, Vec3& q, Vec3& w
 // Between consecutive "ends" (where the ray enters or leaves a component's reach, or passes a
 // cylinder's end plane) every component is one polynomial piece or absent, decided at the
 // interval's middle; the roots of field - threshold there are the crossings.
+//
+// Solved along a direction as long as the blob's largest radius (t = s r / |d|): the
+// quartic's leading coefficient is (|d| / r)^4 of the others, so a blob 1e4 units across (or
+// one placed with `scale 1e4`, traced in object space with |d| = 1e-4) fell below
+// tol::kBlobLeadingCoefficient, its crossings were solved as a quadratic's and the surface
+// showed holes.
+inline int blob_crossings_scaled(const Blob& b, const Ray& ray, double* t_out, int max_out);
+
 inline int blob_crossings(const Blob& b, const Ray& ray, double* t_out, int max_out) {
+  const double len = scaled_length(ray.direction);
+  if (!(len > 0.0) || !std::isfinite(len)) return 0;
+  double reach = 0.0;
+  for (const BlobComponent& c : b.components) reach = std::max(reach, c.radius);
+  if (!(reach > 0.0) || !std::isfinite(reach)) return 0;
+  const double step = reach / len;  // t per unit of the scaled ray's parameter
+  if (step == 1.0) return blob_crossings_scaled(b, ray, t_out, max_out);
+  const int n = blob_crossings_scaled(b, Ray{ray.origin, (ray.direction / len) * reach}, t_out, max_out);
+  for (int i = 0; i < n; ++i) t_out[i] *= step;
+  return n;
+}
+
+inline int blob_crossings_scaled(const Blob& b, const Ray& ray, double* t_out, int max_out) {
   const Vec3& o = ray.origin;
   const Vec3& d = ray.direction;
   const double dd = glm::dot(d, d);

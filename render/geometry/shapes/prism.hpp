@@ -86,12 +86,20 @@ inline bool prism_curves_inside(const std::vector<SplineSegment>& curves, double
 // 4 points a segment; a segment whose first point differs from the previous one's last starts
 // a new sub-outline, and the previous one must end where it started. POV-Ray ignores an
 // unclosed spline prism (with a warning); rts says so.
+// tol::kPrismSamePoint (POV-Ray's absolute EPSILON) for outlines of unit size and larger, a
+// proportion of the outline's size below it: a prism modelled at 1e-13 units had every point
+// "the same" as the next, and its outline fell apart.
+inline double same_point_tolerance(const std::vector<Vec3>& points) {
+  double size = 0.0;
+  for (const Vec3& q : points) size = std::max({size, std::abs(q.x), std::abs(q.y)});
+  return tol::kPrismSamePoint * std::min(1.0, size);
+}
+
 inline std::string prism_spline_curves(PrismData& p) {
   const std::vector<Vec3>& q = p.points;
   const int n = static_cast<int>(q.size());
-  auto same = [](const Vec3& a, const Vec3& b) {
-    return std::abs(a.x - b.x) < tol::kPrismSamePoint && std::abs(a.y - b.y) < tol::kPrismSamePoint;
-  };
+  const double eps = same_point_tolerance(q);
+  auto same = [eps](const Vec3& a, const Vec3& b) { return std::abs(a.x - b.x) < eps && std::abs(a.y - b.y) < eps; };
   p.curves.clear();
   if (p.spline == SplineKind::Bezier) {
     int loop_start = 0;
@@ -175,9 +183,8 @@ inline void prism_outline_setup(PrismData& p) {
   const std::vector<Vec3>& q = p.points;
   const int n = static_cast<int>(q.size());
   p.edges.clear();
-  auto same = [](const Vec3& a, const Vec3& b) {
-    return std::abs(a.x - b.x) < tol::kPrismSamePoint && std::abs(a.y - b.y) < tol::kPrismSamePoint;
-  };
+  const double eps = same_point_tolerance(q);
+  auto same = [eps](const Vec3& a, const Vec3& b) { return std::abs(a.x - b.x) < eps && std::abs(a.y - b.y) < eps; };
   auto add = [&](const Vec3& a, const Vec3& b) { p.edges.push_back(PrismEdge{a.x, a.y, b.x, b.y, 1.0}); };
   int first = 0;
   for (int i = 1; i < n; ++i) {

@@ -133,10 +133,15 @@ struct ShapeTraits<Sor> {
                                      "{} follows {}",
                                      i + 1, q.x, q.y, n - 1, q.y, g.points[i - 1].y));
     }
-    // The end slopes divide by these height differences (POV-Ray refuses them too).
-    if (!(std::abs(g.points[2].y - g.points[0].y) > 1e-10))
+    // The end slopes divide by these height differences (POV-Ray refuses them too, below its
+    // absolute 1e-10; here a proportion of the profile's size when that is below 1, so a sor
+    // modelled at 1e-13 units is not refused).
+    double size = 0.0;
+    for (const auto& q : g.points) size = std::max({size, std::abs(q.x), std::abs(q.y)});
+    const double min_rise = 1e-10 * std::min(1.0, size);
+    if (!(std::abs(g.points[2].y - g.points[0].y) > min_rise))
       throw SceneError(loc_of(ps, "points"), "sor points 1 and 3 must differ in height (they set the bottom slope)");
-    if (!(std::abs(g.points[n - 1].y - g.points[n - 3].y) > 1e-10))
+    if (!(std::abs(g.points[n - 1].y - g.points[n - 3].y) > min_rise))
       throw SceneError(loc_of(ps, "points"),
                        fmt::format("sor points {} and {} must differ in height (they set the top slope)", n - 2, n));
     g.open = ps.boolean("open", g.open);
