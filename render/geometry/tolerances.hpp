@@ -161,8 +161,10 @@ inline constexpr double kGrazingCosine = 1e-7;
 inline constexpr double kMinMicrofacetAlpha = 1e-4;
 
 // Path tracing: an emitter whose area (or solid angle) is below this is not sampled by next-
-// event estimation (its density would overflow); rays that hit it still see its emission.
-inline constexpr double kMinEmitterArea = 1e-200;
+// event estimation (its density, pick / area with pick <= 1, would overflow); rays that hit
+// it still see its emission. A lamp of a scene modelled at 1e-150 units has an area near
+// 1e-300, and is sampled.
+inline constexpr double kMinEmitterArea = 1e-306;
 
 // Path tracing: a point closer to an emissive sphere's centre than (1 + this) times its
 // radius samples the sphere by area, not by the cone it subtends: a point on the sphere

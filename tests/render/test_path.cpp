@@ -752,6 +752,51 @@ TEST_CASE("path mode stays finite: grazing views, albedo 1, tiny and huge scales
   }
 }
 
+TEST_CASE("emitters of every sampled kind give the unit scene's picture scaled by 1e-150 to 1e150", "[path]") {
+  // Radiance does not change when a scene lit only by emitters is scaled, so neither may the
+  // picture. The emitters' areas (|e1 x e2|, squared inside glm::length) and the spherical
+  // rectangle's, a box's and a mesh's normals overflowed past about 1e77 units (the Cornell
+  // box's lamp went dark), and emitters below 1e-200 in area were left out of light sampling.
+  auto scene = [](double k) {
+    SceneDesc s;
+    s.has_camera = true;
+    s.camera.position = Vec3(0, 1.2, -3.5) * k;
+    s.camera.look_at = Vec3(0, 0.6, 0) * k;
+    s.settings.max_depth = 4;
+    const MaterialId grey = add_material(s, lambert(0.7));
+    MaterialDesc lamp = lambert(0.5);
+    lamp.emission = Color(4.0, 3.0, 2.0);
+    const MaterialId glow = add_material(s, lamp);
+    place(s, add_shape(s, Quad{Vec3(-3, 0, -3) * k, Vec3(6, 0, 0) * k, Vec3(0, 0, 6) * k}, grey));
+    place(s, add_shape(s, Sphere{Vec3(0, 0.5, 0.5) * k, 0.5 * k}, grey));
+    place(s, add_shape(s, Quad{Vec3(-0.5, 2, 0) * k, Vec3(1, 0, 0) * k, Vec3(0, 0, 0.6) * k}, glow));
+    place(s, add_shape(s, Sphere{Vec3(-1.4, 0.3, 0.2) * k, 0.25 * k}, glow));
+    place(s, add_shape(s, Triangle{Vec3(1.1, 0, 1) * k, Vec3(1.7, 0, 1.2) * k, Vec3(1.4, 0.8, 1.1) * k, {}}, glow));
+    place(s, add_shape(s, Disc{Vec3(-0.8, 1.4, 1.0) * k, Vec3(0.3, -1, 0), 0.3 * k, 0.0}, glow));
+    place(s, add_shape(s, Box{Vec3(0.6, 0, -0.6) * k, Vec3(0.9, 0.3, -0.3) * k}, glow));
+    place(s, add_shape(s, Cylinder{Vec3(-0.9, 0, -0.8) * k, Vec3(-0.9, 0.4, -0.8) * k, 0.1 * k, true}, glow));
+    place(s, add_shape(s, Cone{Vec3(1.6, 0, -0.4) * k, Vec3(1.6, 0.5, -0.4) * k, 0.2 * k, 0.05 * k, true}, glow));
+    // A unit mesh placed with scale k (meshes keep single-precision vertices near unit size).
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = {{-2.0f, 0.0f, 1.5f}, {-1.4f, 0.0f, 1.7f}, {-1.7f, 0.9f, 1.6f}, {-1.8f, 0.5f, 1.0f}};
+    mesh->indices = {0, 1, 2, 0, 2, 3};
+    s.meshes.push_back(mesh);
+    place(s, add_shape(s, MeshRef{static_cast<MeshId>(s.meshes.size() - 1), false}, glow), scale(Vec3(k)));
+    return s;
+  };
+  const Measured unit = render_path(scene(1.0), 16, 4);
+  REQUIRE(unit.mean > 0.05);
+  for (double k : {1e-150, 1e-100, 1e-50, 1e50, 1e100, 1e150}) {
+    INFO("scale 1e" << std::lround(std::log10(k)));
+    const Measured scaled = render_path(scene(k), 16, 4);
+    REQUIRE(scaled.result.color.rgb.size() == unit.result.color.rgb.size());
+    double worst = 0;
+    for (std::size_t i = 0; i < unit.result.color.rgb.size(); ++i)
+      worst = std::max(worst, std::abs(static_cast<double>(scaled.result.color.rgb[i]) - unit.result.color.rgb[i]));
+    CHECK(worst < 1e-3);  // the same paths, up to the rounding of scaled positions
+  }
+}
+
 TEST_CASE("a material that reflects more than it receives is scaled down, with a located warning", "[path]") {
   SceneDesc s;
   s.settings.background = Color(1.0);

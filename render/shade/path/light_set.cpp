@@ -131,7 +131,7 @@ LightSet::LightSet(const World& world, const SceneDesc& scene, const std::vector
       e.e1 = l.u;
       e.e2 = l.v;
       e.disc = l.disc;
-      e.area = glm::length(glm::cross(l.u, l.v)) * (l.disc ? kPi / 4.0 : 1.0);
+      e.area = scaled_length(glm::cross(l.u, l.v)) * (l.disc ? kPi / 4.0 : 1.0);
       if (!(e.area > tol::kMinEmitterArea)) continue;   // a zero-size area light sends nothing
       e.radiance = glm::min(2.0 * l.power / e.area, Rgb(tol::kMaxRadiance));
       ++area_lights_;
@@ -234,7 +234,7 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
     e.p0 = point_to_world(xf, q.corner);
     e.e1 = vector_to_world(xf, q.edge_u);
     e.e2 = vector_to_world(xf, q.edge_v);
-    e.area = glm::length(glm::cross(e.e1, e.e2));
+    e.area = scaled_length(glm::cross(e.e1, e.e2));
     e.rect = std::abs(glm::dot(e.e1, e.e2)) <= tol::kRectangleCosine * glm::length(e.e1) * glm::length(e.e2);
   } else if (inst.kind == kPrimKind<Triangle>) {
     const Triangle& t = world.shape<Triangle>(inst.index);
@@ -242,7 +242,7 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
     e.p0 = point_to_world(xf, t.v0);
     e.e1 = point_to_world(xf, t.v1) - e.p0;
     e.e2 = point_to_world(xf, t.v2) - e.p0;
-    e.area = 0.5 * glm::length(glm::cross(e.e1, e.e2));
+    e.area = 0.5 * scaled_length(glm::cross(e.e1, e.e2));
   } else if (inst.kind == kPrimKind<MeshRef>) {
     const MeshData& mesh = *scene.meshes[inst.index];
     e.type = Type::Mesh;
@@ -255,7 +255,7 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
       for (int j = 0; j < 3; ++j) v[j] = point_to_world(xf, mesh.origin + Vec3(mesh.positions[mesh.indices[k + j]]));
       Tri t{v[0], v[1] - v[0], v[2] - v[0], 0.0};
       if (uvs) tri_uvs_.push_back({mesh.uvs[mesh.indices[k]], mesh.uvs[mesh.indices[k + 1]], mesh.uvs[mesh.indices[k + 2]]});
-      double a = 0.5 * glm::length(glm::cross(t.e1, t.e2));
+      double a = 0.5 * scaled_length(glm::cross(t.e1, t.e2));
       if (std::isfinite(a)) total += a;
       t.cdf = total;
       tris_.push_back(t);
@@ -272,7 +272,7 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
     e.e1 = vector_to_world(xf, d.radius * f.t);
     e.e2 = vector_to_world(xf, d.radius * f.b);
     e.radius = d.inner_radius / d.radius;
-    e.area = kPi * (1.0 - e.radius * e.radius) * glm::length(glm::cross(e.e1, e.e2));
+    e.area = kPi * (1.0 - e.radius * e.radius) * scaled_length(glm::cross(e.e1, e.e2));
   } else if (inst.kind == kPrimKind<Box>) {
     const Box& b = world.shape<Box>(inst.index);
     const Vec3 size = b.max - b.min;
@@ -281,8 +281,8 @@ void LightSet::add_emitter(const World& world, const SceneDesc& scene, uint32_t 
     e.e1 = vector_to_world(xf, Vec3(size.x, 0.0, 0.0));
     e.e2 = vector_to_world(xf, Vec3(0.0, size.y, 0.0));
     e.e3 = vector_to_world(xf, Vec3(0.0, 0.0, size.z));
-    e.area = 2.0 * (glm::length(glm::cross(e.e1, e.e2)) + glm::length(glm::cross(e.e2, e.e3)) +
-                    glm::length(glm::cross(e.e3, e.e1)));
+    e.area = 2.0 * (scaled_length(glm::cross(e.e1, e.e2)) + scaled_length(glm::cross(e.e2, e.e3)) +
+                    scaled_length(glm::cross(e.e3, e.e1)));
   } else if (inst.kind == kPrimKind<Cylinder> || inst.kind == kPrimKind<Cone>) {
     // The side and, when capped, the two end discs, uniform by area; a cylinder is a cone of
     // equal radii. Only under a transform that keeps it circular (as spheres): a stretched one
@@ -422,7 +422,7 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
         out.delta = true;
         return true;
       }
-      if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
+      if (!to_solid_angle(point, on, unit_vector(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
       out.radiance = e.light.area_spot ? e.radiance * area_spot_factor(e.light, point) : e.radiance;
       out.delta = true;  // no ray can hit it: sampling is its only strategy
       return true;
@@ -444,14 +444,14 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
         }
       }
       Vec3 on = e.p0 + u.x * e.e1 + u.y * e.e2;
-      if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
+      if (!to_solid_angle(point, on, unit_vector(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
       out.radiance = e.radiance;
       return true;
     }
     case Type::Triangle: {
       glm::dvec2 b = uniform_triangle(u);
       Vec3 on = e.p0 + b.x * e.e1 + b.y * e.e2;
-      if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
+      if (!to_solid_angle(point, on, unit_vector(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
       out.radiance = e.radiance;
       return true;
     }
@@ -473,7 +473,7 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
         *uv = (1.0 - b.x - b.y) * glm::dvec2(w.uv0) + b.x * glm::dvec2(w.uv1) + b.y * glm::dvec2(w.uv2);
       }
       Vec3 n = glm::cross(it->e1, it->e2);
-      if (!to_solid_angle(point, on, glm::normalize(n), e.pick / e.area, out)) return false;
+      if (!to_solid_angle(point, on, unit_vector(n), e.pick / e.area, out)) return false;
       out.radiance = e.radiance;
       return true;
     }
@@ -482,7 +482,7 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
       double r = std::sqrt(e.radius * e.radius + u.x * (1.0 - e.radius * e.radius));
       double phi = 2.0 * kPi * u.y;
       Vec3 on = e.p0 + r * std::cos(phi) * e.e1 + r * std::sin(phi) * e.e2;
-      if (!to_solid_angle(point, on, glm::normalize(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
+      if (!to_solid_angle(point, on, unit_vector(glm::cross(e.e1, e.e2)), e.pick / e.area, out)) return false;
       out.radiance = e.radiance;
       return true;
     }
@@ -490,7 +490,7 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
       // A face pair by its area, then one of the two faces and a point on it; u.x is reused
       // within its share. Faces turned away are occluded by the box itself.
       const Vec3 c12 = glm::cross(e.e1, e.e2), c23 = glm::cross(e.e2, e.e3), c31 = glm::cross(e.e3, e.e1);
-      const double a12 = glm::length(c12), a23 = glm::length(c23), a31 = glm::length(c31);
+      const double a12 = scaled_length(c12), a23 = scaled_length(c23), a31 = scaled_length(c31);
       double t = u.x * (a12 + a23 + a31);
       Vec3 a, b, n, far;
       if (t < a12) {
@@ -509,7 +509,7 @@ bool LightSet::sample_entry(const Entry& e, const Vec3& point, glm::dvec2 u, Lig
         t = 2.0 * t;
       }
       Vec3 on = base + t * a + u.y * b;
-      if (!to_solid_angle(point, on, glm::normalize(n), e.pick / e.area, out)) return false;
+      if (!to_solid_angle(point, on, unit_vector(n), e.pick / e.area, out)) return false;
       out.radiance = e.radiance;
       return true;
     }

@@ -42,10 +42,10 @@ class SphericalRect {
     x1_ = x0_ + exl;
     y1_ = y0_ + eyl;
     const Vec3 v00(x0_, y0_, z0_), v01(x0_, y1_, z0_), v10(x1_, y0_, z0_), v11(x1_, y1_, z0_);
-    n0_ = glm::normalize(glm::cross(v00, v10));
-    n1_ = glm::normalize(glm::cross(v10, v11));
-    n2_ = glm::normalize(glm::cross(v11, v01));
-    n3_ = glm::normalize(glm::cross(v01, v00));
+    n0_ = unit_vector(glm::cross(v00, v10));
+    n1_ = unit_vector(glm::cross(v10, v11));
+    n2_ = unit_vector(glm::cross(v11, v01));
+    n3_ = unit_vector(glm::cross(v01, v00));
     g0_ = angle_between(-n0_, n1_);
     g1_ = angle_between(-n1_, n2_);
     g2_ = angle_between(-n2_, n3_);
