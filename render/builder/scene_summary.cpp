@@ -116,10 +116,12 @@ bool is_leaf(const Node& n) { return n.kind == NodeKind::Shape || n.kind == Node
 
 // Every placed instance visited, its transform composed through the groups above it: exact
 // world-space bounds. Iterative: groups may nest as deep as macro recursion goes (far past the
-// C++ stack).
-void walk(const SceneDesc& scene, const ShapeBoxes& boxes, NodeId root, const Mat4& root_transform, Totals& out) {
+// C++ stack). Stops past `max_instances` (the count GroupTotals made): only a group holding
+// itself, which the evaluator cannot make but a SceneDesc built by hand can, goes on.
+void walk(const SceneDesc& scene, const ShapeBoxes& boxes, NodeId root, const Mat4& root_transform, Totals& out,
+          std::size_t max_instances) {
   std::vector<std::pair<NodeId, Mat4>> todo{{root, root_transform}};
-  while (!todo.empty()) {
+  while (!todo.empty() && out.instances <= max_instances) {
     auto [id, m] = todo.back();
     todo.pop_back();
     const Node& n = scene.nodes[id];
@@ -227,7 +229,7 @@ SceneSummary summarize(const SceneDesc& scene, std::size_t exact_walk_limit) {
     if (s.bounds_of_group_boxes)
       groups.add(c.node, c.transform, all);
     else
-      walk(scene, boxes, c.node, c.transform, all);
+      walk(scene, boxes, c.node, c.transform, all, placed);
   }
   s.shapes = std::move(all.shapes);
   s.lights = std::move(all.lights);

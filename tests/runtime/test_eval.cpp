@@ -392,6 +392,25 @@ TEST_CASE("with derives a new shape or light definition from an object", "[eval]
   CHECK(roots_of(s)[9].node != roots_of(s)[8].node);
 }
 
+TEST_CASE("the summary of a group that holds itself (a scene built by hand) ends", "[eval][summary]") {
+  // The evaluator cannot make the cycle (a group holds only what existed before it); a
+  // SceneDesc built through the API can, and both ways of counting must still stop.
+  SceneDesc s = eval_text(
+      "let ball = sphere { radius = 1 }\n"
+      "let pair = group { ball  ball translate <4, 0, 0> }\n"
+      "pair translate <0, 10, 0>\n");
+  NodeId group_node = 0;
+  while (group_node < s.nodes.size() && s.nodes[group_node].kind != render::NodeKind::Group) ++group_node;
+  REQUIRE(group_node < s.nodes.size());
+  s.groups[s.nodes[group_node].index].children.push_back(render::Child{group_node, render::Mat4(1.0), {}});
+  // By each group's totals: the member open on the stack adds nothing.
+  const render::SceneSummary grouped = render::summarize(s, 0);
+  CHECK(grouped.shapes.at("sphere") == 2);
+  CHECK(grouped.instances == 3);
+  // Walked: stops once past the count the totals gave (what it has counted is not meaningful).
+  CHECK(render::summarize(s, 1000).instances <= 4);
+}
+
 TEST_CASE("check's summary counts placed instances through groups and bounds them in world space", "[eval][summary]") {
   SceneDesc s = eval_text(
       "let ball = sphere { radius = 1 }\n"
