@@ -1,6 +1,6 @@
 // POV-Ray objects as rts blocks: positional values become named properties, transforms
 // postfix operators, CSG and meshes their members (the materials they carry:
-// translate_material.cpp).
+// translate_material.cpp and translate_pigment.cpp).
 #include <algorithm>
 #include <cctype>
 #include <cmath>

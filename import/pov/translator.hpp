@@ -32,6 +32,10 @@ struct Text {
   double filter = 0, transmit = 0;  // colours written with rgbf/rgbt/rgbft
 };
 
+// Whether `text` is a whole literal number (what the translator writes for literal values),
+// and its value.
+bool text_number(const std::string& text, double& out);
+
 // Material properties in the order they are written; set() replaces an earlier value.
 struct MaterialProps {
   std::string base;  // "" (a new material block) or an expression to derive from (`T with { }`)
@@ -146,7 +150,7 @@ class Translator {
   // The material a POV-Ray texture-like block (texture, pigment, finish, normal, interior,
   // material) adds to `m`.
   void texture_part(const Item& it, MaterialProps& m);
-  // An image_map block as rts's image texture (translate_material.cpp).
+  // An image_map block as rts's image texture (translate_pigment.cpp).
   std::string image_map(const Block& n);
   // Where POV-Ray looks for a file the scene names: the scene's folder, the -I folders, then its
   // own library folder where it is installed (translate_files.cpp).
