@@ -1,6 +1,6 @@
-// What scene_builder.cpp and scene_nodes.cpp (the two halves of SceneBuilder) share: the
-// property names each block kind accepts, paths resolved against the naming file, and the
-// typed reading of a reference property.
+// What scene_builder.cpp, material_builder.cpp and scene_nodes.cpp (the parts of SceneBuilder)
+// share: the property names each block kind accepts, paths resolved against the naming file,
+// the typed reading of a reference property and of a two-word choice.
 #pragma once
 
 #include <string>
@@ -26,6 +26,9 @@ const std::vector<std::string_view>* names_of(std::string_view kind);
 NodeId add_node(SceneDesc& scene, NodeKind kind, std::size_t index, SourceRef loc);
 // Paths in a scene are relative to the file that names them.
 std::string resolve_path(const std::string& path, SourceRef where);
+// A string property that is one of two words: whether it is the second. Any other word is
+// "unknown NAME 'x' (expected FIRST or SECOND)", located at the property (scene_builder.cpp).
+bool second_word(ParamSet& ps, std::string_view name, std::string_view first, std::string_view second);
 
 // The reference in property `name` (a shape's material, a material's texture), or null when
 // it is absent: "property 'material' of sphere expects a material, got a number".

@@ -1,6 +1,6 @@
 // SceneBuilder's scene-graph blocks: shapes (every kind through its ShapeTraits, meshes inline
-// or from OBJ files, height fields), lights, groups and CSG blocks. The settings, camera,
-// material and texture blocks are in scene_builder.cpp.
+// or from OBJ files, height fields), lights, groups and CSG blocks. The settings, camera and
+// texture blocks are in scene_builder.cpp, materials in material_builder.cpp.
 #include "render/builder/scene_builder.hpp"
 
 #include <array>
