@@ -192,12 +192,18 @@ class GroupTotals {
   std::unordered_set<NodeId> open_;
 };
 
-std::string num(double x) {
+// Rounding noise (a rotation's 1e-17 where 0 is meant) prints as 0: values below 1e-9 of
+// `scale`, the largest magnitude printed beside them (1 for a lone number, so a scene
+// modelled at 1e-13 units still shows its bounds).
+std::string num(double x, double scale = 1.0) {
   constexpr double kPrintZero = 1e-9;
-  if (std::fabs(x) < kPrintZero) x = 0;
+  if (std::fabs(x) < kPrintZero * scale) x = 0;
   return fmt::format("{:.6g}", x);
 }
-std::string vec(const Vec3& v) { return fmt::format("<{}, {}, {}>", num(v.x), num(v.y), num(v.z)); }
+std::string vec(const Vec3& v) {
+  const double scale = std::min(1.0, std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}));
+  return fmt::format("<{}, {}, {}>", num(v.x, scale), num(v.y, scale), num(v.z, scale));
+}
 
 }  // namespace
 

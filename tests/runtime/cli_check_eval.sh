@@ -32,6 +32,12 @@ contains "$tmp/out" "evaluated in"
 expect 0 "$rts" check "$golden/language_example.rts"
 contains "$tmp/out" "triangles:  0 (in 0 meshes)"   # quality stays 1: no mesh
 
+# A scene modelled at 1e-13 units shows its bounds and camera (zeroed as rounding noise before).
+printf 'camera { position = <0, 1e-13, -4e-13>  look_at = <0, 0, 0> }\nsphere { radius = 1e-13 }\n' >"$tmp/tiny.rts"
+expect 0 "$rts" check "$tmp/tiny.rts"
+contains "$tmp/out" "bounds:     <-1e-13, -1e-13, -1e-13> .. <1e-13, 1e-13, 1e-13>"
+contains "$tmp/out" "camera:     perspective at <0, 1e-13, -4e-13> looking at <0, 0, 0>"
+
 # -D: a define that matches nothing warns; a malformed one is a usage error.
 expect 0 "$rts" check "$golden/loops.rts" -D nothing=1
 contains "$tmp/err" "warning: define 'nothing=1' matches no top-level 'let nothing'"
