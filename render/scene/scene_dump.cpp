@@ -1,6 +1,7 @@
 // SceneDesc::dump: a deterministic text form of the scene for `rts eval` and golden tests.
 // Numbers use fmt's shortest round-trip form with tiny values (floating-point noise from
 // rotations) rounded to 0, so dumps are stable; file names are printed without folders.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -19,14 +20,19 @@ static const char* spline_name(SplineKind k) {
 
 namespace {
 
-// |x| below this prints as 0: cos(90°) is 6e-17, not a value anyone wrote.
+// |x| below this (times `scale`, the largest magnitude beside it when that is below 1) prints
+// as 0: cos(90°) is 6e-17, not a value anyone wrote; a scene modelled at 1e-13 units keeps
+// its vectors.
 constexpr double kDumpZero = 1e-12;
 
-std::string num(double x) {
-  if (std::fabs(x) < kDumpZero) x = 0.0;  // also turns -0 into 0
+std::string num(double x, double scale = 1.0) {
+  if (std::fabs(x) < kDumpZero * scale) x = 0.0;  // also turns -0 into 0
   return fmt::format("{}", x);
 }
-std::string vec(const Vec3& v) { return fmt::format("<{}, {}, {}>", num(v.x), num(v.y), num(v.z)); }
+std::string vec(const Vec3& v) {
+  const double scale = std::min(1.0, std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}));
+  return fmt::format("<{}, {}, {}>", num(v.x, scale), num(v.y, scale), num(v.z, scale));
+}
 std::string col(const Color& c) { return fmt::format("rgb({}, {}, {})", num(c.r), num(c.g), num(c.b)); }
 std::string id(uint32_t i) { return i == kNoId ? std::string("none") : fmt::format("{}", i); }
 std::string base(const std::string& path) { return std::filesystem::path(path).filename().string(); }

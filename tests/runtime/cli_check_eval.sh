@@ -37,6 +37,9 @@ printf 'camera { position = <0, 1e-13, -4e-13>  look_at = <0, 0, 0> }\nsphere { 
 expect 0 "$rts" check "$tmp/tiny.rts"
 contains "$tmp/out" "bounds:     <-1e-13, -1e-13, -1e-13> .. <1e-13, 1e-13, 1e-13>"
 contains "$tmp/out" "camera:     perspective at <0, 1e-13, -4e-13> looking at <0, 0, 0>"
+printf 'sphere { center = <0, 1e-13, 2e-13>  radius = 1 }\n' >"$tmp/tiny_eval.rts"
+expect 0 "$rts" eval "$tmp/tiny_eval.rts"
+contains "$tmp/out" "sphere center <0, 1e-13, 2e-13> radius 1"
 
 # -D: a define that matches nothing warns; a malformed one is a usage error.
 expect 0 "$rts" check "$golden/loops.rts" -D nothing=1
