@@ -64,6 +64,17 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
       "brick", "hexagon", "quilted", "facets", "average", "slope", "mandel",
       "julia", "magnet", "toroidal", "density_file", "object",
       "pigment_pattern", "image_pattern", "tiling", "function", "cubic", "square", "triangular"};
+  // A colour given bare or after `color`: the pigment's colour, or the pattern's next entry.
+  auto take_color = [&](const Expr& e) {
+    double f = 0, t = 0;
+    std::string c = color_value(e, &f, &t);
+    if (pattern.empty()) {
+      m.set("color", c);
+      filter = f, transmit = t;
+    } else {
+      colors.push_back(c);
+    }
+  };
   for (const Item& it : b.items) {
     if (it.kind == Item::Value) {
       const Expr& e = *it.args[0];
@@ -81,27 +92,13 @@ void Translator::pigment(const Block& b, MaterialProps& m) {
           continue;
         }
       }
-      double f = 0, t = 0;
-      std::string c = color_value(e, &f, &t);
-      if (pattern.empty()) {
-        m.set("color", c);
-        filter = f, transmit = t;
-      } else {
-        colors.push_back(c);
-      }
+      take_color(e);
       continue;
     }
     if (it.kind == Item::Keyword) {
       const std::string& k = it.name;
       if ((k == "color" || k == "colour") && !it.args.empty()) {
-        double f = 0, t = 0;
-        std::string c = color_value(*it.args[0], &f, &t);
-        if (pattern.empty()) {
-          m.set("color", c);
-          filter = f, transmit = t;
-        } else {
-          colors.push_back(c);
-        }
+        take_color(*it.args[0]);
         continue;
       }
       if ((k == "filter" || k == "transmit") && !it.args.empty()) {
