@@ -57,6 +57,15 @@ inline constexpr double kLatheFlatRay = 1e-4;
 // crossing near a joint may fall just outside its own segment.
 inline constexpr double kLatheSplineSearchPad = 0.05;
 
+// Lengths (edges, radii, a transform's entries) between these are used as given; outside,
+// the tests whose terms reach the third or fourth power of a length (a triangle's depth and
+// degeneracy test, a quad's dual basis, a torus's quartic, a transform's cofactors and
+// determinant) first rescale them by an exact power of two, since those powers leave doubles'
+// normal range past about 1e77 (or 1e-77). Inside, nothing is rescaled and every result keeps
+// its bits; the fourth power of either bound (1e120) is far inside doubles' range.
+inline constexpr double kUnscaledLengthMin = 1e-30;
+inline constexpr double kUnscaledLengthMax = 1e30;
+
 // A ray parallel to a plane/disc/cap within this cosine is treated as missing it.
 inline constexpr double kParallelCosine = 1e-14;
 

@@ -2,8 +2,8 @@
 // three entries) by the determinant (also of three): a `scale 1e150` overflows both and a
 // `scale 1e-110` underflows them, so the object vanished or a "singular" error named a scale
 // that is not 0. Here the linear part is first multiplied by a power of two near 1 / its
-// largest entry (exact), inverted, and multiplied back; transforms whose entries lie between
-// 1e-90 and 1e90 take glm::inverse itself, keeping their bits.
+// largest entry (exact), inverted, and multiplied back; transforms whose largest entry lies
+// inside tol::kUnscaledLength* take glm::inverse itself, keeping their bits.
 #pragma once
 
 #include <cmath>
@@ -31,7 +31,7 @@ inline bool invertible_transform(const Mat4& m) {
 
 inline Mat4 inverse_transform(const Mat4& m) {
   const double s = linear_scale(m);
-  if (s > 1e-90 && s < 1e90) return glm::inverse(m);
+  if (s > tol::kUnscaledLengthMin && s < tol::kUnscaledLengthMax) return glm::inverse(m);  // 1/entry, same range
   // m = [A t] and [sA, s t]^-1 = [(sA)^-1, -(sA)^-1 s t] = [A^-1 / s, -A^-1 t].
   Mat4 scaled = m * s;
   scaled[3] = glm::dvec4(glm::dvec3(m[3]) * s, 1.0);

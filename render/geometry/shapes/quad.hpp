@@ -55,7 +55,7 @@ inline AABB bounds(const Quad& q) {
 // n2 is an edge's length to the fourth power and the duals to the third, which overflow past
 // edges of about 1e77 units and underflow below 1e-77: such a quad's frame is made from its
 // edges scaled by a power of two near 1 / |edge| (`scale`, exact), and the test scales the
-// offset from the corner by it. Inside the range `scale` is 1 and the bits are the old ones.
+// offset from the corner by it. Inside tol::kUnscaledLength* `scale` is 1: the old bits.
 struct QuadFrame {
   Vec3 corner, edge_u, edge_v;
   Vec3 n;        // cross(edge_u, edge_v) * scale^2, not unit length
@@ -66,7 +66,8 @@ struct QuadFrame {
   double scale = 1.0;
   explicit QuadFrame(const Quad& q) : corner(q.corner), edge_u(q.edge_u), edge_v(q.edge_v) {
     const double m = std::max(max_abs_component(q.edge_u), max_abs_component(q.edge_v));
-    if (m > 0.0 && std::isfinite(m) && !(m > 1e-60 && m < 1e60)) scale = std::ldexp(1.0, -std::ilogb(m));
+    if (m > 0.0 && std::isfinite(m) && !(m > tol::kUnscaledLengthMin && m < tol::kUnscaledLengthMax))
+      scale = std::ldexp(1.0, -std::ilogb(m));
     const Vec3 eu = q.edge_u * scale, ev = q.edge_v * scale;
     n = glm::cross(eu, ev);
     dual_u = glm::cross(ev, n);

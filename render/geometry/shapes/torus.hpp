@@ -76,8 +76,8 @@ inline int torus_crossings(const Torus& tor, const Ray& ray, double* t_out) {
   if (!(r > 0.0) || !(R >= r)) return 0;
   // The quartic's constant term is R^4 (overflowing past R ~ 1e77, underflowing below 1e-77):
   // a torus far from unit size is solved scaled by a power of two near 1 / R (exact), its
-  // parameters scaled back. Inside the range nothing is scaled and the bits are the old ones.
-  if (!(R > 1e-30 && R < 1e30) && std::isfinite(R)) {
+  // parameters scaled back. Inside tol::kUnscaledLength* nothing is scaled: the old bits.
+  if (!(R > tol::kUnscaledLengthMin && R < tol::kUnscaledLengthMax) && std::isfinite(R)) {
     const double scale = std::ldexp(1.0, -std::ilogb(R));
     const int n = torus_crossings(Torus{R * scale, r * scale}, Ray{ray.origin * scale, ray.direction}, t_out);
     for (int i = 0; i < n; ++i) t_out[i] /= scale;

@@ -66,14 +66,15 @@ struct TriangleRay {
 namespace detail {
 // Whether a ray along d meets the plane of edges e1, e2 at more than tol::kTriangleDeterminant
 // of the largest angle it could: d . (e1 x e2) against |d| |e1| |e2|, scale-free. Compared
-// squared, without a square root, while the squares stay normal numbers (edges between about
-// 1e-62 and 1e62 units); past that (a scene modelled at 1e100 or 1e-100 units) with the
-// lengths themselves, whose products stay finite to about 1e154.
+// squared, without a square root, while those squares (a length to the fourth power) stay
+// inside tol::kUnscaledLength*'s fourth powers; past that (a scene modelled at 1e100 or
+// 1e-100 units) with the lengths themselves, whose products stay finite to about 1e154.
 inline bool crosses_plane(const Vec3& d, const Vec3& e1, const Vec3& e2) {
   const double det3 = glm::dot(d, glm::cross(e1, e2));
   const double scale2 = glm::dot(d, d) * glm::dot(e1, e1) * glm::dot(e2, e2);
   constexpr double k = tol::kTriangleDeterminant;
-  if (scale2 > 1e-250 && scale2 < 1e250) return det3 * det3 > k * k * scale2;
+  constexpr double lo = tol::kUnscaledLengthMin, hi = tol::kUnscaledLengthMax;
+  if (scale2 > lo * lo * lo * lo && scale2 < hi * hi * hi * hi) return det3 * det3 > k * k * scale2;
   return std::abs(det3) > k * scaled_length(d) * scaled_length(e1) * scaled_length(e2);
 }
 
@@ -114,13 +115,14 @@ inline bool intersect_triangle(const Vec3& v0, const Vec3& v1, const Vec3& v2, c
   const double det = u + v + w;
   if (!(det != 0.0)) return false;  // zero, or NaN from NaN vertices
   const double az = ray.sz * a[kz], bz = ray.sz * b[kz], cz = ray.sz * c[kz];
-  // det is the sheared triangle's doubled area (length squared) and the sum below a length
-  // cubed, which overflows past about 1e100 units and underflows below 1e-100: there the
-  // barycentric weights (each within [0, 1]) multiply the depths instead, at one more
-  // rounding per term. Inside the range the paper's formula keeps its bits.
+  // det is the sheared triangle's doubled area (a length squared) and the sum below a length
+  // cubed, which overflows past about 1e100 units and underflows below 1e-100: outside the
+  // squares of tol::kUnscaledLength* the barycentric weights (each within [0, 1]) multiply
+  // the depths instead, at one more rounding per term; inside, the paper's formula keeps its bits.
+  constexpr double lo = tol::kUnscaledLengthMin, hi = tol::kUnscaledLengthMax;
   const double abs_det = std::abs(det);
-  const double tt = abs_det > 1e-150 && abs_det < 1e150 ? (u * az + v * bz + w * cz) / det
-                                                        : (u / det) * az + (v / det) * bz + (w / det) * cz;
+  const double tt = abs_det > lo * lo && abs_det < hi * hi ? (u * az + v * bz + w * cz) / det
+                                                           : (u / det) * az + (v / det) * bz + (w / det) * cz;
   if (!ray_t.surrounds(tt)) return false;
   // Scale-free degeneracy test, done last since most candidates fail the tests above.
   // Zero-area triangles and rays in the triangle's plane fail it (a neighbour across a
