@@ -82,16 +82,18 @@ MaterialId SceneBuilder::ordinary_material(ParamSet& ps, const MaterialDesc* sta
     m.emission = ps.color("emission", m.emission);
     non_negative_color(ps, "emission", m.emission);
   }
-  if (const ParamValue* av = ps.value("ambient")) {
-    if (const double* d = std::get_if<double>(av)) {
-      m.ambient = non_negative(ps, "ambient", *d);
+  // A weight, or a colour that weighs each channel: weight 1, that colour.
+  auto weight_or_color = [&](std::string_view name, const ParamValue& v, double& weight, Color& color) {
+    if (const double* d = std::get_if<double>(&v)) {
+      weight = non_negative(ps, name, *d);
     } else {
-      // A colour weighs each channel (POV-Ray's `ambient rgb <...>`, golds.inc): weight 1, that colour.
-      m.ambient = 1.0;
-      m.ambient_color = ps.color("ambient", m.ambient_color);
-      non_negative_color(ps, "ambient", m.ambient_color);
+      weight = 1.0;
+      color = ps.color(name, color);
+      non_negative_color(ps, name, color);
     }
-  }
+  };
+  // POV-Ray's `ambient rgb <...>` (golds.inc).
+  if (const ParamValue* av = ps.value("ambient")) weight_or_color("ambient", *av, m.ambient, m.ambient_color);
   if (channel_texture("diffuse", m.diffuse_texture))
     m.diffuse = 1.0;
   else
@@ -99,14 +101,7 @@ MaterialId SceneBuilder::ordinary_material(ParamSet& ps, const MaterialDesc* sta
   if (channel_texture("specular", m.specular_texture)) {
     m.specular = 1.0;
   } else if (const ParamValue* sv = ps.value("specular")) {
-    if (const double* d = std::get_if<double>(sv)) {
-      m.specular = non_negative(ps, "specular", *d);
-    } else {
-      // A color tints the highlight (the courses' `specularColor`): weight 1, that color.
-      m.specular = 1.0;
-      m.specular_color = ps.color("specular", m.specular_color);
-      non_negative_color(ps, "specular", m.specular_color);
-    }
+    weight_or_color("specular", *sv, m.specular, m.specular_color);  // a colour: the courses' `specularColor`
   }
   m.shininess = non_negative(ps, "shininess", ps.number("shininess", m.shininess));
   if (ps.has("highlight")) m.blinn = second_word(ps, "highlight", "phong", "blinn");
