@@ -139,12 +139,11 @@ void camera_inside(const EvalResult& result, const SourceManager& sources, std::
 // 7e150 from the origin); a camera past 1e152, or looking across less than 1e-152, says so.
 constexpr double kLargestScale = 1e152, kSmallestScale = 1e-152;
 
-double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
-
 void camera_scale(const render::SceneDesc& scene, const SourceManager& sources, std::vector<Diagnostic>& out) {
   const render::CameraDesc& c = scene.camera;
-  const double far = std::max(max_abs(c.position), c.given_vectors ? 0.0 : max_abs(c.look_at));
-  const double view = c.given_vectors ? kLargestScale : max_abs(c.look_at - c.position);
+  using render::max_abs_component;
+  const double far = std::max(max_abs_component(c.position), c.given_vectors ? 0.0 : max_abs_component(c.look_at));
+  const double view = c.given_vectors ? kLargestScale : max_abs_component(c.look_at - c.position);
   std::string message;
   if (far > kLargestScale && std::isfinite(far))
     message = fmt::format("the camera is {:.3g} units from the origin, past the 1e152 within which rts renders "

@@ -18,10 +18,6 @@ struct Ray {
   Vec3 at(double t) const { return origin + t * direction; }
 };
 
-inline double max_abs_component(const Vec3& v) {
-  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
-
 // Whether |v|^2 is computed without overflow or underflow (|v| between about 1e-150 and
 // 1e150), where glm::length and glm::normalize are exact to their rounding.
 inline bool squares_in_range(const Vec3& v) {

@@ -240,9 +240,7 @@ double non_negative(ParamSet& ps, std::string_view name, double v) {
 }
 namespace {
 // Not zero and not NaN, however short: glm::length would round 1e-200 to 0.
-bool nonzero(const Vec3& v) {
-  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > 0.0 && !std::isnan(v.x + v.y + v.z);
-}
+bool nonzero(const Vec3& v) { return max_abs_component(v) > 0.0 && !std::isnan(v.x + v.y + v.z); }
 }  // namespace
 
 // Any non-zero length is a direction: a scene modelled at 1e-13 units has edges that short

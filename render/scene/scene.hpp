@@ -11,6 +11,8 @@
 //  - Colors are linear RGB; the image writer encodes sRGB.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -36,6 +38,12 @@ namespace rts::render {
 
 using Vec3 = glm::dvec3;
 using Mat4 = glm::dmat4;
+
+// The largest |component|: a vector's size without squaring it (no overflow past 1e154, no
+// underflow below 1e-154). Here, beside Vec3, so every layer that sees the scene can use it.
+inline double max_abs_component(const Vec3& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
 
 struct Color {
   double r = 0, g = 0, b = 0;

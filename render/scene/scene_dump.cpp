@@ -30,7 +30,7 @@ std::string num(double x, double scale = 1.0) {
   return fmt::format("{}", x);
 }
 std::string vec(const Vec3& v) {
-  const double scale = std::min(1.0, std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}));
+  const double scale = std::min(1.0, max_abs_component(v));
   return fmt::format("<{}, {}, {}>", num(v.x, scale), num(v.y, scale), num(v.z, scale));
 }
 std::string col(const Color& c) { return fmt::format("rgb({}, {}, {})", num(c.r), num(c.g), num(c.b)); }
