@@ -29,6 +29,9 @@ std::string num(double x, double scale = 1.0) {
   if (std::fabs(x) < kDumpZero * scale) x = 0.0;  // also turns -0 into 0
   return fmt::format("{}", x);
 }
+// A shape's own length (a radius, a torus's radii): written by the user, not a component a
+// rotation computed, so it keeps its value at any scale (only -0 prints as 0).
+std::string len(double x) { return fmt::format("{}", x == 0.0 ? 0.0 : x); }
 std::string vec(const Vec3& v) {
   const double scale = std::min(1.0, max_abs_component(v));
   return fmt::format("<{}, {}, {}>", num(v.x, scale), num(v.y, scale), num(v.z, scale));
@@ -42,13 +45,19 @@ std::string where(const SourceRef& r) {
 }
 std::string yes(bool b) { return b ? "true" : "false"; }
 
-// A transform as "identity" or its 3x4 rows [a b c tx; d e f ty; g h i tz].
+// A transform as "identity" or its 3x4 rows [a b c tx; d e f ty; g h i tz]; entries are zeroed
+// relative to the largest when that is below 1, as a vector's (`scale 1e-13` keeps its rows).
 std::string mat(const Mat4& m) {
   if (m == Mat4(1.0)) return "identity";
+  double largest = 0.0;
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 3; ++row) largest = std::max(largest, std::fabs(m[col][row]));
+  const double scale = std::min(1.0, largest);
   std::string s = "[";
   for (int row = 0; row < 3; ++row) {
     if (row) s += "; ";
-    s += fmt::format("{} {} {} {}", num(m[0][row]), num(m[1][row]), num(m[2][row]), num(m[3][row]));
+    s += fmt::format("{} {} {} {}", num(m[0][row], scale), num(m[1][row], scale), num(m[2][row], scale),
+                     num(m[3][row], scale));
   }
   return s + "]";
 }
@@ -78,7 +87,7 @@ const char* texture_kind(TextureKind k) {
 std::string shape_text(const ShapeDesc& s) {
   struct Visitor {
     std::string operator()(const Sphere& g) {
-      return fmt::format("sphere center {} radius {}", vec(g.center), num(g.radius));
+      return fmt::format("sphere center {} radius {}", vec(g.center), len(g.radius));
     }
     std::string operator()(const Plane& g) {
       return fmt::format("plane normal {} offset {}", vec(g.normal), num(g.offset));
@@ -90,30 +99,30 @@ std::string shape_text(const ShapeDesc& s) {
     }
     std::string operator()(const Box& g) { return fmt::format("box min {} max {}", vec(g.min), vec(g.max)); }
     std::string operator()(const Cylinder& g) {
-      return fmt::format("cylinder from {} to {} radius {} capped {}", vec(g.from), vec(g.to), num(g.radius),
+      return fmt::format("cylinder from {} to {} radius {} capped {}", vec(g.from), vec(g.to), len(g.radius),
                          yes(g.capped));
     }
     std::string operator()(const Cone& g) {
       return fmt::format("cone from {} to {} radius_from {} radius_to {} capped {}", vec(g.from), vec(g.to),
-                         num(g.radius_from), num(g.radius_to), yes(g.capped));
+                         len(g.radius_from), len(g.radius_to), yes(g.capped));
     }
     std::string operator()(const Disc& g) {
       return fmt::format("disc center {} normal {} radius {} inner_radius {}", vec(g.center), vec(g.normal),
-                         num(g.radius), num(g.inner_radius));
+                         len(g.radius), len(g.inner_radius));
     }
     std::string operator()(const MeshRef& g) { return fmt::format("mesh {} smooth {}", id(g.mesh), yes(g.smooth)); }
     std::string operator()(const Quad& g) {
       return fmt::format("quad corner {} edge_u {} edge_v {}", vec(g.corner), vec(g.edge_u), vec(g.edge_v));
     }
-    std::string operator()(const Torus& g) { return fmt::format("torus major {} minor {}", num(g.major), num(g.minor)); }
+    std::string operator()(const Torus& g) { return fmt::format("torus major {} minor {}", len(g.major), len(g.minor)); }
     std::string operator()(const Superellipsoid& g) {
       return fmt::format("superellipsoid e {} n {}", num(g.e), num(g.n));
     }
     std::string operator()(const Blob& g) {
       std::string out = fmt::format("blob threshold {}", num(g.threshold));
       for (const BlobComponent& c : g.components)
-        out += c.cylinder ? fmt::format(" cylinder {} {} {} {}", vec(c.a), vec(c.b), num(c.radius), num(c.strength))
-                          : fmt::format(" sphere {} {} {}", vec(c.a), num(c.radius), num(c.strength));
+        out += c.cylinder ? fmt::format(" cylinder {} {} {} {}", vec(c.a), vec(c.b), len(c.radius), num(c.strength))
+                          : fmt::format(" sphere {} {} {}", vec(c.a), len(c.radius), num(c.strength));
       return out;
     }
     std::string operator()(const Sor& shape) {
@@ -149,7 +158,7 @@ std::string shape_text(const ShapeDesc& s) {
     }
     std::string operator()(const Isosurface& shape) {
       const IsosurfaceData& g = *shape;
-      std::string box = g.container_sphere ? fmt::format("sphere {} {}", vec(g.center), num(g.radius))
+      std::string box = g.container_sphere ? fmt::format("sphere {} {}", vec(g.center), len(g.radius))
                                            : fmt::format("box {} {}", vec(g.box_min), vec(g.box_max));
       return fmt::format("isosurface function {} threshold {} max_gradient {} accuracy {} max_trace {} "
                          "contained_by {}",

@@ -40,6 +40,10 @@ contains "$tmp/out" "camera:     perspective at <0, 1e-13, -4e-13> looking at <0
 printf 'sphere { center = <0, 1e-13, 2e-13>  radius = 1 }\n' >"$tmp/tiny_eval.rts"
 expect 0 "$rts" eval "$tmp/tiny_eval.rts"
 contains "$tmp/out" "sphere center <0, 1e-13, 2e-13> radius 1"
+printf 'sphere { radius = 3e-13 }\nsphere { radius = 1 } scale 1e-13 translate <0, 2e-13, 0>\n' >"$tmp/tiny_len.rts"
+expect 0 "$rts" eval "$tmp/tiny_len.rts"
+contains "$tmp/out" "sphere center <0, 0, 0> radius 3e-13"
+contains "$tmp/out" "transform [1e-13 0 0 0; 0 1e-13 0 2e-13; 0 0 1e-13 0]"
 
 # -D: a define that matches nothing warns; a malformed one is a usage error.
 expect 0 "$rts" check "$golden/loops.rts" -D nothing=1
