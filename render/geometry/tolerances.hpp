@@ -75,16 +75,21 @@ inline constexpr double kTriangleDeterminant = 1e-14;
 
 // Two hits whose t differ by less than this (relative to t and to the ray origin's distance
 // from the world origin, over |d|) are treated as coincident surfaces: the lower instance
-// index wins (World::intersect). Rounding of t is ~1e-16 of those scales, divided by the
-// cosine of incidence; 1e-12 covers incidence down to ~1e-3 and is far below any gap a scene
-// can mean (a box 1e-9 above a plane seen from 5 units differs by 4e-10 relative).
-inline constexpr double kCoincidentRelative = 1e-12;
+// index wins (World::intersect), and CSG crossings that close are one batch. Rounding of t is
+// a few units of 1e-16 of those scales: measured on one plane's faces made five ways (plane,
+// turned box, disc, triangle, CSG face, all under a rotation and its inverse) and seen from 45
+// down to 0.01 degrees, 1e-16 speckles and 1e-15 does not (tests/stability/test_coincident.cpp);
+// 1e-14 keeps a tenfold margin. Smaller is better far from the origin: the tie is this times
+// the origin's distance, so at 1e-12 (until 2026-12-01) a unit scene 1e11 away merged surfaces
+// 0.1 apart (a die's pips and a bowl's hollow vanished); at 1e-14 it is 1e-3 there, ten times
+// the coordinates' own rounding.
+inline constexpr double kCoincidentRelative = 1e-14;
 
 // A CSG leaf whose box the ray meets only farther than this many coincidence ties
 // (kCoincidentRelative, as World::intersect_csg scales it) outside the span where its state
 // can matter is left out (render/geometry/csg/csg_prune.hpp): a crossing that far away can
 // never share a batch of the sweep with a kept one unless several leaves chain crossings
-// closer than a tie across the gap, and the box's own rounding is ~1e-4 of a tie.
+// closer than a tie across the gap, and the box's own rounding is ~1e-2 of a tie.
 inline constexpr double kCsgPruneTies = 4.0;
 
 // A closed mesh in CSG lists at most kMaxLeafCrossings crossings per sweep; a ray whose first
