@@ -139,6 +139,16 @@ NodeId add_group(SceneDesc& s, std::vector<Child> children) {
   return static_cast<NodeId>(s.nodes.size() - 1);
 }
 
+NodeId add_csg(SceneDesc& s, render::CsgOp op, std::vector<Child> children, MaterialId m) {
+  render::CsgDesc d;
+  d.op = op;
+  d.children = std::move(children);
+  d.material = m;
+  s.csgs.push_back(std::move(d));
+  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
+  return static_cast<NodeId>(s.nodes.size() - 1);
+}
+
 void place(SceneDesc& s, NodeId node, const Mat4& transform) { s.roots.push_back(Child{node, transform, {}}); }
 
 MaterialDesc matte(Color c) {

@@ -48,6 +48,9 @@ render::MaterialId add_material(SceneDesc& s, const render::MaterialDesc& m);
 render::NodeId add_shape(SceneDesc& s, render::ShapeGeometry g, render::MaterialId m = render::kNoId);
 render::NodeId add_light(SceneDesc& s, const render::LightDesc& l);
 render::NodeId add_group(SceneDesc& s, std::vector<render::Child> children);
+// A CSG block of `children` (its material `m` for children without their own).
+render::NodeId add_csg(SceneDesc& s, render::CsgOp op, std::vector<render::Child> children,
+                       render::MaterialId m = render::kNoId);
 void place(SceneDesc& s, render::NodeId node, const Mat4& transform = Mat4(1.0));
 render::MaterialDesc matte(Color c);
 render::MaterialDesc emissive(Color c);

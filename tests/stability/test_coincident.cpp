@@ -100,14 +100,12 @@ TEST_CASE("one plane's faces made five ways, turned and seen from 45 to 0.05 deg
     Triangle t;
     t.v0 = Vec3(-4, 0, -5), t.v1 = Vec3(3, 0, 4), t.v2 = Vec3(4, 0, -3);
     kid(t, Color(0, 1, 1), turn);
-    CsgDesc d;
-    d.op = CsgOp::Difference;
-    d.children = {Child{add_shape(s, Box{Vec3(-2, 0, -2), Vec3(2, 0.5, 2)}, flat(Color(0, 0, 1))), rotate_deg(21, Vec3(0, 1, 0)), {}},
-                  Child{add_shape(s, Box{Vec3(-1, 0.2, -4), Vec3(1, 0.5, 1)}, flat(Color(1, 1, 0))),
-                        translate(Vec3(0.2, 0, 0)) * rotate_deg(-13, Vec3(0, 1, 0)) * glm::scale(Mat4(1.0), Vec3(0.7, 1, 1)), {}}};
-    s.csgs.push_back(std::move(d));
-    s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
-    kids.push_back(Child{static_cast<NodeId>(s.nodes.size() - 1), turn, {}});
+    const NodeId block = add_csg(
+        s, CsgOp::Difference,
+        {Child{add_shape(s, Box{Vec3(-2, 0, -2), Vec3(2, 0.5, 2)}, flat(Color(0, 0, 1))), rotate_deg(21, Vec3(0, 1, 0)), {}},
+         Child{add_shape(s, Box{Vec3(-1, 0.2, -4), Vec3(1, 0.5, 1)}, flat(Color(1, 1, 0))),
+               translate(Vec3(0.2, 0, 0)) * rotate_deg(-13, Vec3(0, 1, 0)) * glm::scale(Mat4(1.0), Vec3(0.7, 1, 1)), {}}});
+    kids.push_back(Child{block, turn, {}});
     place(s, add_group(s, kids), back);
     check_stable(s, fmt::format("five coplanar faces seen at {:g} degrees", elevation),
                  fmt::format("coincident_five_{:g}", elevation));

@@ -155,13 +155,9 @@ TEST_CASE("an isosurface minus a box flush with its container's top", "[shapes]"
   SceneDesc s = base(Vec3(1.5, 2.5, -3), Vec3(0, 0, 0));
   MaterialId red = add_material(s, matte(Color(0.8, 0.2, 0.15)));
   MaterialId green = add_material(s, matte(Color(0.2, 0.7, 0.2)));
-  CsgDesc d;
-  d.op = CsgOp::Difference;
-  d.children = {Child{add_shape(s, rippled_ball(), red), Mat4(1.0), {}},
-                Child{add_shape(s, Box{Vec3(0, 0.5, -2), Vec3(2, 2, 0)}, green), Mat4(1.0), {}}};
-  s.csgs.push_back(std::move(d));
-  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
-  place(s, static_cast<NodeId>(s.nodes.size() - 1));
+  place(s, add_csg(s, CsgOp::Difference,
+                   {Child{add_shape(s, rippled_ball(), red), Mat4(1.0), {}},
+                    Child{add_shape(s, Box{Vec3(0, 0.5, -2), Vec3(2, 2, 0)}, green), Mat4(1.0), {}}}));
   check_stable(s, "isosurface minus a box sharing its top face", "shapes_isosurface_csg");
 }
 
@@ -197,13 +193,9 @@ TEST_CASE("a sor vase near the origin and a million units away, and cut flush at
   SceneDesc s = base(eye, at);
   MaterialId red = add_material(s, matte(Color(0.8, 0.2, 0.15)));
   MaterialId green = add_material(s, matte(Color(0.2, 0.7, 0.2)));
-  CsgDesc d;
-  d.op = CsgOp::Difference;
-  d.children = {Child{add_shape(s, vase(), red), Mat4(1.0), {}},
-                Child{add_shape(s, Box{Vec3(-2, 0.6, -2), Vec3(0, 1, 0)}, green), Mat4(1.0), {}}};
-  s.csgs.push_back(std::move(d));
-  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
-  place(s, static_cast<NodeId>(s.nodes.size() - 1));
+  place(s, add_csg(s, CsgOp::Difference,
+                   {Child{add_shape(s, vase(), red), Mat4(1.0), {}},
+                    Child{add_shape(s, Box{Vec3(-2, 0.6, -2), Vec3(0, 1, 0)}, green), Mat4(1.0), {}}}));
   check_stable(s, "sor minus a box sharing its top disc's height", "shapes_sor_csg");
 }
 
@@ -225,13 +217,9 @@ TEST_CASE("a lathe cup near the origin and a million units away, and cut flush a
   SceneDesc s = base(eye, at);
   MaterialId red = add_material(s, matte(Color(0.8, 0.2, 0.15)));
   MaterialId green = add_material(s, matte(Color(0.2, 0.7, 0.2)));
-  CsgDesc d;
-  d.op = CsgOp::Difference;
-  d.children = {Child{add_shape(s, cup(), red), Mat4(1.0), {}},
-                Child{add_shape(s, Box{Vec3(-2, 0.3, -2), Vec3(0, 0.7, 0)}, green), Mat4(1.0), {}}};
-  s.csgs.push_back(std::move(d));
-  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
-  place(s, static_cast<NodeId>(s.nodes.size() - 1));
+  place(s, add_csg(s, CsgOp::Difference,
+                   {Child{add_shape(s, cup(), red), Mat4(1.0), {}},
+                    Child{add_shape(s, Box{Vec3(-2, 0.3, -2), Vec3(0, 0.7, 0)}, green), Mat4(1.0), {}}}));
   check_stable(s, "lathe minus a box sharing its rim's height", "shapes_lathe_csg");
 }
 
@@ -253,12 +241,8 @@ TEST_CASE("a prism star with a hole near the origin and a million units away, an
   SceneDesc s = base(eye, at);
   MaterialId red = add_material(s, matte(Color(0.8, 0.2, 0.15)));
   MaterialId green = add_material(s, matte(Color(0.2, 0.7, 0.2)));
-  CsgDesc d;
-  d.op = CsgOp::Difference;
-  d.children = {Child{add_shape(s, star(), red), Mat4(1.0), {}},
-                Child{add_shape(s, Box{Vec3(-2, 0.0, -2), Vec3(0, 0.3, 0)}, green), Mat4(1.0), {}}};
-  s.csgs.push_back(std::move(d));
-  s.nodes.push_back(Node{NodeKind::Csg, static_cast<uint32_t>(s.csgs.size() - 1)});
-  place(s, static_cast<NodeId>(s.nodes.size() - 1));
+  place(s, add_csg(s, CsgOp::Difference,
+                   {Child{add_shape(s, star(), red), Mat4(1.0), {}},
+                    Child{add_shape(s, Box{Vec3(-2, 0.0, -2), Vec3(0, 0.3, 0)}, green), Mat4(1.0), {}}}));
   check_stable(s, "prism minus a box sharing its top cap's height", "shapes_prism_csg");
 }
