@@ -124,7 +124,9 @@ inline constexpr double kTinyLength = 1e-300;
 inline constexpr double kPolyFarthestRoot = 1e250;
 
 // A shadow ray stops this far (relative to the light distance) before a point light, so the
-// light's own position never counts as an occluder.
+// light's own position never counts as an occluder. Towards an emitter's surface (the path
+// tracer) it is measured from the ray's offset origin and less the rounding of the emitter's
+// own hit, kOffsetErrorScale point bounds (path_integrator.cpp, shadow_end).
 inline constexpr double kShadowEndRelative = 1e-9;
 
 // The box around every shadow segment from one shading point to an area light (World::

@@ -1,5 +1,5 @@
 // Group 11, the path tracer (issue 19): a room with an emissive quad, glass, a mirror and an
-// albedo-1 wall, rendered at scales 1e-6..1e6 and moved 1e5 away; grazing views; degenerate
+// albedo-1 wall, rendered at scales 1e-6..1e6 and moved 1e5, 1e7 and 1e9 away; grazing views; degenerate
 // emitters (zero-area quad, zero-radius sphere, emission 1e30); a closed albedo-1 box. No
 // NaN or infinite pixel, no NaN sample, and the scaled images' means agree with the
 // unit-scale one within 5 standard errors (their own estimates; a false failure about once
@@ -75,7 +75,10 @@ void check_finite(const RenderResult& r, const std::string& name, const std::str
 
 }  // namespace
 
-TEST_CASE("path tracing at scales 1e-6..1e6 and 1e5 away: finite, same brightness", "[path]") {
+TEST_CASE("path tracing at scales 1e-6..1e6 and 1e5..1e9 away: finite, same brightness", "[path]") {
+  // Moved 1e7 and 1e9 (until 2026-12-01): shadow rays towards the lamp stopped at 1e-9 of its
+  // distance short of it, measured from the shading point, while their origin had moved about
+  // 1e-14 of its distance from the world origin towards it: the lamp shadowed the floor it lit.
   const RenderResult unit = render_scene(room(1.0, Vec3(0.0)));
   const auto [m0, e0] = mean_and_error(unit);
   check_finite(unit, "unit scale", "path_unit");
@@ -86,7 +89,8 @@ TEST_CASE("path tracing at scales 1e-6..1e6 and 1e5 away: finite, same brightnes
     Vec3 t;
   };
   for (const Case& c : {Case{"scale 1e-6", 1e-6, Vec3(0.0)}, Case{"scale 1e6", 1e6, Vec3(0.0)},
-                        Case{"moved 1e5", 1.0, Vec3(1e5, -1e5, 1e5)}}) {
+                        Case{"moved 1e5", 1.0, Vec3(1e5, -1e5, 1e5)}, Case{"moved 1e7", 1.0, Vec3(-1e7, 1e7, 1e7)},
+                        Case{"moved 1e9", 1.0, Vec3(1e9, 1e9, -1e9)}}) {
     SceneDesc s = room(c.k, c.t);
     s.settings.seed = 7;  // an independent render, so the z-test below compares two estimates
     const RenderResult r = render_scene(s);
